@@ -1,0 +1,38 @@
+// emit: electromechanical impedance tomography for soft tactile sensors.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "emit/errors.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
+               "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
+  app.name("emit");
+  app.set_version_flag("--version", "emit 0.1.0");
+  app.require_subcommand(1);
+  emit::cli::add_mesh_command(app);
+  emit::cli::add_simulate_command(app);
+  emit::cli::add_demo_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "emit: %s\nRun 'emit --help' for usage.\n", e.what());
+    return 2;
+  } catch (const emit::Error& e) {
+    std::fprintf(stderr, "emit: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "emit: internal error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,45 @@
+#pragma once
+/// \file forward_model.hpp
+/// The forward model (DESIGN §2): -div(σ ∇u) + g u = g E on the sheet, one electrode grounded,
+/// every other electrode one floating unknown with zero net current, insulating elsewhere.
+///
+/// Per contact it factorises once (electrode 0 grounded) and gets all N groundings from N solves:
+/// for ground l ≠ 0 the solution is u = c·1 + v, with v the electrode-0-grounded solution of a
+/// drive (E − c) plus a current I drained at electrode l; u(e_l) = 0 and zero net current at
+/// electrode 0 fix (c, I) by a 2×2 solve. This works because K·1 = 0, so shifting u by c is the
+/// same as lowering the drive by c.
+#include <memory>
+
+#include "emit/fem/contact_load.hpp"
+#include "emit/mesh/mesh.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+/// One frame: N×N volts, row l = grounded electrode, column m = sensed electrode. Row-major, so
+/// data() is the ground-major order l·N + m of DESIGN §1.
+using Frame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+class ForwardModel {
+ public:
+  /// Assembles the stiffness once and analyses its pattern (assemble once, solve many).
+  /// \throw InvalidInput for a mesh whose electrodes are not usable.
+  ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq);
+  ~ForwardModel();
+  ForwardModel(ForwardModel&&) noexcept;
+  ForwardModel& operator=(ForwardModel&&) noexcept;
+
+  const Mesh& mesh() const;
+  int electrode_count() const;
+
+  /// Electrode potentials for every grounding. An empty contact gives the zero frame.
+  Frame solve_frame(const ContactLoad& contact, double drive_voltage_V) const;
+  /// Node potentials [V], #V by N: column l is the field with electrode l grounded.
+  Matrix solve_potentials(const ContactLoad& contact, double drive_voltage_V) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace emit

@@ -1,0 +1,17 @@
+#pragma once
+/// \file stiffness.hpp
+/// P1 stiffness of the probing sheet: K_ij = ∫ σ ∇φ_i·∇φ_j dA.
+#include "emit/mesh/mesh.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+/// Local stiffness of one triangle with vertices p0, p1, p2 (in 3D or in the plane) and sheet
+/// conductance σ [S]: K_ij = σ (e_i·e_j) / (4A), e_i the edge opposite vertex i. Using edge
+/// vectors rather than planar gradients makes it valid for a triangle anywhere in 3D.
+Eigen::Matrix3d local_stiffness(const Vector3& p0, const Vector3& p1, const Vector3& p2, double conductance_S);
+
+/// #V by #V stiffness [S] of the whole mesh; symmetric, K·1 = 0, positive semi-definite.
+SparseMatrix assemble_stiffness(const Mesh& mesh, double conductance_S);
+
+}  // namespace emit

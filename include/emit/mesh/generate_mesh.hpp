@@ -1,0 +1,31 @@
+#pragma once
+/// \file generate_mesh.hpp
+/// Meshing a sensor's sheet with Gmsh (Frontal-Delaunay): near-equilateral triangles at a
+/// requested size, with mesh nodes at both ends of every electrode so that each electrode is an
+/// exact set of border edges.
+#include "emit/mesh/mesh.hpp"
+#include "emit/sensor/sensor.hpp"
+
+namespace emit {
+
+struct MeshOptions {
+  double element_size_mm = 1.2;
+  /// Size at the electrodes' ends as a fraction of element_size_mm. 1 gives a homogeneous mesh
+  /// (the reconstruction's); < 1 grades the mesh into the ends, where the potential is singular
+  /// (the twin's: it resolves the edge singularity, as the conformance frames do).
+  double electrode_edge_size_factor = 1.0;
+  /// Seed of Gmsh's random perturbations: another seed gives another mesh of the same size,
+  /// so a twin can differ from the reconstruction's mesh.
+  int seed = 0;
+};
+
+/// The reconstruction mesh of a sensor as its description asks.
+MeshOptions reconstruction_mesh_options(const Sensor& sensor);
+/// The twin's finer, edge-graded mesh (DESIGN §2: finer than the reconstruction's).
+MeshOptions twin_mesh_options(const Sensor& sensor, int seed = 1);
+
+/// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead.
+/// \throw InvalidInput if the sheet cannot be meshed as asked; IoError for an unreadable mesh file.
+Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options);
+
+}  // namespace emit

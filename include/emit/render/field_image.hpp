@@ -1,0 +1,44 @@
+#pragma once
+/// \file field_image.hpp
+/// A picture of a scalar field on the sheet: the mesh coloured by nodal values (linear inside
+/// each triangle), the border, the electrodes drawn thick and numbered, outlined circles (the
+/// presses), a colour bar with its range and unit, and a title.
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "emit/mesh/mesh.hpp"
+#include "emit/render/image.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+struct Circle {
+  Vector2 center_mm{0, 0};
+  double radius_mm = 0;
+};
+
+struct FieldImageOptions {
+  int width_px = 640;            ///< the image's width; the height follows the sheet's aspect
+  std::string title;             ///< drawn at the top
+  std::string unit = "V";        ///< shown on the colour bar
+  double min_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's minimum
+  double max_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's maximum
+};
+
+/// Sequential colour map (perceptually ordered, dark → bright) for t in [0, 1].
+Rgb colormap(double t);
+
+/// Where a sheet point (x, y) in mm lands in the picture, for tests that check colours.
+struct FieldLayout {
+  double scale_px_per_mm = 1, origin_x_px = 0, origin_y_px = 0, min_x_mm = 0, max_y_mm = 0;
+  int pixel_x(double x_mm) const;
+  int pixel_y(double y_mm) const;
+};
+
+/// Renders `nodal_values` (#V) over a flat mesh (z ignored). `layout`, if given, receives the
+/// mapping from mm to pixels.
+Image render_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
+                   const FieldImageOptions& options, FieldLayout* layout = nullptr);
+
+}  // namespace emit

@@ -1,0 +1,75 @@
+#pragma once
+/// \file sensor.hpp
+/// The sensor description (DESIGN §1, §5): the probing sheet's shape, its electrodes, the drive,
+/// the materials, the ADC and the mesh size. Built from JSON by `load_sensor` (sensor_json.hpp),
+/// validated there; every field here is in the units its name says.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "emit/sensor/border.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+enum class ShapeKind { rectangle, circle, polygon, mesh_file };
+
+struct Shape {
+  ShapeKind kind = ShapeKind::rectangle;
+  double width_mm = 0, height_mm = 0;  ///< rectangle
+  double radius_mm = 0;                ///< circle
+  Vector2 center_mm{0, 0};             ///< circle
+  std::vector<Vector2> points_mm;      ///< polygon, as given
+  std::string mesh_path;               ///< mesh_file: a Gmsh .msh with "electrode <i>" curves
+};
+
+/// One electrode: an arc-length interval of the border, [start_s_mm, start_s_mm + width_mm]
+/// (wrapping past the end of the border if need be).
+struct Electrode {
+  Vector2 center_mm{0, 0};
+  double width_mm = 0;
+  double center_s_mm = 0;  ///< arc length of the centre along the border
+};
+
+/// Contact resistance per unit area r_c = alpha · P^gamma [Ω·mm²], P in N/mm² (paper eq. 2);
+/// no contact below the separator's minimum pressure.
+struct ContactLaw {
+  double alpha_ohm_mm2 = 2.0e5;
+  double gamma = -1.2;
+  double min_pressure_N_per_mm2 = 0.002;
+  /// g = 1/r_c [S/mm²]; 0 below the minimum pressure.
+  double conductance_S_per_mm2(double pressure_N_per_mm2) const;
+};
+
+/// The acquisition's ADC (paper §3.1: the ESP32's 12-bit ADC at 3.3 V).
+struct AdcSpec {
+  int bits = 12;
+  double vref_V = 3.3;
+  double noise_V = 0.001;  ///< standard deviation of Gaussian noise added before quantisation
+};
+
+struct MeshSpec {
+  /// Target edge length of the reconstruction mesh. 1.2 mm gives the paper's ~6000 triangles on
+  /// the 60 mm sheet (paper §3.1).
+  double element_size_mm = 1.2;
+  /// The twin's mesh is this many times finer in edge length (2 → about 4× the triangles).
+  double twin_refinement = 2.0;
+};
+
+struct Sensor {
+  std::string name;
+  Shape shape;
+  /// For shape mesh_file the border is not analytic; border is empty and electrodes come from
+  /// the mesh file's groups.
+  std::optional<Border> border;
+  std::vector<Electrode> electrodes;
+  double drive_voltage_V = 3.3;
+  double sheet_resistance_ohm_per_sq = 5000.0;
+  ContactLaw contact;
+  AdcSpec adc;
+  MeshSpec mesh;
+
+  int electrode_count() const { return static_cast<int>(electrodes.size()); }
+};
+
+}  // namespace emit

@@ -1,0 +1,39 @@
+#pragma once
+/// \file sensor_json.hpp
+/// Reading a sensor description from JSON (DESIGN §5), with validation that names the offending key.
+///
+/// Keys (all others are errors):
+///   name                                  optional string
+///   shape        {type: rectangle, width_mm, height_mm}
+///              | {type: circle, radius_mm, center_mm: [x, y] (default [r, r])}
+///              | {type: polygon, points_mm: [[x, y], ...]}
+///              | {type: mesh, file: "sheet.msh"}     (path relative to the sensor file)
+///   electrodes   {count, width_mm}  laid out by the default rule (DESIGN §1)
+///              | [{x_mm, y_mm, width_mm}, ...]  centres on the border, in electrode order
+///   drive_voltage_V, probing_sheet_resistance_ohm_per_sq
+///   contact_law  {alpha_ohm_mm2, gamma, min_pressure_N_per_mm2}
+///   adc          {bits, vref_V, noise_V}
+///   mesh         {element_size_mm, twin_refinement}
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "emit/sensor/sensor.hpp"
+
+namespace emit {
+
+/// Parse and validate. `base_dir` resolves a relative mesh file path.
+/// \throw InvalidInput with a message of the form "<where>: <key>: <what is wrong>".
+Sensor parse_sensor(const nlohmann::json& j, const std::string& where = "sensor",
+                    const std::string& base_dir = ".");
+
+/// Read a sensor file. \throw IoError if unreadable, InvalidInput if malformed or invalid.
+Sensor load_sensor(const std::string& path);
+
+/// The built-in default sensor: the paper's 60 × 60 mm sheet with 16 electrodes 3 mm wide.
+Sensor default_sensor();
+
+/// The sensor back as JSON (explicit electrode list), e.g. to record what a run used.
+nlohmann::json sensor_to_json(const Sensor& sensor);
+
+}  // namespace emit

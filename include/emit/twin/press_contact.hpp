@@ -1,0 +1,21 @@
+#pragma once
+/// \file press_contact.hpp
+/// Presses → contact conductance, resolved inside elements: the twin integrates g(P(x)) φ_i φ_j
+/// exactly on triangles wholly inside or outside every disc, and on the triangles a disc's edge
+/// cuts it subdivides adaptively (4 children per level) and integrates each child with the
+/// edge-midpoint rule, exact for the quadratic φ_i φ_j, with the pressure taken at the child's
+/// centroid. The contact edge is then resolved to h / 2^levels, not to the mesh size.
+#include <vector>
+
+#include "emit/fem/contact_load.hpp"
+#include "emit/sensor/sensor.hpp"
+#include "emit/twin/press.hpp"
+
+namespace emit {
+
+/// Presses are discs in the sheet's (x, y) plane. `levels` is the subdivision depth on cut
+/// triangles (6: children 64× smaller in edge length).
+ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& presses, const ContactLaw& law,
+                               int levels = 6);
+
+}  // namespace emit

@@ -1,0 +1,32 @@
+#pragma once
+/// \file press_scripts.hpp
+/// Sequences of presses for the twin: a grid of single presses, random presses, two-finger
+/// presses, and a press that moves over time. Every press lies inside the sheet, at least
+/// `margin_mm` from its border.
+#include <cstdint>
+
+#include "emit/sensor/sensor.hpp"
+#include "emit/twin/press.hpp"
+
+namespace emit {
+
+struct PressStyle {
+  double radius_mm = 5.0;
+  double min_force_N = 10.0;  ///< forces are drawn uniformly from [min_force_N, max_force_N]
+  double max_force_N = 10.0;
+  double margin_mm = 5.0;     ///< smallest distance from a press centre to the border
+  std::uint64_t seed = 1;
+};
+
+/// One press per frame on a square grid of pitch spacing_mm, each moved by up to ±jitter_mm.
+PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter_mm, const PressStyle& style);
+/// One press per frame at a uniformly random place.
+PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& style);
+/// Two simultaneous presses per frame, their centres min..max_separation_mm apart.
+PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm,
+                                double max_separation_mm, const PressStyle& style);
+/// One press moving in a straight line from `from` to `to` over `frames` frames.
+PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
+                            const PressStyle& style);
+
+}  // namespace emit

@@ -1,0 +1,18 @@
+#pragma once
+/// \file types.hpp
+/// The numeric types used across emit, in one place (Eigen-based).
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+
+namespace emit {
+
+using Index = Eigen::Index;
+using Vector = Eigen::VectorXd;
+using Matrix = Eigen::MatrixXd;
+using Vector2 = Eigen::Vector2d;
+using Vector3 = Eigen::Vector3d;
+/// Column-major sparse matrix, the layout CHOLMOD and Eigen's solvers expect.
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+}  // namespace emit

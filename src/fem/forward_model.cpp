@@ -1,0 +1,96 @@
+#include "emit/fem/forward_model.hpp"
+
+#include <Eigen/Dense>
+
+#include "emit/errors.hpp"
+#include "emit/fem/electrode_dofs.hpp"
+#include "emit/fem/sparse_cholesky.hpp"
+#include "emit/fem/stiffness.hpp"
+
+namespace emit {
+
+struct ForwardModel::Impl {
+  Mesh mesh;
+  ElectrodeDofs dofs;
+  SparseMatrix stiffness_dof;  ///< K in dof space [S]
+  mutable SparseCholesky cholesky;
+
+  /// Contact matrix C in dof space, with K's pattern (C touches only triangle couplings).
+  SparseMatrix contact_dof(const ContactLoad& contact) const {
+    std::vector<Eigen::Triplet<double, int>> entries;
+    entries.reserve(9 * contact.triangles.size());
+    for (std::size_t i = 0; i < contact.triangles.size(); ++i) {
+      const auto v = mesh.triangles.row(contact.triangles[i]);
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          entries.emplace_back(dofs.dof_of_node[v[a]], dofs.dof_of_node[v[b]], contact.local_S[i](a, b));
+    }
+    SparseMatrix C(dofs.dof_count, dofs.dof_count);
+    C.setFromTriplets(entries.begin(), entries.end());
+    return C;
+  }
+
+  /// Dof potentials, dof_count by N: column l is the solution with electrode l grounded.
+  Matrix solve_dofs(const ContactLoad& contact, double E) const {
+    const int n = dofs.dof_count, N = dofs.electrode_count;
+    Matrix U = Matrix::Zero(n, N);
+    if (contact.empty()) return U;
+    const SparseMatrix C = contact_dof(contact);
+    const SparseMatrix F = stiffness_dof + C;  // same pattern as the stiffness
+    const SparseMatrix A0 = F.bottomRightCorner(n - 1, n - 1);  // electrode 0 grounded
+    cholesky.factorize(A0);
+
+    const Vector drive = C * Vector::Ones(n);  // C·1: the contact's pull towards E per unit drive
+    Matrix rhs = Matrix::Zero(n - 1, N);       // reduced index r = dof − 1
+    rhs.col(0) = drive.tail(n - 1);
+    for (int l = 1; l < N; ++l) rhs(l - 1, l) = 1.0;
+    const Matrix X = cholesky.solve(rhs);  // X.col(0) = a (unit drive), X.col(l) = w_l (unit current at l)
+
+    const Vector f0 = Vector(F.col(0)).tail(n - 1);  // row 0 of F, F symmetric
+    const double alpha0 = f0.dot(X.col(0)) - drive[0];
+    U.col(0).tail(n - 1) = E * X.col(0);
+    for (int l = 1; l < N; ++l) {
+      // Unknowns x = E − c and I: u(e_l) = c + x·a_l + I·w_l(l) = 0; net current at electrode 0 = 0.
+      Eigen::Matrix2d M;
+      M << X(l - 1, 0) - 1.0, X(l - 1, l), alpha0, f0.dot(X.col(l));
+      const Eigen::Vector2d xI = M.fullPivLu().solve(Eigen::Vector2d(-E, 0.0));
+      const double c = E - xI[0];
+      U.col(l).setConstant(c);
+      U.col(l).tail(n - 1) += xI[0] * X.col(0) + xI[1] * X.col(l);
+    }
+    return U;
+  }
+};
+
+ForwardModel::ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq) : impl_(std::make_unique<Impl>()) {
+  if (!(sheet_resistance_ohm_per_sq > 0)) throw InvalidInput("sheet resistance must be positive");
+  if (mesh.electrode_count() < 2) throw InvalidInput("the mesh needs at least 2 electrodes");
+  impl_->mesh = std::move(mesh);
+  impl_->dofs = number_electrode_dofs(impl_->mesh);
+  impl_->stiffness_dof = to_dof_space(assemble_stiffness(impl_->mesh, 1.0 / sheet_resistance_ohm_per_sq), impl_->dofs);
+  const int n = impl_->dofs.dof_count;
+  impl_->cholesky.analyze(impl_->stiffness_dof.bottomRightCorner(n - 1, n - 1));
+}
+
+ForwardModel::~ForwardModel() = default;
+ForwardModel::ForwardModel(ForwardModel&&) noexcept = default;
+ForwardModel& ForwardModel::operator=(ForwardModel&&) noexcept = default;
+
+const Mesh& ForwardModel::mesh() const { return impl_->mesh; }
+int ForwardModel::electrode_count() const { return impl_->dofs.electrode_count; }
+
+Frame ForwardModel::solve_frame(const ContactLoad& contact, double drive_voltage_V) const {
+  const int N = electrode_count();
+  const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);
+  Frame frame = U.topRows(N).transpose();  // frame(l, m) = potential of electrode m, ground l
+  return frame;
+}
+
+Matrix ForwardModel::solve_potentials(const ContactLoad& contact, double drive_voltage_V) const {
+  const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);
+  Matrix nodal(impl_->mesh.node_count(), electrode_count());
+  for (Index v = 0; v < nodal.rows(); ++v) nodal.row(v) = U.row(impl_->dofs.dof_of_node[v]);
+  return nodal;
+}
+
+}  // namespace emit

@@ -1,0 +1,110 @@
+#include "gmsh_session.hpp"
+
+#include <algorithm>
+#include <map>
+#include <regex>
+
+#include <gmsh.h>
+
+#include "emit/errors.hpp"
+
+namespace emit::detail {
+
+std::mutex& GmshSession::mutex() {
+  static std::mutex m;
+  return m;
+}
+
+GmshSession::GmshSession() : lock_(mutex()) {
+  gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.Verbosity", 1);  // errors only
+  gmsh::logger::start();
+}
+
+GmshSession::~GmshSession() {
+  try {
+    gmsh::logger::stop();
+    gmsh::finalize();
+  } catch (...) {
+  }
+}
+
+std::string GmshSession::last_error() {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  for (auto it = log.rbegin(); it != log.rend(); ++it)
+    if (it->rfind("Error", 0) == 0) {
+      std::string message = it->substr(it->find(':') == std::string::npos ? 0 : it->find(':') + 1);
+      message.erase(0, message.find_first_not_of(' '));
+      return message;
+    }
+  return {};
+}
+
+Mesh GmshSession::extract_mesh(const std::string& context) {
+  std::vector<std::size_t> element_tags, triangle_node_tags;
+  gmsh::model::mesh::getElementsByType(2, element_tags, triangle_node_tags);
+  if (element_tags.empty()) throw InvalidInput(context + ": the mesh has no 3-node triangles");
+
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, parametric;
+  gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, /*includeBoundary=*/true,
+                              /*returnParametricCoord=*/false);
+  std::map<std::size_t, Index> coord_row;
+  for (std::size_t i = 0; i < node_tags.size(); ++i) coord_row[node_tags[i]] = static_cast<Index>(i);
+
+  // Number the nodes the triangles use, in order of first use.
+  std::map<std::size_t, int> index_of;
+  Mesh mesh;
+  mesh.triangles.resize(static_cast<Index>(element_tags.size()), 3);
+  for (std::size_t t = 0; t < element_tags.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t tag = triangle_node_tags[3 * t + k];
+      if (!coord_row.count(tag)) throw InvalidInput(context + ": triangle refers to missing node " + std::to_string(tag));
+      auto [it, added] = index_of.emplace(tag, static_cast<int>(index_of.size()));
+      mesh.triangles(static_cast<Index>(t), k) = it->second;
+    }
+  mesh.nodes_mm.resize(static_cast<Index>(index_of.size()), 3);
+  for (const auto& [tag, index] : index_of)
+    for (int c = 0; c < 3; ++c) mesh.nodes_mm(index, c) = coords[3 * coord_row[tag] + c];
+
+  // A flat sheet's triangles all face +z.
+  if (mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() == 0.0)
+    for (Index t = 0; t < mesh.triangle_count(); ++t) {
+      const Vector3 a = mesh.nodes_mm.row(mesh.triangles(t, 0)), b = mesh.nodes_mm.row(mesh.triangles(t, 1)),
+                    c = mesh.nodes_mm.row(mesh.triangles(t, 2));
+      if ((b - a).cross(c - a).z() < 0) std::swap(mesh.triangles(t, 1), mesh.triangles(t, 2));
+    }
+
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 1);
+  const std::regex electrode_name(R"(\s*electrode\s*(\d+)\s*)", std::regex::icase);
+  std::map<int, std::vector<int>> electrodes;
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    std::smatch match;
+    if (!std::regex_match(name, match, electrode_name)) continue;
+    std::vector<std::size_t> tags;
+    std::vector<double> group_coords;
+    gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, group_coords);
+    std::vector<int>& nodes = electrodes[std::stoi(match[1])];
+    for (std::size_t t : tags)
+      if (index_of.count(t)) nodes.push_back(index_of[t]);
+    std::sort(nodes.begin(), nodes.end());
+  }
+  if (electrodes.empty())
+    throw InvalidInput(context + ": no physical curves named \"electrode 0\", \"electrode 1\", …");
+  for (int e = 0; e < static_cast<int>(electrodes.size()); ++e) {
+    if (!electrodes.count(e))
+      throw InvalidInput(context + ": electrode groups must be numbered 0.." + std::to_string(electrodes.size() - 1) +
+                         "; \"electrode " + std::to_string(e) + "\" is missing");
+    if (electrodes[e].size() < 2)
+      throw InvalidInput(context + ": \"electrode " + std::to_string(e) + "\" has fewer than 2 mesh nodes");
+    mesh.electrode_nodes.push_back(electrodes[e]);
+  }
+  return mesh;
+}
+
+}  // namespace emit::detail

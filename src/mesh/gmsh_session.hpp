@@ -1,0 +1,42 @@
+#pragma once
+// Private: a scoped Gmsh API session. Gmsh keeps global state, so sessions are serialised by a
+// mutex; its console output is silenced and its errors are turned into emit's exceptions.
+#include <functional>
+#include <mutex>
+#include <string>
+
+#include "emit/mesh/mesh.hpp"
+
+namespace emit::detail {
+
+class GmshSession {
+ public:
+  GmshSession();
+  ~GmshSession();
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+  /// Run a Gmsh call; if it fails, throw E("<context>: <Gmsh's last error>").
+  template <class E>
+  void run(const std::string& context, const std::function<void()>& call) {
+    try {
+      call();
+    } catch (...) {
+      throw E(context + ": " + last_error());
+    }
+    const std::string error = last_error();
+    if (!error.empty()) throw E(context + ": " + error);
+  }
+
+  /// The current Gmsh model's triangles, nodes and "electrode <i>" curve groups as a Mesh.
+  /// Unreferenced nodes (e.g. a circle's centre point) are dropped; flat meshes are oriented
+  /// counter-clockwise. \throw InvalidInput (prefixed with `context`).
+  Mesh extract_mesh(const std::string& context);
+
+ private:
+  std::string last_error();
+  static std::mutex& mutex();
+  std::lock_guard<std::mutex> lock_;
+};
+
+}  // namespace emit::detail

@@ -1,0 +1,39 @@
+#include "emit/mesh/mesh.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace emit {
+
+double Mesh::triangle_area_mm2(Index t) const {
+  const Vector3 a = nodes_mm.row(triangles(t, 0)), b = nodes_mm.row(triangles(t, 1)), c = nodes_mm.row(triangles(t, 2));
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
+Vector3 Mesh::triangle_centroid_mm(Index t) const {
+  return (nodes_mm.row(triangles(t, 0)) + nodes_mm.row(triangles(t, 1)) + nodes_mm.row(triangles(t, 2))).transpose() / 3.0;
+}
+
+std::vector<std::array<int, 2>> Mesh::border_edges() const {
+  std::map<std::array<int, 2>, int> uses;
+  for (Index t = 0; t < triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& [edge, count] : uses)
+    if (count == 1) edges.push_back(edge);
+  return edges;
+}
+
+std::vector<std::array<int, 2>> Mesh::electrode_edges(int e) const {
+  const auto& nodes = electrode_nodes.at(e);
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& edge : border_edges())
+    if (std::binary_search(nodes.begin(), nodes.end(), edge[0]) && std::binary_search(nodes.begin(), nodes.end(), edge[1]))
+      edges.push_back(edge);
+  return edges;
+}
+
+}  // namespace emit

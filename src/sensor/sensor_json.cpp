@@ -1,0 +1,280 @@
+#include "emit/sensor/sensor_json.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "emit/errors.hpp"
+#include "emit/sensor/electrode_layout.hpp"
+
+namespace emit {
+
+using nlohmann::json;
+
+namespace {
+
+enum class Sign { any, positive, non_negative };
+
+/// Reads one JSON object key by key and, on finish(), rejects keys nobody asked for. Every error
+/// names the full key path ("contact_law.gamma"), so the user knows exactly what to fix.
+class ObjectReader {
+ public:
+  ObjectReader(const json& object, std::string path) : object_(object), path_(std::move(path)) {
+    if (!object_.is_object()) fail(path_, "must be a JSON object");
+  }
+
+  [[noreturn]] static void fail(const std::string& key_path, const std::string& what) {
+    throw InvalidInput(key_path + ": " + what);
+  }
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key) const { return object_.contains(key); }
+
+  const json& value(const std::string& key) {
+    used_.insert(key);
+    if (!object_.contains(key)) fail(key_path(key), "missing");
+    return object_.at(key);
+  }
+
+  double number(const std::string& key, Sign sign) { return check_number(key, value(key), sign); }
+  double number_or(const std::string& key, double fallback, Sign sign) {
+    return has(key) ? number(key, sign) : fallback;
+  }
+  int integer_or(const std::string& key, int fallback, int min_value, int max_value) {
+    if (!has(key)) return fallback;
+    const json& v = value(key);
+    if (!v.is_number_integer()) fail(key_path(key), "must be an integer, got " + v.dump());
+    const auto i = v.get<long long>();
+    if (i < min_value || i > max_value)
+      fail(key_path(key), "must be between " + std::to_string(min_value) + " and " + std::to_string(max_value) +
+                              ", got " + std::to_string(i));
+    return static_cast<int>(i);
+  }
+  std::string string(const std::string& key) {
+    const json& v = value(key);
+    if (!v.is_string()) fail(key_path(key), "must be a string, got " + v.dump());
+    return v.get<std::string>();
+  }
+  Vector2 point(const std::string& key) { return check_point(key_path(key), value(key)); }
+
+  void finish() const {
+    for (const auto& item : object_.items())
+      if (!used_.count(item.key())) fail(key_path(item.key()), "unknown key");
+  }
+
+  static Vector2 check_point(const std::string& key_path, const json& v) {
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+      fail(key_path, "must be a point [x, y] in mm, got " + v.dump());
+    const Vector2 p(v[0].get<double>(), v[1].get<double>());
+    if (!p.allFinite()) fail(key_path, "must be finite");
+    return p;
+  }
+
+ private:
+  double check_number(const std::string& key, const json& v, Sign sign) const {
+    if (!v.is_number()) fail(key_path(key), "must be a number, got " + v.dump());
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(key_path(key), "must be finite");
+    if (sign == Sign::positive && !(x > 0)) fail(key_path(key), "must be positive, got " + v.dump());
+    if (sign == Sign::non_negative && x < 0) fail(key_path(key), "must not be negative, got " + v.dump());
+    return x;
+  }
+
+  const json& object_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+Shape parse_shape(const json& j, const std::string& base_dir) {
+  ObjectReader r(j, "shape");
+  Shape shape;
+  const std::string type = r.string("type");
+  if (type == "rectangle") {
+    shape.kind = ShapeKind::rectangle;
+    shape.width_mm = r.number("width_mm", Sign::positive);
+    shape.height_mm = r.number("height_mm", Sign::positive);
+  } else if (type == "circle") {
+    shape.kind = ShapeKind::circle;
+    shape.radius_mm = r.number("radius_mm", Sign::positive);
+    shape.center_mm = r.has("center_mm") ? r.point("center_mm") : Vector2(shape.radius_mm, shape.radius_mm);
+  } else if (type == "polygon") {
+    shape.kind = ShapeKind::polygon;
+    const json& points = r.value("points_mm");
+    if (!points.is_array()) ObjectReader::fail("shape.points_mm", "must be a list of points [x, y]");
+    for (std::size_t i = 0; i < points.size(); ++i)
+      shape.points_mm.push_back(ObjectReader::check_point("shape.points_mm[" + std::to_string(i) + "]", points[i]));
+  } else if (type == "mesh") {
+    shape.kind = ShapeKind::mesh_file;
+    const std::filesystem::path file = r.string("file");
+    shape.mesh_path = (file.is_absolute() ? file : std::filesystem::path(base_dir) / file).string();
+  } else {
+    ObjectReader::fail("shape.type", "must be rectangle, circle, polygon or mesh, got \"" + type + "\"");
+  }
+  r.finish();
+  return shape;
+}
+
+Border border_of(const Shape& shape) {
+  switch (shape.kind) {
+    case ShapeKind::rectangle: return Border::rectangle(shape.width_mm, shape.height_mm);
+    case ShapeKind::circle: return Border::circle(shape.center_mm, shape.radius_mm);
+    case ShapeKind::polygon:
+      try {
+        return Border::polygon(shape.points_mm);
+      } catch (const InvalidInput& e) {
+        ObjectReader::fail("shape.points_mm", e.what());
+      }
+    case ShapeKind::mesh_file: break;
+  }
+  throw std::logic_error("border_of: no analytic border for a mesh file");
+}
+
+std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const Border& border) {
+  std::vector<Electrode> electrodes;
+  if (j.is_object()) {
+    ObjectReader r(j, "electrodes");
+    const int count = r.integer_or("count", 16, 0, 1024);
+    if (!r.has("count")) r.value("count");  // required: reports "electrodes.count: missing"
+    const double width_mm = r.number("width_mm", Sign::positive);
+    r.finish();
+    electrodes = default_electrode_layout(shape, border, count, width_mm);
+  } else if (j.is_array()) {
+    std::vector<Vector2> centers;
+    std::vector<double> widths;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      ObjectReader r(j[i], "electrodes[" + std::to_string(i) + "]");
+      centers.emplace_back(r.number("x_mm", Sign::any), r.number("y_mm", Sign::any));
+      widths.push_back(r.number("width_mm", Sign::positive));
+      r.finish();
+    }
+    electrodes = place_electrodes(border, centers, widths);
+  } else {
+    ObjectReader::fail("electrodes", "must be {count, width_mm} or a list of {x_mm, y_mm, width_mm}");
+  }
+  validate_electrodes(border, electrodes);
+  return electrodes;
+}
+
+void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) {
+  ObjectReader r(j, "");
+  if (r.has("name")) sensor.name = r.string("name");
+  sensor.shape = parse_shape(r.value("shape"), base_dir);
+  if (sensor.shape.kind != ShapeKind::mesh_file) {
+    sensor.border = border_of(sensor.shape);
+    sensor.electrodes = parse_electrodes(r.value("electrodes"), sensor.shape, *sensor.border);
+  } else if (r.has("electrodes")) {
+    ObjectReader::fail("electrodes", "a mesh-file sensor takes its electrodes from the file's "
+                                     "\"electrode <i>\" curves; remove this key");
+  }
+  sensor.drive_voltage_V = r.number_or("drive_voltage_V", sensor.drive_voltage_V, Sign::positive);
+  sensor.sheet_resistance_ohm_per_sq =
+      r.number_or("probing_sheet_resistance_ohm_per_sq", sensor.sheet_resistance_ohm_per_sq, Sign::positive);
+  if (r.has("contact_law")) {
+    ObjectReader c(r.value("contact_law"), "contact_law");
+    sensor.contact.alpha_ohm_mm2 = c.number_or("alpha_ohm_mm2", sensor.contact.alpha_ohm_mm2, Sign::positive);
+    sensor.contact.gamma = c.number_or("gamma", sensor.contact.gamma, Sign::any);
+    sensor.contact.min_pressure_N_per_mm2 =
+        c.number_or("min_pressure_N_per_mm2", sensor.contact.min_pressure_N_per_mm2, Sign::non_negative);
+    c.finish();
+    if (sensor.contact.gamma >= 0)
+      ObjectReader::fail("contact_law.gamma", "must be negative (resistance falls as pressure rises), got " +
+                                                  std::to_string(sensor.contact.gamma));
+  }
+  if (r.has("adc")) {
+    ObjectReader a(r.value("adc"), "adc");
+    sensor.adc.bits = a.integer_or("bits", sensor.adc.bits, 1, 24);
+    sensor.adc.vref_V = a.number_or("vref_V", sensor.adc.vref_V, Sign::positive);
+    sensor.adc.noise_V = a.number_or("noise_V", sensor.adc.noise_V, Sign::non_negative);
+    a.finish();
+  }
+  if (r.has("mesh")) {
+    ObjectReader m(r.value("mesh"), "mesh");
+    sensor.mesh.element_size_mm = m.number_or("element_size_mm", sensor.mesh.element_size_mm, Sign::positive);
+    sensor.mesh.twin_refinement = m.number_or("twin_refinement", sensor.mesh.twin_refinement, Sign::positive);
+    m.finish();
+    if (sensor.mesh.twin_refinement < 1)
+      ObjectReader::fail("mesh.twin_refinement", "must be at least 1 (the twin's mesh is never coarser)");
+  }
+  r.finish();
+  if (sensor.border && sensor.mesh.element_size_mm > 0.25 * sensor.border->size_mm())
+    ObjectReader::fail("mesh.element_size_mm", "is larger than a quarter of the sheet");
+}
+
+}  // namespace
+
+double ContactLaw::conductance_S_per_mm2(double pressure_N_per_mm2) const {
+  if (!(pressure_N_per_mm2 >= min_pressure_N_per_mm2) || pressure_N_per_mm2 <= 0) return 0.0;
+  return 1.0 / (alpha_ohm_mm2 * std::pow(pressure_N_per_mm2, gamma));
+}
+
+Sensor parse_sensor(const json& j, const std::string& where, const std::string& base_dir) {
+  Sensor sensor;
+  try {
+    parse_sections(j, sensor, base_dir);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(where + ": " + e.what());
+  }
+  return sensor;
+}
+
+Sensor load_sensor(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path + ": cannot open sensor file (" + std::strerror(errno) + ")");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
+  }
+  const auto parent = std::filesystem::path(path).parent_path();
+  Sensor sensor = parse_sensor(j, path, parent.empty() ? "." : parent.string());
+  if (sensor.name.empty()) sensor.name = std::filesystem::path(path).stem().string();
+  return sensor;
+}
+
+Sensor default_sensor() {
+  const json j = {{"name", "default 60 mm"},
+                  {"shape", {{"type", "rectangle"}, {"width_mm", 60.0}, {"height_mm", 60.0}}},
+                  {"electrodes", {{"count", 16}, {"width_mm", 3.0}}}};
+  return parse_sensor(j, "built-in default sensor");
+}
+
+json sensor_to_json(const Sensor& sensor) {
+  json j;
+  if (!sensor.name.empty()) j["name"] = sensor.name;
+  const Shape& s = sensor.shape;
+  switch (s.kind) {
+    case ShapeKind::rectangle: j["shape"] = {{"type", "rectangle"}, {"width_mm", s.width_mm}, {"height_mm", s.height_mm}}; break;
+    case ShapeKind::circle:
+      j["shape"] = {{"type", "circle"}, {"radius_mm", s.radius_mm}, {"center_mm", {s.center_mm.x(), s.center_mm.y()}}};
+      break;
+    case ShapeKind::polygon: {
+      json points = json::array();
+      for (const auto& p : s.points_mm) points.push_back({p.x(), p.y()});
+      j["shape"] = {{"type", "polygon"}, {"points_mm", points}};
+      break;
+    }
+    case ShapeKind::mesh_file: j["shape"] = {{"type", "mesh"}, {"file", s.mesh_path}}; break;
+  }
+  if (s.kind != ShapeKind::mesh_file) {
+    json electrodes = json::array();
+    for (const auto& e : sensor.electrodes)
+      electrodes.push_back({{"x_mm", e.center_mm.x()}, {"y_mm", e.center_mm.y()}, {"width_mm", e.width_mm}});
+    j["electrodes"] = electrodes;
+  }
+  j["drive_voltage_V"] = sensor.drive_voltage_V;
+  j["probing_sheet_resistance_ohm_per_sq"] = sensor.sheet_resistance_ohm_per_sq;
+  j["contact_law"] = {{"alpha_ohm_mm2", sensor.contact.alpha_ohm_mm2},
+                      {"gamma", sensor.contact.gamma},
+                      {"min_pressure_N_per_mm2", sensor.contact.min_pressure_N_per_mm2}};
+  j["adc"] = {{"bits", sensor.adc.bits}, {"vref_V", sensor.adc.vref_V}, {"noise_V", sensor.adc.noise_V}};
+  j["mesh"] = {{"element_size_mm", sensor.mesh.element_size_mm}, {"twin_refinement", sensor.mesh.twin_refinement}};
+  return j;
+}
+
+}  // namespace emit

@@ -1,0 +1,21 @@
+#include "emit/twin/adc.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace emit {
+
+double adc_step_V(const AdcSpec& adc) { return adc.vref_V / (std::ldexp(1.0, adc.bits) - 1.0); }
+
+void apply_adc(const AdcSpec& adc, Frame& frame, std::mt19937_64& rng) {
+  std::normal_distribution<double> noise(0.0, adc.noise_V);
+  const double step = adc_step_V(adc);
+  for (Index i = 0; i < frame.size(); ++i) {
+    double v = frame.data()[i];
+    if (adc.noise_V > 0) v += noise(rng);
+    v = std::clamp(v, 0.0, adc.vref_V);
+    frame.data()[i] = std::round(v / step) * step;
+  }
+}
+
+}  // namespace emit

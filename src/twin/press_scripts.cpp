@@ -1,0 +1,126 @@
+#include "emit/twin/press_scripts.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "emit/errors.hpp"
+
+namespace emit {
+
+namespace {
+
+const Border& border_for_scripts(const Sensor& sensor) {
+  if (!sensor.border) throw InvalidInput("press scripts need a rectangle, circle or polygon sheet, not a mesh file");
+  return *sensor.border;
+}
+
+Eigen::AlignedBox2d bounding_box(const Border& border) {
+  Eigen::AlignedBox2d box;
+  for (int k = 0; k < 512; ++k) box.extend(border.point_at(border.length_mm() * k / 512));
+  return box;
+}
+
+bool admissible(const Border& border, const Vector2& p, double margin_mm) {
+  return border.contains(p) && border.distance_to_border_mm(p) >= margin_mm;
+}
+
+class Sampler {
+ public:
+  Sampler(const Sensor& sensor, const PressStyle& style)
+      : border_(border_for_scripts(sensor)), style_(style), box_(bounding_box(border_)), rng_(style.seed) {
+    if (!(style.radius_mm > 0)) throw InvalidInput("press radius must be positive");
+    if (style.min_force_N < 0 || style.max_force_N < style.min_force_N)
+      throw InvalidInput("press forces must satisfy 0 <= min <= max");
+  }
+  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
+  double force() { return style_.min_force_N == style_.max_force_N ? style_.min_force_N : uniform(style_.min_force_N, style_.max_force_N); }
+  Press press_at(const Vector2& p) { return Press{p.x(), p.y(), style_.radius_mm, force()}; }
+  bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
+  Vector2 random_point() {
+    for (int attempt = 0; attempt < 100000; ++attempt) {
+      const Vector2 p(uniform(box_.min().x(), box_.max().x()), uniform(box_.min().y(), box_.max().y()));
+      if (admissible(p)) return p;
+    }
+    throw InvalidInput("no room for a press " + std::to_string(style_.margin_mm) + " mm from the border");
+  }
+  const Eigen::AlignedBox2d& box() const { return box_; }
+
+ private:
+  const Border& border_;
+  PressStyle style_;
+  Eigen::AlignedBox2d box_;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace
+
+PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter_mm, const PressStyle& style) {
+  if (!(spacing_mm > 0)) throw InvalidInput("grid spacing must be positive");
+  Sampler sampler(sensor, style);
+  PressSequence frames;
+  const auto& box = sampler.box();
+  const Vector2 centre = box.center();
+  const int nx = static_cast<int>(std::floor(0.5 * box.sizes().x() / spacing_mm));
+  const int ny = static_cast<int>(std::floor(0.5 * box.sizes().y() / spacing_mm));
+  for (int j = -ny; j <= ny; ++j)
+    for (int i = -nx; i <= nx; ++i) {
+      const Vector2 node = centre + spacing_mm * Vector2(i, j);
+      if (!sampler.admissible(node)) continue;
+      Vector2 p = node;
+      for (int attempt = 0; attempt < 100 && jitter_mm > 0; ++attempt) {
+        p = node + Vector2(sampler.uniform(-jitter_mm, jitter_mm), sampler.uniform(-jitter_mm, jitter_mm));
+        if (sampler.admissible(p)) break;
+        p = node;
+      }
+      frames.push_back({sampler.press_at(p)});
+    }
+  if (frames.empty()) throw InvalidInput("the grid has no point inside the sheet's margin");
+  return frames;
+}
+
+PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& style) {
+  if (frames < 1) throw InvalidInput("frames must be at least 1");
+  Sampler sampler(sensor, style);
+  PressSequence sequence;
+  for (int f = 0; f < frames; ++f) sequence.push_back({sampler.press_at(sampler.random_point())});
+  return sequence;
+}
+
+PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm,
+                                double max_separation_mm, const PressStyle& style) {
+  if (frames < 1) throw InvalidInput("frames must be at least 1");
+  if (!(min_separation_mm > 0) || max_separation_mm < min_separation_mm)
+    throw InvalidInput("separations must satisfy 0 < min <= max");
+  Sampler sampler(sensor, style);
+  PressSequence sequence;
+  for (int f = 0; f < frames; ++f) {
+    for (int attempt = 0;; ++attempt) {
+      if (attempt == 100000) throw InvalidInput("no room on the sheet for two presses that far apart");
+      const Vector2 a = sampler.random_point();
+      const double angle = sampler.uniform(0, 2 * std::numbers::pi);
+      const double separation = sampler.uniform(min_separation_mm, max_separation_mm);
+      const Vector2 b = a + separation * Vector2(std::cos(angle), std::sin(angle));
+      if (!sampler.admissible(b)) continue;
+      sequence.push_back({sampler.press_at(a), sampler.press_at(b)});
+      break;
+    }
+  }
+  return sequence;
+}
+
+PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
+                            const PressStyle& style) {
+  if (frames < 2) throw InvalidInput("a moving press needs at least 2 frames");
+  Sampler sampler(sensor, style);
+  PressSequence sequence;
+  for (int f = 0; f < frames; ++f) {
+    const Vector2 p = from_mm + (to_mm - from_mm) * (static_cast<double>(f) / (frames - 1));
+    if (!sampler.admissible(p))
+      throw InvalidInput("the moving press's path leaves the sheet (or its margin) at frame " + std::to_string(f));
+    sequence.push_back({sampler.press_at(p)});
+  }
+  return sequence;
+}
+
+}  // namespace emit

@@ -1,0 +1,34 @@
+#include "emit/twin/twin.hpp"
+
+#include "emit/twin/adc.hpp"
+#include "emit/twin/press_contact.hpp"
+
+namespace emit {
+
+Twin::Twin(Sensor sensor, const TwinOptions& options)
+    : sensor_(std::move(sensor)),
+      options_(options),
+      model_(generate_mesh(sensor_, options.mesh ? *options.mesh : twin_mesh_options(sensor_, options.mesh_seed)),
+             sensor_.sheet_resistance_ohm_per_sq),
+      rng_(options.noise_seed) {}
+
+ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
+  for (std::size_t i = 0; i < presses.size(); ++i) validate_press(sensor_, presses[i], "press " + std::to_string(i));
+  return press_contact_load(mesh(), presses, sensor_.contact, options_.quadrature_levels);
+}
+
+Frame Twin::exact_frame(const std::vector<Press>& presses) const {
+  return model_.solve_frame(contact_of(presses), sensor_.drive_voltage_V);
+}
+
+Frame Twin::frame(const std::vector<Press>& presses) {
+  Frame f = exact_frame(presses);
+  if (options_.adc) apply_adc(sensor_.adc, f, rng_);
+  return f;
+}
+
+Matrix Twin::potentials(const std::vector<Press>& presses) const {
+  return model_.solve_potentials(contact_of(presses), sensor_.drive_voltage_V);
+}
+
+}  // namespace emit

@@ -1,0 +1,146 @@
+// The forward model: an analytic case with its convergence rate, the all-groundings-from-one-
+// factorisation trick against brute-force grounded solves, reciprocity, and the zero frame.
+#include "emit/fem/forward_model.hpp"
+
+#include <cmath>
+
+#include <Eigen/SparseCholesky>
+#include <gtest/gtest.h>
+
+#include "emit/fem/electrode_dofs.hpp"
+#include "emit/fem/stiffness.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/press_contact.hpp"
+#include "test_support.hpp"
+#include "tolerances.hpp"
+
+namespace emit {
+namespace {
+
+constexpr double E = 3.3, Rs = 5000.0;
+
+// Strip W × H, electrode 0 the bottom side (grounded), electrode 1 the top side (floating),
+// uniform contact g everywhere: u'' = k²(u − E), k² = g·Rs, u(0) = 0, u'(H) = 0, so the top
+// electrode reads E (1 − 1/cosh(kH)).
+double strip_exact_V(double g, double H) { return E * (1.0 - 1.0 / std::cosh(std::sqrt(g * Rs) * H)); }
+
+double strip_frame_V(int cells_per_mm, int ground, double g) {
+  const double W = 4, H = 20;
+  const Mesh mesh = test::strip_mesh(W, H, static_cast<int>(W * cells_per_mm), static_cast<int>(H * cells_per_mm));
+  const ForwardModel model(mesh, Rs);
+  const ContactLoad contact = contact_load_from_elements(mesh, Vector::Constant(mesh.triangle_count(), g));
+  const Frame frame = model.solve_frame(contact, E);
+  return frame(ground, 1 - ground);
+}
+
+TEST(ForwardModel, StripMatchesAnalyticSolution) {
+  const double g = 2e-6;  // kH = 2: a strongly curved profile
+  // Ground at either end: the second goes through the 2×2 regrounding.
+  for (int ground : {0, 1}) EXPECT_NEAR(strip_frame_V(4, ground, g), strip_exact_V(g, 20), 2e-3 * E);
+}
+
+TEST(ForwardModel, StripConvergesAtSecondOrder) {
+  const double g = 2e-6, exact = strip_exact_V(g, 20);
+  std::vector<double> errors;
+  for (int cells_per_mm : {1, 2, 4}) errors.push_back(std::abs(strip_frame_V(cells_per_mm, 1, g) - exact));
+  for (std::size_t i = 1; i < errors.size(); ++i) {
+    const double rate = std::log2(errors[i - 1] / errors[i]);
+    EXPECT_GE(rate, test::min_convergence_rate) << "refinement " << i << ": errors " << errors[i - 1] << " → " << errors[i];
+  }
+}
+
+TEST(ForwardModel, ZeroFrameWithoutContact) {
+  const ForwardModel model(test::strip_mesh(4, 4, 4, 4), Rs);
+  const Frame frame = model.solve_frame(ContactLoad{}, E);
+  EXPECT_EQ(frame.cwiseAbs().maxCoeff(), 0.0);
+}
+
+struct SmallSensorModel {
+  Sensor sensor = default_sensor();
+  Mesh mesh;
+  SmallSensorModel() {
+    MeshOptions options;
+    options.element_size_mm = 4.0;  // small enough for dense checks
+    mesh = generate_mesh(sensor, options);
+  }
+};
+
+// Brute force: for each ground l, assemble F = K + C in dof space, remove dof l, solve directly
+// with another solver (Eigen's simplicial LDLᵀ) — no regrounding trick.
+TEST(ForwardModel, AllGroundingsAgreeWithDirectGroundedSolves) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{24, 33, 6, 12}, {44, 15, 4, 6}}, s.sensor.contact);
+  const Frame frame = ForwardModel(s.mesh, Rs).solve_frame(contact, E);
+
+  const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
+  const SparseMatrix K = to_dof_space(assemble_stiffness(s.mesh, 1.0 / Rs), dofs);
+  SparseMatrix C_nodes(s.mesh.node_count(), s.mesh.node_count());
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (std::size_t i = 0; i < contact.triangles.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        entries.emplace_back(s.mesh.triangles(contact.triangles[i], a), s.mesh.triangles(contact.triangles[i], b),
+                             contact.local_S[i](a, b));
+  C_nodes.setFromTriplets(entries.begin(), entries.end());
+  const Matrix F = Matrix(K) + Matrix(to_dof_space(C_nodes, dofs));
+  const Vector b = E * (F - Matrix(K)) * Vector::Ones(F.cols());
+  const int n = dofs.dof_count, N = dofs.electrode_count;
+  double worst = 0;
+  for (int l = 0; l < N; ++l) {
+    std::vector<int> keep;
+    for (int d = 0; d < n; ++d)
+      if (d != l) keep.push_back(d);
+    const Matrix A = F(keep, keep);
+    const Vector u = A.ldlt().solve(b(keep));
+    for (int m = 0; m < N; ++m) {
+      const double expected = m == l ? 0.0 : u[m < l ? m : m - 1];
+      worst = std::max(worst, std::abs(frame(l, m) - expected));
+    }
+  }
+  EXPECT_LE(worst, test::solve_roundoff * E);
+}
+
+// Reciprocity: V[l][m] / E equals the fraction of a unit current injected at electrode m
+// (electrode l grounded, driving layer held at 0 V) that leaks into the driving layer. The ports
+// (driving layer, l) and (m, l) of a linear passive network have a symmetric transfer impedance.
+TEST(ForwardModel, ReciprocityBetweenDriveAndElectrodePorts) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{35, 40, 5, 10}}, s.sensor.contact);
+  const Frame frame = ForwardModel(s.mesh, Rs).solve_frame(contact, E);
+  const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
+  const SparseMatrix K = to_dof_space(assemble_stiffness(s.mesh, 1.0 / Rs), dofs);
+  std::vector<Eigen::Triplet<double, int>> entries;
+  for (std::size_t i = 0; i < contact.triangles.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        entries.emplace_back(dofs.dof_of_node[s.mesh.triangles(contact.triangles[i], a)],
+                             dofs.dof_of_node[s.mesh.triangles(contact.triangles[i], b)], contact.local_S[i](a, b));
+  SparseMatrix C(dofs.dof_count, dofs.dof_count);
+  C.setFromTriplets(entries.begin(), entries.end());
+  const Matrix F = Matrix(K + C);
+  const Vector leak_weights = C * Vector::Ones(C.cols());  // current into the driving layer = (C·1)ᵀ z
+  for (int l : {0, 5, 11})
+    for (int m : {2, 7, 14}) {
+      std::vector<int> keep;
+      for (int d = 0; d < dofs.dof_count; ++d)
+        if (d != l) keep.push_back(d);
+      Vector unit_current = Vector::Zero(dofs.dof_count - 1);
+      unit_current[m < l ? m : m - 1] = 1.0;
+      const Vector z = Matrix(F(keep, keep)).ldlt().solve(unit_current);
+      const double leaked = leak_weights(keep).dot(z);
+      EXPECT_NEAR(frame(l, m) / E, leaked, test::solve_roundoff) << "ground " << l << ", sense " << m;
+    }
+}
+
+TEST(ForwardModel, GroundedElectrodeReadsZero) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{30, 30, 5, 10}}, s.sensor.contact);
+  const Frame frame = ForwardModel(s.mesh, Rs).solve_frame(contact, E);
+  EXPECT_LE(frame.diagonal().cwiseAbs().maxCoeff(), test::solve_roundoff * E);
+  EXPECT_GT(frame.minCoeff(), -test::solve_roundoff);  // potentials lie in [0, E]
+  EXPECT_LT(frame.maxCoeff(), E);
+}
+
+}  // namespace
+}  // namespace emit

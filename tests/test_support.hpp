@@ -1,0 +1,28 @@
+#pragma once
+// Helpers shared by the tests: meshes built without Gmsh (so FEM tests do not depend on the
+// mesher), paths to the repository's data, and a CLI runner for end-to-end tests.
+#include <string>
+
+#include "emit/mesh/mesh.hpp"
+
+namespace emit::test {
+
+/// Structured mesh of [0,w]×[0,h] with nx×ny cells, each split into two triangles along
+/// alternating diagonals. Electrode 0 is the whole bottom side, electrode 1 the whole top side.
+Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny);
+
+std::string source_path(const std::string& relative);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+/// Run the emit CLI with these arguments (a shell-quoted string), capturing stdout and stderr.
+CommandResult run_emit(const std::string& arguments);
+
+/// A fresh, empty temporary folder for one test.
+std::string temp_folder(const std::string& name);
+
+std::string read_text(const std::string& path);
+
+}  // namespace emit::test
