@@ -58,7 +58,7 @@ void run_demo(const std::string& out_dir) {
 void add_demo_command(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("emit-demo");
   CLI::App* cmd = app.add_subcommand("demo", "Simulate a few presses on the built-in 60 mm sensor and draw them");
-  cmd->add_option("--out", *out_dir, "Folder for the frames, presses and images", true);
+  cmd->add_option("--out", *out_dir, "Folder for the frames, presses and images")->capture_default_str();
   cmd->callback([out_dir] { run_demo(*out_dir); });
 }
 

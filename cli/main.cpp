@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "emit: %s\nRun 'emit --help' for usage.\n", e.what());
+    std::fprintf(stderr, "emit: %s (see 'emit --help')\n", e.what());
     return 2;
   } catch (const emit::Error& e) {
     std::fprintf(stderr, "emit: %s\n", e.what());

@@ -105,7 +105,9 @@ TEST(Twin, ResponseGrowsWithForce) {
     const Frame frame = twin.exact_frame({{25, 33, 5, force}});
     for (int l = 0; l < 16; ++l)
       for (int m = 0; m < 16; ++m)
-        if (l != m) EXPECT_GT(frame(l, m), previous(l, m)) << "force " << force << " N, ground " << l << ", sense " << m;
+        if (l != m) {
+          EXPECT_GT(frame(l, m), previous(l, m)) << "force " << force << " N, ground " << l << ", sense " << m;
+        }
     previous = frame;
   }
 }
@@ -165,6 +167,36 @@ TEST(Adc, QuantisesClipsAndAddsNoise) {
   const double sd = std::sqrt((many.array() - mean).square().sum() / (many.size() - 1));
   const double expected = std::sqrt(0.001 * 0.001 + step * step / 12);
   EXPECT_NEAR(sd, expected, 5 * expected / std::sqrt(2.0 * many.size()));
+}
+
+}  // namespace
+}  // namespace emit
+
+namespace emit {
+namespace {
+
+// Refining the twin's mesh moves it towards the independent, finer reference: halving the
+// element size must shrink the worst difference (O(h²) would quarter it; the reference's own
+// discretisation error limits how far).
+TEST(Conformance, TwinConvergesTowardsTheReferenceUnderRefinement) {
+  const std::string base = test::source_path("tests/data/conformance/square60");
+  const Sensor sensor = load_sensor(base + "_sensor.json");
+  const auto reference = read_frames_csv(base + "_frames.csv", 16);
+  const PressSequence presses = read_presses_csv(base + "_presses.csv");
+  std::vector<double> errors;
+  for (double h : {2.4, 1.2, 0.6}) {
+    TwinOptions options = exact_twin();
+    options.mesh = twin_mesh_options(sensor);
+    options.mesh->element_size_mm = h;
+    const Twin twin(sensor, options);
+    double worst = 0;
+    for (std::size_t f = 0; f < presses.size(); ++f)
+      worst = std::max(worst, (twin.exact_frame(presses[f]) - reference[f]).cwiseAbs().maxCoeff() /
+                                  reference[f].cwiseAbs().maxCoeff());
+    std::printf("twin element size %.1f mm: worst difference %.3f %% of the largest potential\n", h, 100 * worst);
+    errors.push_back(worst);
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], 0.7 * errors[i - 1]);
 }
 
 }  // namespace

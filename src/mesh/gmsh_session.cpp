@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <map>
-#include <regex>
+#include <cctype>
+#include <optional>
 
 #include <gmsh.h>
 
@@ -42,6 +43,25 @@ std::string GmshSession::last_error() {
   return {};
 }
 
+namespace {
+
+/// The electrode number in a physical group's name "electrode <i>" (any case), if it is one.
+std::optional<int> electrode_number(const std::string& name) {
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string prefix = "electrode";
+  const auto start = lower.find_first_not_of(' ');
+  if (start == std::string::npos || lower.compare(start, prefix.size(), prefix) != 0) return std::nullopt;
+  const auto digits = lower.find_first_not_of(' ', start + prefix.size());
+  const auto end = lower.find_last_not_of(' ');
+  if (digits == std::string::npos || digits > end) return std::nullopt;
+  const std::string number = lower.substr(digits, end - digits + 1);
+  if (number.size() > 6 || number.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  return std::stoi(number);
+}
+
+}  // namespace
+
 Mesh GmshSession::extract_mesh(const std::string& context) {
   std::vector<std::size_t> element_tags, triangle_node_tags;
   gmsh::model::mesh::getElementsByType(2, element_tags, triangle_node_tags);
@@ -79,17 +99,16 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
 
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, 1);
-  const std::regex electrode_name(R"(\s*electrode\s*(\d+)\s*)", std::regex::icase);
   std::map<int, std::vector<int>> electrodes;
   for (const auto& [dim, tag] : groups) {
     std::string name;
     gmsh::model::getPhysicalName(dim, tag, name);
-    std::smatch match;
-    if (!std::regex_match(name, match, electrode_name)) continue;
+    const auto number = electrode_number(name);
+    if (!number) continue;
     std::vector<std::size_t> tags;
     std::vector<double> group_coords;
     gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, group_coords);
-    std::vector<int>& nodes = electrodes[std::stoi(match[1])];
+    std::vector<int>& nodes = electrodes[*number];
     for (std::size_t t : tags)
       if (index_of.count(t)) nodes.push_back(index_of[t]);
     std::sort(nodes.begin(), nodes.end());

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs emit's build and test dependencies from Debian's packages. Idempotent: it installs
+# only what is missing, and does nothing (not even apt-get update) when all is there.
+set -euo pipefail
+
+packages=(
+  g++ cmake make pkg-config             # toolchain
+  libgmsh-dev                           # meshing (Gmsh's C++ API)
+  libeigen3-dev libsuitesparse-dev      # dense and sparse linear algebra, CHOLMOD
+  libcli11-dev nlohmann-json3-dev       # command line, JSON
+  libpng-dev                            # images
+  libgtest-dev libbenchmark-dev         # tests, benchmarks
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo=sudo
+fi
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update -q
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

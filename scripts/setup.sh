@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Installs what emit needs (Debian packages) and builds it in build/ (Release).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEMIT_BUILD_TESTS=OFF >/dev/null
+cmake --build build -j"$(nproc)" --target emit
+echo "setup: built build/emit"

@@ -1,0 +1,24 @@
+#pragma once
+// A tiny built-in 5×7 bitmap font for the labels of rendered images, so that drawing text needs
+// no font files or libraries. Covers digits, letters (lower case drawn as upper case), space and
+// . - + , : ( ) / = % · ? _; anything else draws as '?'.
+#include <string_view>
+
+#include "emit/render/image.hpp"
+
+namespace emit::detail {
+
+inline constexpr int glyph_width = 5;
+inline constexpr int glyph_height = 7;
+
+/// Width in pixels of `utf8` drawn at `scale` (glyphs one blank font column apart).
+int text_width_px(std::string_view utf8, int scale);
+
+/// Height in pixels of a line of text drawn at `scale`.
+inline int text_height_px(int scale) { return glyph_height * scale; }
+
+/// Draws `utf8` with its top-left corner at (x, y), each font pixel a scale×scale block. Parts
+/// outside the image are clipped.
+void draw_text(Image& image, int x, int y, std::string_view utf8, Rgb colour, int scale);
+
+}  // namespace emit::detail

@@ -1,0 +1,153 @@
+// End to end: the emit CLI run as a user runs it, on good and on bad input.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "emit/io/frames_csv.hpp"
+#include "emit/io/presses_csv.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include "emit/render/image.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_emit;
+using test::source_path;
+
+std::string last_line_of(const std::string& text) {
+  const std::string trimmed = text.substr(0, text.find_last_not_of('\n') + 1);
+  return trimmed.substr(trimmed.find_last_of('\n') == std::string::npos ? 0 : trimmed.find_last_of('\n') + 1);
+}
+
+int occurrences(const std::string& text, const std::string& what) {
+  int count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
+}
+
+TEST(Cli, SimulatesOnePress) {
+  const std::string dir = test::temp_folder("cli_one");
+  const auto r = run_emit("simulate --press 30,30,5,10 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/f.csv", 16);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].diagonal().cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(frames[0].maxCoeff(), 0.1);  // a 10 N press reads hundreds of mV
+  const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0][0].force_N, 10.0);
+}
+
+TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
+  const std::string dir = test::temp_folder("cli_grid");
+  const auto r = run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
+                          " --script grid --spacing-mm 10 --radius-mm 3 --out " + dir + "/g.csv --truth " + dir + "/t.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/g.csv", 16);
+  const auto truth = read_presses_csv(dir + "/t.csv");
+  EXPECT_EQ(frames.size(), 9u);  // 30 mm sheet, 10 mm pitch, 3 mm margin: a 3 × 3 grid
+  EXPECT_EQ(truth.size(), frames.size());
+}
+
+TEST(Cli, TwoFingerAndMovingScripts) {
+  const std::string dir = test::temp_folder("cli_scripts");
+  auto r = run_emit("simulate --script two-finger --frames 3 --separation-mm 12,40 --force-N 5,20 --out " + dir + "/two.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto two = read_presses_csv(dir + "/two_presses.csv");
+  ASSERT_EQ(two.size(), 3u);
+  for (const auto& frame : two) {
+    ASSERT_EQ(frame.size(), 2u);
+    const double separation = std::hypot(frame[0].x_mm - frame[1].x_mm, frame[0].y_mm - frame[1].y_mm);
+    EXPECT_GE(separation, 12.0 - 1e-3);
+    EXPECT_LE(separation, 40.0 + 1e-3);
+  }
+  r = run_emit("simulate --script moving --from 10,10 --to 50,50 --frames 5 --out " + dir + "/move.csv --images " + dir + "/img");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_frames_csv(dir + "/move.csv", 16).size(), 5u);
+  EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
+}
+
+TEST(Cli, MeshWritesAFileAndReportsQuality) {
+  const std::string dir = test::temp_folder("cli_mesh");
+  const auto r = run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("triangles"), std::string::npos);
+  EXPECT_NE(r.out.find("min angle"), std::string::npos);
+  EXPECT_EQ(read_msh(dir + "/c.msh").electrode_count(), 16);
+}
+
+// A sensor whose shape is a mesh file written by `emit mesh` simulates like the original.
+TEST(Cli, MeshFileSensor) {
+  const std::string dir = test::temp_folder("cli_mesh_sensor");
+  ASSERT_EQ(run_emit("mesh --element-size-mm 2 --out " + dir + "/sheet.msh").exit_code, 0);
+  std::ofstream(dir + "/sensor.json") << R"({"shape": {"type": "mesh", "file": "sheet.msh"}})";
+  const auto r = run_emit("simulate --sensor " + dir + "/sensor.json --press 30,30,5,10 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_frames_csv(dir + "/f.csv", 16).size(), 1u);
+}
+
+TEST(Cli, DemoWritesFramesAndPictures) {
+  const std::string dir = test::temp_folder("cli_demo");
+  const auto r = run_emit("demo --out " + dir + "/demo");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_frames_csv(dir + "/demo/frames.csv", 16).size(), 4u);
+  for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/demo/frame_" + std::to_string(f) + ".png").height(), 100);
+  EXPECT_NE(r.out.find("electrode potentials"), std::string::npos);
+}
+
+// Bad input: one line on stderr that starts with "emit: ", a non-zero exit, and the output
+// file — here one that already holds good data — left exactly as it was.
+struct BadRun {
+  const char* what;
+  std::string arguments;  // OUT stands for the output file
+  const char* message_contains;
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
+  const std::string dir = test::temp_folder("cli_bad");
+  const std::string out = dir + "/out.csv";
+  std::ofstream(out) << "GOOD\n";
+  std::ofstream(dir + "/unknown_key.json") << R"({"shape": {"type": "circle", "radius_mm": 20}, "electrodes": {"count": 8, "width_mm": 2}, "colour": 1})";
+  std::ofstream(dir + "/bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\ngarbage\n";
+  std::ofstream(dir + "/msh_sensor.json") << R"({"shape": {"type": "mesh", "file": "bad.msh"}})";
+  std::string arguments = GetParam().arguments;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
+    for (std::size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
+  const auto r = run_emit(arguments);
+  EXPECT_NE(r.exit_code, 0);
+  // Progress lines may come first; the error is the last line and the only one saying "emit: ".
+  const std::string last_line = last_line_of(r.err);
+  EXPECT_EQ(last_line.rfind("emit: ", 0), 0u) << r.err;
+  EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
+  EXPECT_NE(last_line.find(GetParam().message_contains), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_text(out), "GOOD\n");
+  EXPECT_FALSE(fs::exists(dir + "/out_presses.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Errors, CliBadInput,
+    ::testing::Values(
+        BadRun{"missing sensor file", "simulate --sensor DIR/none.json --press 30,30,5,10 --out OUT", "none.json"},
+        BadRun{"unknown key", "simulate --sensor DIR/unknown_key.json --press 20,20,5,10 --out OUT", "colour: unknown key"},
+        BadRun{"press off the sheet", "simulate --press 70,30,5,10 --out OUT", "off the sheet"},
+        BadRun{"press not numbers", "simulate --press 30,thirty,5,10 --out OUT", "\"thirty\" is not a number"},
+        BadRun{"negative force", "simulate --press 30,30,5,-1 --out OUT", "force must not be negative"},
+        BadRun{"malformed msh", "simulate --sensor DIR/msh_sensor.json --press 30,30,5,10 --out OUT", "bad.msh"},
+        BadRun{"missing msh", "mesh --sensor DIR/none.json --out OUT", "none.json"},
+        BadRun{"unknown script", "simulate --script zigzag --out OUT", "unknown script"},
+        BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
+        BadRun{"unknown option", "simulate --pres 30,30,5,10 --out OUT", "--pres"}),
+    [](const auto& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
+
+}  // namespace
+}  // namespace emit
