@@ -102,7 +102,7 @@ void run_simulate(const SimulateArgs& args) {
   write_frames_csv(args.out_path, frames);
   write_presses_csv(truth_path, sequence);
   std::printf("wrote %zu frames of %d electrodes to %s and the presses to %s\n", frames.size(),
-              sensor.electrode_count(), args.out_path.c_str(), truth_path.c_str());
+              twin.mesh().electrode_count(), args.out_path.c_str(), truth_path.c_str());
   if (args.print_table)
     for (const Frame& frame : frames) print_frame_table(frame);
   else

@@ -11,6 +11,8 @@
 #include "emit/errors.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include <nlohmann/json.hpp>
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/adc.hpp"
 #include "emit/twin/press_contact.hpp"
@@ -197,6 +199,28 @@ TEST(Conformance, TwinConvergesTowardsTheReferenceUnderRefinement) {
     errors.push_back(worst);
   }
   for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], 0.7 * errors[i - 1]);
+}
+
+}  // namespace
+}  // namespace emit
+
+namespace emit {
+namespace {
+
+// A sheet read from a mesh file has no analytic border; the mesh itself says what is off it.
+TEST(Twin, PressOffAMeshFileSheetIsRejected) {
+  const std::string dir = test::temp_folder("twin_mesh_file");
+  MeshOptions options;
+  options.element_size_mm = 3;
+  write_msh(generate_mesh(default_sensor(), options), dir + "/sheet.msh");
+  const Sensor sensor = parse_sensor(nlohmann::json::parse(R"({"shape": {"type": "mesh", "file": "sheet.msh"}})"),
+                                     "sensor", dir);
+  TwinOptions twin_options = exact_twin();
+  twin_options.mesh = options;
+  const Twin twin(sensor, twin_options);
+  EXPECT_EQ(twin.mesh().electrode_count(), 16);
+  EXPECT_GT(twin.exact_frame({{30, 30, 5, 10}}).maxCoeff(), 0.1);
+  EXPECT_THROW(twin.exact_frame({{61, 30, 5, 10}}), InvalidInput);
 }
 
 }  // namespace

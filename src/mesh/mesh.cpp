@@ -14,6 +14,18 @@ Vector3 Mesh::triangle_centroid_mm(Index t) const {
   return (nodes_mm.row(triangles(t, 0)) + nodes_mm.row(triangles(t, 1)) + nodes_mm.row(triangles(t, 2))).transpose() / 3.0;
 }
 
+bool Mesh::contains_xy(const Vector2& p) const {
+  for (Index t = 0; t < triangle_count(); ++t) {
+    double sign[3];
+    for (int k = 0; k < 3; ++k) {
+      const Vector2 a = nodes_mm.row(triangles(t, k)).head<2>(), b = nodes_mm.row(triangles(t, (k + 1) % 3)).head<2>();
+      sign[k] = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
+    }
+    if ((sign[0] >= 0 && sign[1] >= 0 && sign[2] >= 0) || (sign[0] <= 0 && sign[1] <= 0 && sign[2] <= 0)) return true;
+  }
+  return false;
+}
+
 std::vector<std::array<int, 2>> Mesh::border_edges() const {
   std::map<std::array<int, 2>, int> uses;
   for (Index t = 0; t < triangle_count(); ++t)

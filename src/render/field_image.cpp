@@ -185,21 +185,24 @@ PixelRange pixels_within(const Image& image, double x_min, double x_max, double 
 }
 
 /// Fills one triangle, colouring each pixel whose centre lies inside (edges included, so
-/// neighbouring triangles leave no cracks) by the linearly interpolated value.
-void fill_triangle(Image& image, const std::array<Vector2, 3>& p, const std::array<double, 3>& value,
+/// neighbouring triangles leave no cracks) by the linearly interpolated value. Plain doubles rather
+/// than Eigen vectors: this loop runs for every pixel of the sheet.
+void fill_triangle(Image& image, const std::array<Vector2, 3>& corners, const std::array<double, 3>& value,
                    const ValueRange& range) {
-  const double area = (p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x();
+  const double px[3] = {corners[0].x(), corners[1].x(), corners[2].x()};
+  const double py[3] = {corners[0].y(), corners[1].y(), corners[2].y()};
+  const double area = (px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0]);  // doubled, signed
   if (area == 0) return;
-  const PixelRange r = pixels_within(image, std::min({p[0].x(), p[1].x(), p[2].x()}), std::max({p[0].x(), p[1].x(), p[2].x()}),
-                                     std::min({p[0].y(), p[1].y(), p[2].y()}), std::max({p[0].y(), p[1].y(), p[2].y()}));
+  const PixelRange r = pixels_within(image, std::min({px[0], px[1], px[2]}), std::max({px[0], px[1], px[2]}),
+                                     std::min({py[0], py[1], py[2]}), std::max({py[0], py[1], py[2]}));
   constexpr double edge_tolerance = 1e-9;  // barycentric weights are relative, so this is scale-free
   for (int y = r.y0; y <= r.y1; ++y)
     for (int x = r.x0; x <= r.x1; ++x) {
-      const Vector2 q(x + 0.5, y + 0.5);
-      std::array<double, 3> weight{};
+      const double qx = x + 0.5, qy = y + 0.5;
+      double weight[3];  // barycentric: each corner's share is the sub-triangle opposite it
       for (int k = 0; k < 3; ++k) {
-        const Vector2 a = p[(k + 1) % 3] - q, b = p[(k + 2) % 3] - q;
-        weight[k] = (a.x() * b.y() - a.y() * b.x()) / area;  // barycentric: opposite sub-triangle's share
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        weight[k] = ((px[a] - qx) * (py[b] - qy) - (py[a] - qy) * (px[b] - qx)) / area;
       }
       if (weight[0] < -edge_tolerance || weight[1] < -edge_tolerance || weight[2] < -edge_tolerance) continue;
       const double v = weight[0] * value[0] + weight[1] * value[1] + weight[2] * value[2];

@@ -1,5 +1,6 @@
 #include "emit/twin/twin.hpp"
 
+#include "emit/errors.hpp"
 #include "emit/twin/adc.hpp"
 #include "emit/twin/press_contact.hpp"
 
@@ -13,7 +14,13 @@ Twin::Twin(Sensor sensor, const TwinOptions& options)
       rng_(options.noise_seed) {}
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
-  for (std::size_t i = 0; i < presses.size(); ++i) validate_press(sensor_, presses[i], "press " + std::to_string(i));
+  for (std::size_t i = 0; i < presses.size(); ++i) {
+    const std::string where = "press " + std::to_string(i);
+    validate_press(sensor_, presses[i], where);
+    // A mesh-file sheet has no analytic border: ask the mesh.
+    if (!sensor_.border && !mesh().contains_xy(Vector2(presses[i].x_mm, presses[i].y_mm)))
+      throw InvalidInput(where + ": centre is off the sheet");
+  }
   return press_contact_load(mesh(), presses, sensor_.contact, options_.quadrature_levels);
 }
 

@@ -28,6 +28,8 @@ struct Mesh {
   Vector3 triangle_centroid_mm(Index t) const;
   /// Border edges of electrode e (pairs of node indices), derived from the triangles.
   std::vector<std::array<int, 2>> electrode_edges(int e) const;
+  /// Whether the point (x, y) lies on some triangle, seen from +z (flat sheets).
+  bool contains_xy(const Vector2& point_mm) const;
   /// All border edges (edges used by exactly one triangle).
   std::vector<std::array<int, 2>> border_edges() const;
 };
