@@ -106,6 +106,8 @@ struct BadRun {
   const char* message_contains;
 };
 
+void PrintTo(const BadRun& run, std::ostream* os) { *os << run.what; }
+
 class CliBadInput : public ::testing::TestWithParam<BadRun> {};
 
 TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {

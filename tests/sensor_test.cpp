@@ -74,6 +74,8 @@ struct BadCase {
   const char* message_contains;
 };
 
+void PrintTo(const BadCase& bad, std::ostream* os) { *os << bad.what; }
+
 class SensorValidation : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(SensorValidation, NamesTheKeyAndSaysWhy) {

@@ -1,7 +1,8 @@
 #pragma once
-// A tiny built-in 5×7 bitmap font for the labels of rendered images, so that drawing text needs
-// no font files or libraries. Covers digits, letters (lower case drawn as upper case), space and
-// . - + , : ( ) / = % · ? _; anything else draws as '?'.
+// A tiny built-in 5×7 bitmap font (plus a descender row) for the labels of rendered images, so that drawing text needs
+// no font files or libraries. Covers digits, upper- and lower-case letters (both, since units
+// such as mV and MV differ only in case), space, . - + , : ( ) / = % · ? _ and ² µ Ω for units;
+// anything else draws as '?'.
 #include <string_view>
 
 #include "emit/render/image.hpp"
@@ -9,7 +10,7 @@
 namespace emit::detail {
 
 inline constexpr int glyph_width = 5;
-inline constexpr int glyph_height = 7;
+inline constexpr int glyph_height = 8;  ///< 7 rows for capitals and digits, 1 for descenders
 
 /// Width in pixels of `utf8` drawn at `scale` (glyphs one blank font column apart).
 int text_width_px(std::string_view utf8, int scale);

@@ -155,8 +155,10 @@ Canvas plan_canvas(const Bounds& sheet, const ValueRange& range, const FieldImag
   c.min_label = value_label(range.min, options.unit);
   c.max_label = value_label(range.max, options.unit);
   const int line_height = detail::text_height_px(font_scale) + 4;
-  const int title_height = c.title_lines.empty() ? 0 : padding_px + line_height * static_cast<int>(c.title_lines.size());
-  const int label_width = std::max(detail::text_width_px(c.min_label, font_scale), detail::text_width_px(c.max_label, font_scale));
+  const int title_lines = static_cast<int>(c.title_lines.size());
+  const int title_height = title_lines == 0 ? 0 : padding_px + line_height * title_lines;
+  const int label_width =
+      std::max(detail::text_width_px(c.min_label, font_scale), detail::text_width_px(c.max_label, font_scale));
   const int right_width = label_margin_px + bar_width_px + 6 + label_width + padding_px;
   const int sheet_width_px = c.width - label_margin_px - right_width;
   if (sheet_width_px < 40)
@@ -240,7 +242,8 @@ void draw_segment(Image& image, const Vector2& a, const Vector2& b, double half_
 /// Paints every pixel whose centre lies within `half_width` of the circle.
 void draw_ring(Image& image, const Vector2& centre, double radius, double half_width, Rgb colour) {
   const double reach = radius + half_width;
-  const PixelRange r = pixels_within(image, centre.x() - reach, centre.x() + reach, centre.y() - reach, centre.y() + reach);
+  const PixelRange r =
+      pixels_within(image, centre.x() - reach, centre.x() + reach, centre.y() - reach, centre.y() + reach);
   for (int y = r.y0; y <= r.y1; ++y)
     for (int x = r.x0; x <= r.x1; ++x)
       if (std::abs((Vector2(x + 0.5, y + 0.5) - centre).norm() - radius) <= half_width) image.set(x, y, colour);
@@ -248,7 +251,8 @@ void draw_ring(Image& image, const Vector2& centre, double radius, double half_w
 
 void draw_edges(Image& image, const FieldLayout& layout, const Mesh& mesh,
                 const std::vector<std::array<int, 2>>& edges, double half_width, Rgb colour) {
-  for (const auto& [a, b] : edges) draw_segment(image, node_px(layout, mesh, a), node_px(layout, mesh, b), half_width, colour);
+  for (const auto& [a, b] : edges)
+    draw_segment(image, node_px(layout, mesh, a), node_px(layout, mesh, b), half_width, colour);
 }
 
 /// Writes electrode e's number just outside the sheet: from the electrode's middle, away from the

@@ -12,6 +12,14 @@
 #include "emit/io/atomic_file.hpp"
 
 namespace emit {
+namespace {
+
+/// Index of pixel (x, y)'s red byte in a row-major RGB buffer `width` pixels wide.
+std::size_t rgb_offset(int x, int y, int width) {
+  return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3;
+}
+
+}  // namespace
 
 Image::Image(int width_px, int height_px, Rgb background) : width_(width_px), height_(height_px) {
   if (width_px <= 0 || height_px <= 0)
@@ -27,7 +35,7 @@ Image::Image(int width_px, int height_px, Rgb background) : width_(width_px), he
 
 void Image::set(int x, int y, Rgb colour) {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 3;
+  const std::size_t i = rgb_offset(x, y, width_);
   rgb_[i] = colour.r;
   rgb_[i + 1] = colour.g;
   rgb_[i + 2] = colour.b;
@@ -37,7 +45,7 @@ Rgb Image::get(int x, int y) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_)
     throw std::out_of_range("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                             std::to_string(width_) + "x" + std::to_string(height_) + " image");
-  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 3;
+  const std::size_t i = rgb_offset(x, y, width_);
   return {rgb_[i], rgb_[i + 1], rgb_[i + 2]};
 }
 
@@ -82,7 +90,8 @@ bool encode_png(std::FILE* file, const Image& image, PngError& error) {
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   const std::size_t stride = static_cast<std::size_t>(image.width()) * 3;
-  for (int y = 0; y < image.height(); ++y) png_write_row(png, image.rgb().data() + stride * static_cast<std::size_t>(y));
+  for (int y = 0; y < image.height(); ++y)
+    png_write_row(png, image.rgb().data() + stride * static_cast<std::size_t>(y));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return true;
