@@ -63,14 +63,7 @@ void BM_FrameNaive(benchmark::State& state, const Mesh& (*mesh)()) {
   const ElectrodeDofs dofs = number_electrode_dofs(mesh());
   const SparseMatrix K = to_dof_space(assemble_stiffness(mesh(), 1.0 / sensor().sheet_resistance_ohm_per_sq), dofs);
   const ContactLoad contact = press_contact_load(mesh(), centre_press, sensor().contact);
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (std::size_t i = 0; i < contact.triangles.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        entries.emplace_back(dofs.dof_of_node[mesh().triangles(contact.triangles[i], a)],
-                             dofs.dof_of_node[mesh().triangles(contact.triangles[i], b)], contact.local_S[i](a, b));
-  SparseMatrix C(dofs.dof_count, dofs.dof_count);
-  C.setFromTriplets(entries.begin(), entries.end());
+  const SparseMatrix C = contact_to_dof_space(mesh(), contact, dofs);
   const SparseMatrix F = K + C;
   const Vector b = sensor().drive_voltage_V * (C * Vector::Ones(dofs.dof_count));
   const int n = dofs.dof_count, N = dofs.electrode_count;

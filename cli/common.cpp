@@ -26,7 +26,7 @@ void Progress::finish() {
 }
 
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses) {
-  std::printf("%5s  %-34s %9s %9s %9s\n", "frame", "presses (x mm, y mm, r mm, F N)", "max V", "mean V", "top pair");
+  std::printf("%5s %8s %8s  %-13s  %s\n", "frame", "max V", "mean V", "ground->sense", "presses (x mm, y mm, r mm, F N)");
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const Frame& frame = frames[f];
     const Index N = frame.rows();
@@ -39,15 +39,15 @@ void print_frames_summary(const std::vector<Frame>& frames, const PressSequence&
         if (frame(l, m) > max_value) max_value = frame(l, m), top_l = l, top_m = m;
       }
     std::string text;
-    char item[64];
+    char item[80];
     for (const Press& p : f < presses.size() ? presses[f] : std::vector<Press>{}) {
       std::snprintf(item, sizeof item, "%s(%.1f, %.1f, %.1f, %.1f)", text.empty() ? "" : " ", p.x_mm, p.y_mm,
                     p.radius_mm, p.force_N);
       text += item;
     }
-    if (text.empty()) text = "none";
-    std::printf("%5zu  %-34s %9.4f %9.4f %4lld->%-4lld\n", f, text.c_str(), max_value, sum / double(N * (N - 1)),
-                static_cast<long long>(top_l), static_cast<long long>(top_m));
+    std::snprintf(item, sizeof item, "%lld->%lld", static_cast<long long>(top_l), static_cast<long long>(top_m));
+    std::printf("%5zu %8.4f %8.4f  %-13s  %s\n", f, max_value, sum / double(N * (N - 1)), item,
+                text.empty() ? "none" : text.c_str());
   }
 }
 

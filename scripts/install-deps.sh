@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   g++ cmake make pkg-config             # toolchain
   libgmsh-dev                           # meshing (Gmsh's C++ API)
-  libeigen3-dev libsuitesparse-dev      # dense and sparse linear algebra, CHOLMOD
+  libeigen3-dev                         # dense and sparse linear algebra
   libcli11-dev nlohmann-json3-dev       # command line, JSON
   libpng-dev                            # images
   libgtest-dev libbenchmark-dev         # tests, benchmarks

@@ -75,15 +75,7 @@ TEST(ForwardModel, AllGroundingsAgreeWithDirectGroundedSolves) {
 
   const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
   const SparseMatrix K = to_dof_space(assemble_stiffness(s.mesh, 1.0 / Rs), dofs);
-  SparseMatrix C_nodes(s.mesh.node_count(), s.mesh.node_count());
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (std::size_t i = 0; i < contact.triangles.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        entries.emplace_back(s.mesh.triangles(contact.triangles[i], a), s.mesh.triangles(contact.triangles[i], b),
-                             contact.local_S[i](a, b));
-  C_nodes.setFromTriplets(entries.begin(), entries.end());
-  const Matrix F = Matrix(K) + Matrix(to_dof_space(C_nodes, dofs));
+  const Matrix F = Matrix(K) + Matrix(contact_to_dof_space(s.mesh, contact, dofs));
   const Vector b = E * (F - Matrix(K)) * Vector::Ones(F.cols());
   const int n = dofs.dof_count, N = dofs.electrode_count;
   double worst = 0;
@@ -110,14 +102,7 @@ TEST(ForwardModel, ReciprocityBetweenDriveAndElectrodePorts) {
   const Frame frame = ForwardModel(s.mesh, Rs).solve_frame(contact, E);
   const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
   const SparseMatrix K = to_dof_space(assemble_stiffness(s.mesh, 1.0 / Rs), dofs);
-  std::vector<Eigen::Triplet<double, int>> entries;
-  for (std::size_t i = 0; i < contact.triangles.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        entries.emplace_back(dofs.dof_of_node[s.mesh.triangles(contact.triangles[i], a)],
-                             dofs.dof_of_node[s.mesh.triangles(contact.triangles[i], b)], contact.local_S[i](a, b));
-  SparseMatrix C(dofs.dof_count, dofs.dof_count);
-  C.setFromTriplets(entries.begin(), entries.end());
+  const SparseMatrix C = contact_to_dof_space(s.mesh, contact, dofs);
   const Matrix F = Matrix(K + C);
   const Vector leak_weights = C * Vector::Ones(C.cols());  // current into the driving layer = (C·1)ᵀ z
   for (int l : {0, 5, 11})

@@ -12,7 +12,7 @@ using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 using Vector2 = Eigen::Vector2d;
 using Vector3 = Eigen::Vector3d;
-/// Column-major sparse matrix, the layout CHOLMOD and Eigen's solvers expect.
+/// Column-major sparse matrix with int indices, the layout sparse direct solvers expect.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 }  // namespace emit

@@ -35,4 +35,18 @@ SparseMatrix to_dof_space(const SparseMatrix& node_matrix, const ElectrodeDofs& 
   return A;
 }
 
+SparseMatrix contact_to_dof_space(const Mesh& mesh, const ContactLoad& contact, const ElectrodeDofs& dofs) {
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(9 * contact.triangles.size());
+  for (std::size_t i = 0; i < contact.triangles.size(); ++i) {
+    const auto v = mesh.triangles.row(contact.triangles[i]);
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        entries.emplace_back(dofs.dof_of_node[v[a]], dofs.dof_of_node[v[b]], contact.local_S[i](a, b));
+  }
+  SparseMatrix C(dofs.dof_count, dofs.dof_count);
+  C.setFromTriplets(entries.begin(), entries.end());
+  return C;
+}
+
 }  // namespace emit

@@ -15,28 +15,14 @@ struct ForwardModel::Impl {
   SparseMatrix stiffness_dof;  ///< K in dof space [S]
   mutable SparseCholesky cholesky;
 
-  /// Contact matrix C in dof space, with K's pattern (C touches only triangle couplings).
-  SparseMatrix contact_dof(const ContactLoad& contact) const {
-    std::vector<Eigen::Triplet<double, int>> entries;
-    entries.reserve(9 * contact.triangles.size());
-    for (std::size_t i = 0; i < contact.triangles.size(); ++i) {
-      const auto v = mesh.triangles.row(contact.triangles[i]);
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          entries.emplace_back(dofs.dof_of_node[v[a]], dofs.dof_of_node[v[b]], contact.local_S[i](a, b));
-    }
-    SparseMatrix C(dofs.dof_count, dofs.dof_count);
-    C.setFromTriplets(entries.begin(), entries.end());
-    return C;
-  }
-
   /// Dof potentials, dof_count by N: column l is the solution with electrode l grounded.
   Matrix solve_dofs(const ContactLoad& contact, double E) const {
     const int n = dofs.dof_count, N = dofs.electrode_count;
     Matrix U = Matrix::Zero(n, N);
     if (contact.empty()) return U;
-    const SparseMatrix C = contact_dof(contact);
-    const SparseMatrix F = stiffness_dof + C;  // same pattern as the stiffness
+    // C touches only couplings within triangles, so F keeps the stiffness's pattern.
+    const SparseMatrix C = contact_to_dof_space(mesh, contact, dofs);
+    const SparseMatrix F = stiffness_dof + C;
     const SparseMatrix A0 = F.bottomRightCorner(n - 1, n - 1);  // electrode 0 grounded
     cholesky.factorize(A0);
 

@@ -15,9 +15,12 @@ AtomicFile::AtomicFile(std::string path, bool open_stream) : path_(std::move(pat
   const auto folder = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
   if (!std::filesystem::is_directory(folder))
     throw IoError(path_ + ": cannot write: folder " + folder.string() + " does not exist");
-  temp_path_ = (folder / ("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                          target.extension().string()))
-                   .string();
+  // Hidden, unique to this process, and with the target's extension.
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp" + std::to_string(::getpid());
+  name += target.extension().string();
+  temp_path_ = (folder / name).string();
   if (open_stream) {
     stream_.open(temp_path_, std::ios::binary | std::ios::trunc);
     if (!stream_) throw IoError(path_ + ": cannot write (" + std::strerror(errno) + ")");

@@ -4,6 +4,7 @@
 /// nodes share one unknown. Electrode e is dof e (0..N-1); the other nodes follow from N on.
 #include <vector>
 
+#include "emit/fem/contact_load.hpp"
 #include "emit/mesh/mesh.hpp"
 
 namespace emit {
@@ -19,5 +20,8 @@ ElectrodeDofs number_electrode_dofs(const Mesh& mesh);
 
 /// Node-space matrix A (#V×#V) to dof space: Pᵀ A P, where P maps dofs to nodes.
 SparseMatrix to_dof_space(const SparseMatrix& node_matrix, const ElectrodeDofs& dofs);
+
+/// The contact matrix C (contact_load.hpp) assembled straight into dof space [S].
+SparseMatrix contact_to_dof_space(const Mesh& mesh, const ContactLoad& contact, const ElectrodeDofs& dofs);
 
 }  // namespace emit

@@ -1,8 +1,13 @@
 #pragma once
 /// \file sparse_cholesky.hpp
-/// Sparse Cholesky factorisation (CHOLMOD, supernodal, AMD/METIS ordering) with the symbolic
-/// analysis done once per sparsity pattern and the numeric factorisation redone per matrix: the
-/// forward model's matrix keeps its pattern from press to press.
+/// Sparse Cholesky (LDLᵀ with AMD fill-reducing ordering) with the symbolic analysis done once
+/// per sparsity pattern and the numeric factorisation redone per matrix: the forward model's
+/// matrix keeps its pattern from press to press.
+///
+/// Why Eigen's simplicial LDLᵀ and not CHOLMOD's supernodal LLᵀ: on these 2D meshes, with
+/// Debian's reference BLAS, it measured 2–3× faster a frame (3.2 vs 9.6 ms at 6.8k triangles,
+/// 172 vs 313 ms at 95k; bench/forward_bench), and its L, D and permutation are plain Eigen
+/// objects, which selected inversion needs.
 #include <memory>
 
 #include "emit/types.hpp"
