@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 
@@ -57,7 +58,7 @@ void print_frame_table(const Frame& frame) {
   std::printf("\n");
   for (Index l = 0; l < frame.rows(); ++l) {
     std::printf("%12lld", static_cast<long long>(l));
-    for (Index m = 0; m < frame.cols(); ++m) std::printf(" %7.4f", frame(l, m));
+    for (Index m = 0; m < frame.cols(); ++m) std::printf(" %7.4f", std::abs(frame(l, m)) < 5e-5 ? 0.0 : frame(l, m));
     std::printf("\n");
   }
 }

@@ -18,7 +18,9 @@ void write_frames_csv(const std::string& path, const std::vector<Frame>& frames)
   char number[32];
   for (const Frame& frame : frames) {
     for (Index i = 0; i < frame.size(); ++i) {
-      std::snprintf(number, sizeof number, "%.7f", frame.data()[i]);
+      // Round-off below the printed resolution would print as "-0.0000000".
+      const double value = std::abs(frame.data()[i]) < 5e-8 ? 0.0 : frame.data()[i];
+      std::snprintf(number, sizeof number, "%.7f", value);
       if (i > 0) out << ',';
       out << number;
     }
