@@ -3,6 +3,7 @@
 #include "emit/fem/forward_model.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
@@ -46,6 +47,7 @@ TEST(ForwardModel, StripConvergesAtSecondOrder) {
   for (int cells_per_mm : {1, 2, 4}) errors.push_back(std::abs(strip_frame_V(cells_per_mm, 1, g) - exact));
   for (std::size_t i = 1; i < errors.size(); ++i) {
     const double rate = std::log2(errors[i - 1] / errors[i]);
+    std::printf("strip: error %.3e V -> %.3e V, observed rate %.2f\n", errors[i - 1], errors[i], rate);
     EXPECT_GE(rate, test::min_convergence_rate) << "refinement " << i << ": errors " << errors[i - 1] << " → " << errors[i];
   }
 }
