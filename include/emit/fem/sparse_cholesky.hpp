@@ -29,6 +29,12 @@ class SparseCholesky {
   /// Solve A X = B for the factorised A.
   Matrix solve(const Matrix& rhs) const;
 
+  /// Selected inversion: the entries of A⁻¹ on the pattern of the factor (which holds the
+  /// pattern of A), by the Takahashi recurrence on LDLᵀ, at about the cost of the factorisation.
+  /// Returned lower triangle (row ≥ column) in A's own ordering; A⁻¹(i, j) for an (i, j) coupled
+  /// in A is `Z.coeff(max(i, j), min(i, j))`.
+  SparseMatrix selected_inverse() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
