@@ -1,0 +1,37 @@
+#pragma once
+/// \file reconstruction_operator.hpp
+/// The linear reconstruction operator of paper eq. 7, δφ = (JᵀJ + λ²Q)⁻¹ Jᵀ δV, built in
+/// measurement space so no K×K matrix is ever formed or inverted (DESIGN §3):
+///   R = Q⁻¹Jᵀ (J Q⁻¹ Jᵀ + λ² I)⁻¹,
+/// an (M×M) solve for M measurements. Per frame it is one matrix–vector product.
+#include <string>
+
+#include "emit/mesh/mesh.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+enum class Prior {
+  identity,   ///< Q = I: the paper's choice
+  noser,      ///< Q = diag(JᵀJ)^p (Cheney et al.'s NOSER; p = noser_exponent)
+  laplacian,  ///< Q = LᵀL + εI, L the element graph Laplacian (edge neighbours): smooth images
+};
+
+struct OperatorOptions {
+  Prior prior = Prior::identity;
+  double lambda2 = 1000.0;       ///< λ²; the paper's optimum for its 60 mm sheet (§3.1)
+  double noser_exponent = 0.5;   ///< p for the NOSER prior
+};
+
+/// "paper" (Q = I, λ² = 1000), "noser", "laplacian". \throw InvalidInput naming the method.
+OperatorOptions method_options(const std::string& method);
+std::string prior_name(Prior prior);
+
+/// \param J  M by #F Jacobian (jacobian.hpp). \return #F by M operator R.
+/// \throw InvalidInput for a non-positive λ².
+Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options);
+
+/// #F by #F graph Laplacian of the triangles (two are neighbours when they share an edge).
+SparseMatrix element_laplacian(const Mesh& mesh);
+
+}  // namespace emit
