@@ -47,6 +47,7 @@ PressSequence presses_of(const Sensor& sensor, const SimulateArgs& a) {
   style.min_force_N = force[0], style.max_force_N = force[1];
   style.margin_mm = a.margin_mm >= 0 ? a.margin_mm : a.radius_mm;
   style.seed = a.seed;
+  if (a.script == "none") return PressSequence(static_cast<std::size_t>(a.frames));  // references
   if (a.script == "grid") return grid_script(sensor, a.spacing_mm, a.jitter_mm, style);
   if (a.script == "random") return random_script(sensor, a.frames, style);
   if (a.script == "two-finger") {
@@ -57,7 +58,7 @@ PressSequence presses_of(const Sensor& sensor, const SimulateArgs& a) {
     if (a.from_mm.size() != 2 || a.to_mm.size() != 2) throw InvalidInput("--script moving needs --from X,Y and --to X,Y");
     return moving_script(sensor, a.frames, Vector2(a.from_mm[0], a.from_mm[1]), Vector2(a.to_mm[0], a.to_mm[1]), style);
   }
-  throw InvalidInput("--script: unknown script \"" + a.script + "\" (grid, random, two-finger, moving)");
+  throw InvalidInput("--script: unknown script \"" + a.script + "\" (none, grid, random, two-finger, moving)");
 }
 
 std::string default_truth_path(const std::string& out_path) {
@@ -130,16 +131,17 @@ void add_simulate_command(CLI::App& app) {
   cmd->footer(
       "Examples:\n"
       "  emit simulate --press 30,30,5,10 --out frame.csv\n"
+      "  emit simulate --script none --frames 10 --out reference.csv\n"
       "  emit simulate --sensor examples/sensors/square30.json --script grid --spacing-mm 5 --out grid.csv\n"
       "  emit simulate --script two-finger --frames 50 --separation-mm 12,40 --force-N 5,20 --out two.csv\n"
       "  emit simulate --script moving --from 10,10 --to 50,50 --frames 30 --out move.csv");
   cmd->add_option("--sensor", a->sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--press", a->presses, "A press x_mm,y_mm,radius_mm,force_N (repeat for simultaneous presses)");
-  cmd->add_option("--script", a->script, "Press script: grid, random, two-finger or moving");
+  cmd->add_option("--script", a->script, "Press script: none (no-contact references), grid, random, two-finger or moving");
   cmd->add_option("--out", a->out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", a->truth_path, "Presses CSV to write (default: <out>_presses.csv)");
-  cmd->add_option("--frames", a->frames, "Frames for random, two-finger and moving scripts")->check(CLI::PositiveNumber);
+  cmd->add_option("--frames", a->frames, "Frames for the none, random, two-finger and moving scripts")->check(CLI::PositiveNumber);
   cmd->add_option("--spacing-mm", a->spacing_mm, "Grid pitch")->check(CLI::PositiveNumber);
   cmd->add_option("--jitter-mm", a->jitter_mm, "Grid jitter (uniform, +/-)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--radius-mm", a->radius_mm, "Indenter radius for scripts")->check(CLI::PositiveNumber);

@@ -15,6 +15,8 @@ namespace emit::cli {
 void add_mesh_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
+void add_reconstruct_command(CLI::App& app);
+void add_eval_command(CLI::App& app);
 
 /// The sensor file given with --sensor, or the built-in default sensor when empty.
 Sensor sensor_from_option(const std::string& path);

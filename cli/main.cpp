@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   emit::cli::add_mesh_command(app);
   emit::cli::add_simulate_command(app);
+  emit::cli::add_reconstruct_command(app);
+  emit::cli::add_eval_command(app);
   emit::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,22 @@
+#pragma once
+/// \file pressure.hpp
+/// Potential → pressure, paper eq. 8: P_k = (a1/δφ_k + a2)^a3. From eqs. 1–2, a1 = E·R0/α,
+/// a2 = −R0/α, a3 = 1/γ; `emit calibrate` fits them from presses of known force.
+#include "emit/sensor/sensor.hpp"
+
+namespace emit {
+
+struct PressureCalibration {
+  double a1 = 3.3, a2 = -1.0, a3 = -1.0 / 1.2;
+  bool calibrated = false;
+
+  /// The uncalibrated default from the sensor: R0/α = 1, so a1 = E, a2 = −1, a3 = 1/γ. It is
+  /// monotone in δφ but its scale is arbitrary until calibrated.
+  static PressureCalibration uncalibrated(const Sensor& sensor);
+
+  /// P [N/mm²] for a thresholded potential δφ [V]; 0 for δφ ≤ 0. The base a1/δφ + a2 is kept
+  /// positive (δφ beyond the model's range reads as the largest pressure it can express).
+  double pressure_N_per_mm2(double dphi_V) const;
+};
+
+}  // namespace emit

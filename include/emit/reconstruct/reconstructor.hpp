@@ -1,0 +1,49 @@
+#pragma once
+/// \file reconstructor.hpp
+/// The online half (DESIGN §6): per frame, δV = V − V_ref → δφ = R·δV → threshold → pressure
+/// (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
+#include <cstdint>
+#include <vector>
+
+#include "emit/fem/forward_model.hpp"
+#include "emit/reconstruct/contacts.hpp"
+#include "emit/reconstruct/pressure.hpp"
+#include "emit/reconstruct/reconstruction_model.hpp"
+
+namespace emit {
+
+struct FrameOptions {
+  double threshold_fraction = 0.5;  ///< of the image's maximum (paper §2.4)
+  double min_contact_area_mm2 = 0;  ///< smaller regions are dropped
+};
+
+class Reconstructor {
+ public:
+  /// Keeps a reference to `model`, which must outlive it. \throw InvalidInput for a bad option.
+  Reconstructor(const ReconstructionModel& model, PressureCalibration calibration, FrameOptions options = {});
+
+  /// The no-contact reference frame. \throw InvalidInput if it is not N×N or not finite.
+  void set_reference(const Frame& reference);
+
+  /// One frame → contacts (valid until the next call). \throw InvalidInput if the frame is not
+  /// N×N; the frame's values are not checked here (the readers check them).
+  const std::vector<Contact>& process(const Frame& frame);
+
+  const Vector& image() const { return dphi_; }       ///< δφ per element [V]
+  const Vector& pressure() const { return pressure_; } ///< per element [N/mm²], 0 below threshold
+  const Mesh& mesh() const { return model_.mesh; }
+
+ private:
+  const ReconstructionModel& model_;
+  PressureCalibration calibration_;
+  FrameOptions options_;
+  ContactFinder finder_;
+  Vector reference_, dV_, dphi_, pressure_;
+  std::vector<std::uint8_t> selected_;
+};
+
+/// The mean of several frames (the reference is captured as an average). \throw InvalidInput
+/// if there are none or their sizes differ.
+Frame average_frames(const std::vector<Frame>& frames);
+
+}  // namespace emit
