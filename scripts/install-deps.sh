@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev                         # dense and sparse linear algebra
   libcli11-dev nlohmann-json3-dev       # command line, JSON
   libpng-dev                            # images
+  libceres-dev                          # nonlinear least squares (calibration)
   libgtest-dev libbenchmark-dev         # tests, benchmarks
 )
 
