@@ -87,13 +87,26 @@ Matrix prior_inverse_times_jt(const Matrix& J, const Mesh& mesh, const OperatorO
 }  // namespace
 
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options) {
-  if (!(options.lambda2 > 0) || !std::isfinite(options.lambda2))
-    throw InvalidInput("lambda2 must be positive, got " + std::to_string(options.lambda2));
+  return OperatorFamily(J, mesh, options.prior, options.noser_exponent).operator_for(options.lambda2);
+}
+
+OperatorFamily::OperatorFamily(const Matrix& J, const Mesh& mesh, Prior prior, double noser_exponent) {
+  OperatorOptions options;
+  options.prior = prior;
+  options.noser_exponent = noser_exponent;
   const Matrix QiJt = prior_inverse_times_jt(J, mesh, options);  // #F × M
-  Matrix H = J * QiJt;                                           // M × M, symmetric positive semi-definite
-  H.diagonal().array() += options.lambda2;
-  // R = QiJt · H⁻¹ = (H⁻¹ QiJtᵀ)ᵀ, H symmetric.
-  return H.ldlt().solve(QiJt.transpose()).transpose();
+  const Matrix H = J * QiJt;                                     // M × M, symmetric positive semi-definite
+  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(0.5 * (H + H.transpose()));
+  U_ = eigen.eigenvectors();
+  sigma_ = eigen.eigenvalues().cwiseMax(0.0);  // round-off can make the smallest slightly negative
+  basis_ = QiJt * U_;
+}
+
+Matrix OperatorFamily::operator_for(double lambda2) const {
+  if (!(lambda2 > 0) || !std::isfinite(lambda2))
+    throw InvalidInput("lambda2 must be positive, got " + std::to_string(lambda2));
+  const Vector filter = (sigma_.array() + lambda2).inverse();
+  return basis_ * filter.asDiagonal() * U_.transpose();
 }
 
 }  // namespace emit

@@ -31,6 +31,22 @@ std::string prior_name(Prior prior);
 /// \throw InvalidInput for a non-positive λ².
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options);
 
+/// The operators of one Jacobian and prior for every λ: the λ-independent work (Q⁻¹Jᵀ and the
+/// eigendecomposition J Q⁻¹ Jᵀ = U Σ Uᵀ) is done once, so R(λ) = (Q⁻¹Jᵀ U) diag(1/(σ + λ²)) Uᵀ
+/// costs one product. For λ sweeps and L-curves.
+class OperatorFamily {
+ public:
+  OperatorFamily(const Matrix& J, const Mesh& mesh, Prior prior, double noser_exponent = 0.5);
+  Matrix operator_for(double lambda2) const;
+  /// The eigenvalues σ of J Q⁻¹ Jᵀ, ascending (the data's singular values squared).
+  const Vector& eigenvalues() const { return sigma_; }
+
+ private:
+  Matrix basis_;  ///< Q⁻¹Jᵀ U, #F by M
+  Matrix U_;      ///< M by M
+  Vector sigma_;
+};
+
 /// #F by #F graph Laplacian of the triangles (two are neighbours when they share an edge).
 SparseMatrix element_laplacian(const Mesh& mesh);
 

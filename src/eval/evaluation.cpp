@@ -1,0 +1,90 @@
+#include "emit/eval/evaluation.hpp"
+
+#include <cmath>
+
+namespace emit {
+
+SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int reference_frames) {
+  SimulatedRun run;
+  run.presses = presses;
+  std::vector<Frame> references;
+  for (int i = 0; i < reference_frames; ++i) references.push_back(twin.frame({}));
+  run.reference = average_frames(references);
+  for (const auto& frame_presses : presses) run.frames.push_back(twin.frame(frame_presses));
+  return run;
+}
+
+Vector2 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction) {
+  const Vector& dphi = reconstructor.image();
+  const double threshold = threshold_fraction * dphi.maxCoeff();
+  Vector2 sum(0, 0);
+  double weight = 0;
+  for (Index k = 0; k < dphi.size(); ++k)
+    if (dphi[k] > 0 && dphi[k] >= threshold) {
+      const double w = reconstructor.mesh().triangle_area_mm2(k) * dphi[k];
+      sum += w * reconstructor.mesh().triangle_centroid_mm(k).head<2>();
+      weight += w;
+    }
+  return weight > 0 ? Vector2(sum / weight) : Vector2(std::nan(""), std::nan(""));
+}
+
+LocalisationResult localisation_errors(Reconstructor& reconstructor, const SimulatedRun& run,
+                                       double threshold_fraction) {
+  reconstructor.set_reference(run.reference);
+  std::vector<double> image_errors, contact_errors;
+  int image_missed = 0, contact_missed = 0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const Press& truth = run.presses[f].at(0);
+    const auto& contacts = reconstructor.process(run.frames[f]);
+    const double e = single_press_error_mm(contacts, truth);
+    if (e < 0) ++contact_missed;
+    else contact_errors.push_back(e);
+    const Vector2 c = thresholded_centroid(reconstructor, threshold_fraction);
+    if (!c.allFinite()) ++image_missed;
+    else image_errors.push_back(std::hypot(c.x() - truth.x_mm, c.y() - truth.y_mm));
+  }
+  return {summarize_errors(image_errors, image_missed), summarize_errors(contact_errors, contact_missed)};
+}
+
+PressureResult pressure_errors(Reconstructor& reconstructor, const SimulatedRun& calibration_run,
+                               const SimulatedRun& test_run, double threshold_fraction) {
+  auto samples_of = [&](const SimulatedRun& run) {
+    reconstructor.set_reference(run.reference);
+    std::vector<PressureSample> samples;
+    for (std::size_t f = 0; f < run.frames.size(); ++f) {
+      reconstructor.process(run.frames[f]);
+      samples.push_back(pressure_sample(reconstructor, threshold_fraction, run.presses[f].at(0).pressure_N_per_mm2()));
+    }
+    return samples;
+  };
+  PressureResult result;
+  result.fit = fit_pressure_calibration(samples_of(calibration_run));
+  std::vector<double> errors;
+  for (const auto& s : samples_of(test_run))
+    errors.push_back(std::abs(predicted_pressure(result.fit.calibration, s) - s.true_pressure_N_per_mm2));
+  result.error_N_per_mm2 = summarize_errors(errors, 0);
+  return result;
+}
+
+TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun& run, double match_mm) {
+  reconstructor.set_reference(run.reference);
+  TwoPressResult result;
+  int two = 0, matched = 0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const auto& contacts = reconstructor.process(run.frames[f]);
+    if (contacts.size() >= 2) ++two;
+    bool all = true;
+    for (const Press& p : run.presses[f]) {
+      bool found = false;
+      for (const Contact& c : contacts) found = found || std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm) <= match_mm;
+      all = all && found;
+    }
+    matched += all;
+  }
+  result.frames = static_cast<int>(run.frames.size());
+  result.two_contacts = result.frames ? double(two) / result.frames : 0;
+  result.both_matched = result.frames ? double(matched) / result.frames : 0;
+  return result;
+}
+
+}  // namespace emit
