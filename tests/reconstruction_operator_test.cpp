@@ -57,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(Priors, OperatorForms, ::testing::Values(Prior::identit
                          [](const auto& info) { return prior_name(info.param); });
 
 TEST(ReconstructionOperator, MethodsAndBadLambda) {
-  EXPECT_EQ(method_options("paper").lambda2, 1000.0);
+  EXPECT_EQ(method_options("paper").lambda2, 1.0e4);
   EXPECT_EQ(method_options("paper").prior, Prior::identity);
   EXPECT_THROW(method_options("magic"), InvalidInput);
   const Small s;

@@ -17,10 +17,12 @@ OperatorOptions method_options(const std::string& method) {
   if (method == "paper") return options;
   if (method == "noser") {
     options.prior = Prior::noser;
+    options.lambda2 = 1.5e3;
     return options;
   }
   if (method == "laplacian") {
     options.prior = Prior::laplacian;
+    options.lambda2 = 6.0e5;
     return options;
   }
   throw InvalidInput("unknown method \"" + method + "\" (paper, noser, laplacian)");
