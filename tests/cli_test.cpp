@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
 #include "emit/mesh/mesh_io.hpp"
@@ -70,6 +71,33 @@ TEST(Cli, TwoFingerAndMovingScripts) {
   EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
 }
 
+// A user's round: references, calibration presses, test presses; calibrate, reconstruct.
+TEST(Cli, CalibrateThenReconstruct) {
+  const std::string d = test::temp_folder("cli_reconstruct");
+  const std::string cache = " --cache " + d + "/cache";
+  ASSERT_EQ(run_emit("simulate --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --script random --frames 12 --force-N 2,30 --seed 3 --out " + d + "/cal.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --press 21,37,5,12 --out " + d + "/one.csv").exit_code, 0);
+  auto r = run_emit("calibrate --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
+                    "/cal_presses.csv --out " + d + "/calib.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("a3 ="), std::string::npos);
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d +
+               "/c.jsonl --calibration " + d + "/calib.json --images " + d + "/img" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  long frame = -1;
+  const auto contacts = parse_contacts_line(test::read_text(d + "/c.jsonl"), &frame);
+  EXPECT_EQ(frame, 0);
+  ASSERT_GE(contacts.size(), 1u);
+  // The paper's method: its error is a few mm (p95 ≈ 8 mm on the 60 mm sheet, emit eval).
+  EXPECT_LE(std::hypot(contacts[0].x_mm - 21, contacts[0].y_mm - 37), 8.0);
+  EXPECT_GT(read_png(d + "/img/frame_0.png").width(), 100);
+  // A second run loads the operator from the cache.
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("operator from the cache"), std::string::npos) << r.err;
+}
+
 TEST(Cli, MeshWritesAFileAndReportsQuality) {
   const std::string dir = test::temp_folder("cli_mesh");
   const auto r = run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");
@@ -117,6 +145,16 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
   std::ofstream(dir + "/unknown_key.json") << R"({"shape": {"type": "circle", "radius_mm": 20}, "electrodes": {"count": 8, "width_mm": 2}, "colour": 1})";
   std::ofstream(dir + "/bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\ngarbage\n";
   std::ofstream(dir + "/msh_sensor.json") << R"({"shape": {"type": "mesh", "file": "bad.msh"}})";
+  auto csv_row = [](int count, const std::string& special, int at) {
+    std::string row;
+    for (int i = 0; i < count; ++i) row += (i ? "," : "") + (i == at ? special : std::string("0.1"));
+    return row + "\n";
+  };
+  std::ofstream(dir + "/ref.csv") << csv_row(256, "0", -1);
+  std::ofstream(dir + "/nan.csv") << csv_row(256, "0", -1) << csv_row(256, "nan", 17);
+  std::ofstream(dir + "/text.csv") << csv_row(256, "volts", 3);
+  std::ofstream(dir + "/short.csv") << csv_row(255, "0", -1);
+  std::ofstream(dir + "/ref8.csv") << csv_row(64, "0", -1);
   std::string arguments = GetParam().arguments;
   for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
     for (std::size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
@@ -143,7 +181,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"missing msh", "mesh --sensor DIR/none.json --out OUT", "none.json"},
         BadRun{"unknown script", "simulate --script zigzag --out OUT", "unknown script"},
         BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
-        BadRun{"unknown option", "simulate --pres 30,30,5,10 --out OUT", "--pres"}),
+        BadRun{"unknown option", "simulate --pres 30,30,5,10 --out OUT", "--pres"},
+        BadRun{"NaN in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/nan.csv --contacts OUT --no-cache",
+               "nan.csv:2: value 18 is nan"},
+        BadRun{"text in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/text.csv --contacts OUT --no-cache",
+               "text.csv:1: value 4 \"volts\" is not a number"},
+        BadRun{"wrong value count", "reconstruct --reference DIR/ref.csv --frames DIR/short.csv --contacts OUT --no-cache",
+               "short.csv:1: 255 values, expected 256"},
+        BadRun{"reference from another sensor",
+               "reconstruct --reference DIR/ref8.csv --frames DIR/ref.csv --contacts OUT --no-cache",
+               "ref8.csv:1: 64 values, expected 256"},
+        BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
+               "needs --reference, --frames, --truth and --out"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (char& c : name)

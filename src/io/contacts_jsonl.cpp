@@ -1,0 +1,113 @@
+#include "emit/io/contacts_jsonl.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "emit/errors.hpp"
+
+namespace emit {
+
+namespace {
+
+/// A contact's numbers in the line, in the documented order; the writer and the parser share it.
+/// element_count is not part of the format (the parser leaves it 0).
+struct Field {
+  const char* key;
+  double Contact::*value;
+};
+constexpr Field fields[] = {
+    {"x_mm", &Contact::x_mm},
+    {"y_mm", &Contact::y_mm},
+    {"area_mm2", &Contact::area_mm2},
+    {"pressure_N_per_mm2", &Contact::pressure_N_per_mm2},
+    {"peak_pressure_N_per_mm2", &Contact::peak_pressure_N_per_mm2},
+    {"force_N", &Contact::force_N},
+};
+
+/// JSON has no NaN or infinity; refuse before writing anything, so no half line is left behind.
+void check_finite(long frame, const std::vector<Contact>& contacts) {
+  for (std::size_t k = 0; k < contacts.size(); ++k)
+    for (const Field& field : fields)
+      if (!std::isfinite(contacts[k].*field.value))
+        throw InvalidInput("contacts of frame " + std::to_string(frame) + ": contact " + std::to_string(k) + "'s " +
+                           field.key + " is not finite");
+}
+
+/// snprintf's %g follows LC_NUMERIC; emit never calls setlocale, so the decimal point is '.'.
+void write_contact(std::ostream& out, const Contact& contact) {
+  char text[96];  // the longest key (23) + quotes and separators + a %.6g number (at most 13) fit
+  out << '{';
+  const char* separator = "";
+  for (const Field& field : fields) {
+    std::snprintf(text, sizeof text, "%s\"%s\": %.6g", separator, field.key, contact.*field.value);
+    out << text;
+    separator = ", ";
+  }
+  out << '}';
+}
+
+nlohmann::json parse_json(const std::string& line) {
+  try {
+    return nlohmann::json::parse(line);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InvalidInput(std::string("contacts line: not valid JSON (") + e.what() + ")");
+  }
+}
+
+const nlohmann::json& member(const nlohmann::json& object, const char* key, const std::string& where) {
+  const auto it = object.find(key);
+  if (it == object.end()) throw InvalidInput(where + ": missing \"" + key + "\"");
+  return *it;
+}
+
+long frame_of(const nlohmann::json& line) {
+  const nlohmann::json& frame = member(line, "frame", "contacts line");
+  if (!frame.is_number_integer()) throw InvalidInput("contacts line: \"frame\" is not an integer");
+  return frame.get<long>();
+}
+
+/// Unknown keys are ignored, so a reader keeps working when the format gains a key.
+Contact contact_of(const nlohmann::json& object, std::size_t k) {
+  const std::string where = "contacts line: contact " + std::to_string(k);
+  if (!object.is_object()) throw InvalidInput(where + " is not an object");
+  Contact contact;
+  for (const Field& field : fields) {
+    const nlohmann::json& value = member(object, field.key, where);
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+      throw InvalidInput(where + ": \"" + field.key + "\" is not a finite number");
+    contact.*field.value = value.get<double>();
+  }
+  return contact;
+}
+
+}  // namespace
+
+void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts) {
+  check_finite(frame, contacts);
+  char head[64];
+  std::snprintf(head, sizeof head, "{\"frame\": %ld, \"contacts\": [", frame);
+  out << head;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    if (k > 0) out << ", ";
+    write_contact(out, contacts[k]);
+  }
+  out << "]}\n";
+}
+
+std::vector<Contact> parse_contacts_line(const std::string& line, long* frame) {
+  const nlohmann::json document = parse_json(line);
+  if (!document.is_object()) throw InvalidInput("contacts line: not a JSON object");
+  const long number = frame_of(document);
+  const nlohmann::json& list = member(document, "contacts", "contacts line");
+  if (!list.is_array()) throw InvalidInput("contacts line: \"contacts\" is not an array");
+  std::vector<Contact> contacts;
+  contacts.reserve(list.size());
+  for (std::size_t k = 0; k < list.size(); ++k) contacts.push_back(contact_of(list[k], k));
+  if (frame != nullptr) *frame = number;
+  return contacts;
+}
+
+}  // namespace emit
