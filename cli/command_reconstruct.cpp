@@ -10,6 +10,7 @@
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/mesh/element_to_node.hpp"
+#include "emit/reconstruct/electrode_health.hpp"
 #include "emit/reconstruct/operator_cache.hpp"
 #include "emit/reconstruct/reconstructor.hpp"
 #include "emit/render/field_image.hpp"
@@ -50,12 +51,20 @@ void run_reconstruct(const ReconstructArgs& args) {
 
   const auto start = std::chrono::steady_clock::now();
   const std::string cache = args.no_cache ? "" : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
-  const ReconstructionModel model = build_reconstruction_model(
-      sensor, options, cache, {}, [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); });
+  const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
+  ReconstructionModel model = build_reconstruction_model(sensor, options, cache, {}, say);
   const int N = model.mesh.electrode_count();
   // Read the frames before anything is written: a bad value stops the run with nothing lost.
   const Frame reference = average_frames(read_frames_csv(args.reference_path, N));
   const std::vector<Frame> frames = read_frames_csv(args.frames_path, N);
+  std::vector<int> dead;
+  for (const DeadElectrode& d : find_dead_electrodes(frames, sensor.adc)) {
+    std::fprintf(stderr, "emit: warning: electrode %d %s: leaving out its %d measurements\n", d.electrode,
+                 d.reason.c_str(), 2 * (N - 1));
+    dead.push_back(d.electrode);
+  }
+  check_no_stuck_rows(frames, sensor.adc, dead, args.frames_path);
+  if (!dead.empty()) model = build_reconstruction_model(sensor, options, cache, dead, say);
   std::fprintf(stderr, "model ready in %.2f s (%lld triangles, %d measurements%s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                static_cast<long long>(model.mesh.triangle_count()), model.measurements.size(),

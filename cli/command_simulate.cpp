@@ -24,6 +24,7 @@ struct SimulateArgs {
   std::uint64_t seed = 1;
   int mesh_seed = 1;
   bool exact = false, print_table = false;
+  int dead_electrode = -1;
   double noise_V = -1;
 };
 
@@ -88,6 +89,7 @@ void run_simulate(const SimulateArgs& args) {
   options.mesh_seed = args.mesh_seed;
   options.adc = !args.exact;
   options.noise_seed = args.seed;
+  options.dead_electrode = args.dead_electrode;
   Twin twin(sensor, options);
   const MeshQuality q = measure_mesh_quality(twin.mesh());
   std::fprintf(stderr, "twin mesh: %lld triangles, %lld nodes, min angle %.1f deg\n",
@@ -154,6 +156,8 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--mesh-seed", a->mesh_seed, "Seed of the twin's mesh");
   cmd->add_option("--noise-V", a->noise_V, "Override the ADC noise (standard deviation, V)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--exact", a->exact, "No ADC: exact, noise-free volts");
+  cmd->add_option("--dead-electrode", a->dead_electrode, "Simulate this electrode disconnected")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--table", a->print_table, "Print every frame as an N x N table instead of a summary");
   cmd->add_option("--images", a->images_dir, "Write a PNG of the sheet's potential per frame into this folder");
   cmd->callback([a] { run_simulate(*a); });

@@ -98,6 +98,18 @@ TEST(Cli, CalibrateThenReconstruct) {
   EXPECT_NE(r.err.find("operator from the cache"), std::string::npos) << r.err;
 }
 
+// A disconnected electrode: a one-line warning, its measurements left out, contacts still found.
+TEST(Cli, ReconstructLeavesOutADeadElectrode) {
+  const std::string d = test::temp_folder("cli_dead");
+  ASSERT_EQ(run_emit("simulate --script none --frames 3 --out " + d + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --script grid --spacing-mm 20 --dead-electrode 9 --out " + d + "/f.csv").exit_code, 0);
+  const auto r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/f.csv --contacts " + d +
+                          "/c.jsonl --no-cache");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("emit: warning: electrode 9 reads 0 V as the sensed electrode"), std::string::npos) << r.err;
+  EXPECT_EQ(occurrences(test::read_text(d + "/c.jsonl"), "\"frame\""), 9);
+}
+
 TEST(Cli, MeshWritesAFileAndReportsQuality) {
   const std::string dir = test::temp_folder("cli_mesh");
   const auto r = run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");

@@ -30,6 +30,13 @@ Frame Twin::exact_frame(const std::vector<Press>& presses) const {
 
 Frame Twin::frame(const std::vector<Press>& presses) {
   Frame f = exact_frame(presses);
+  if (const int e = options_.dead_electrode; e >= 0 && e < f.rows()) {
+    // Disconnected: as the sensed electrode its input is pulled to 0 V; as the ground it grounds
+    // nothing, so a pressed sheet floats up to the drive (an unpressed one stays at 0 V).
+    const bool pressed = f.maxCoeff() > 0;
+    f.col(e).setZero();
+    f.row(e).setConstant(pressed ? sensor_.drive_voltage_V : 0.0);
+  }
   if (options_.adc) apply_adc(sensor_.adc, f, rng_);
   return f;
 }

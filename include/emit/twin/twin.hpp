@@ -20,6 +20,7 @@ struct TwinOptions {
   bool adc = true;                   ///< quantise, add noise and clip as the sensor's ADC does
   std::uint64_t noise_seed = 1;      ///< seed of the ADC's Gaussian noise
   int quadrature_levels = 6;         ///< subdivision depth on triangles a disc's edge cuts
+  int dead_electrode = -1;           ///< simulate this electrode disconnected (electrode_health.hpp)
 };
 
 class Twin {
