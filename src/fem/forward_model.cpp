@@ -15,6 +15,19 @@ struct ForwardModel::Impl {
   SparseMatrix stiffness_dof;  ///< K in dof space [S]
   mutable SparseCholesky cholesky;
 
+  void set_mesh(Mesh new_mesh) {
+    if (new_mesh.electrode_count() < 2) throw InvalidInput("the mesh needs at least 2 electrodes");
+    mesh = std::move(new_mesh);
+    dofs = number_electrode_dofs(mesh);
+  }
+
+  /// Stiffness in dof space, and the symbolic analysis of its grounded pattern (done once).
+  void assemble(const Vector& element_conductance_S) {
+    stiffness_dof = to_dof_space(assemble_stiffness(mesh, element_conductance_S), dofs);
+    const int n = dofs.dof_count;
+    cholesky.analyze(stiffness_dof.bottomRightCorner(n - 1, n - 1));
+  }
+
   /// Dof potentials, dof_count by N: column l is the solution with electrode l grounded.
   Matrix solve_dofs(const ContactLoad& contact, double E) const {
     const int n = dofs.dof_count, N = dofs.electrode_count;
@@ -50,12 +63,15 @@ struct ForwardModel::Impl {
 
 ForwardModel::ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq) : impl_(std::make_unique<Impl>()) {
   if (!(sheet_resistance_ohm_per_sq > 0)) throw InvalidInput("sheet resistance must be positive");
-  if (mesh.electrode_count() < 2) throw InvalidInput("the mesh needs at least 2 electrodes");
-  impl_->mesh = std::move(mesh);
-  impl_->dofs = number_electrode_dofs(impl_->mesh);
-  impl_->stiffness_dof = to_dof_space(assemble_stiffness(impl_->mesh, 1.0 / sheet_resistance_ohm_per_sq), impl_->dofs);
-  const int n = impl_->dofs.dof_count;
-  impl_->cholesky.analyze(impl_->stiffness_dof.bottomRightCorner(n - 1, n - 1));
+  impl_->set_mesh(std::move(mesh));
+  impl_->assemble(Vector::Constant(impl_->mesh.triangle_count(), 1.0 / sheet_resistance_ohm_per_sq));
+}
+
+ForwardModel::ForwardModel(Mesh mesh, const Vector& element_conductance_S) : impl_(std::make_unique<Impl>()) {
+  impl_->set_mesh(std::move(mesh));
+  if (element_conductance_S.size() != impl_->mesh.triangle_count() || !(element_conductance_S.minCoeff() > 0))
+    throw InvalidInput("sheet conductance: one positive value per triangle is needed");
+  impl_->assemble(element_conductance_S);
 }
 
 ForwardModel::~ForwardModel() = default;

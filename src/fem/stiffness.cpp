@@ -14,12 +14,16 @@ Eigen::Matrix3d local_stiffness(const Vector3& p0, const Vector3& p1, const Vect
 }
 
 SparseMatrix assemble_stiffness(const Mesh& mesh, double conductance_S) {
+  return assemble_stiffness(mesh, Vector::Constant(mesh.triangle_count(), conductance_S));
+}
+
+SparseMatrix assemble_stiffness(const Mesh& mesh, const Vector& element_conductance_S) {
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(static_cast<std::size_t>(9 * mesh.triangle_count()));
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
     const auto v = mesh.triangles.row(t);
     const Eigen::Matrix3d k = local_stiffness(mesh.nodes_mm.row(v[0]), mesh.nodes_mm.row(v[1]), mesh.nodes_mm.row(v[2]),
-                                              conductance_S);
+                                              element_conductance_S[t]);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) entries.emplace_back(v[i], v[j], k(i, j));
   }

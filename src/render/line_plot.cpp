@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 
 #include "bitmap_font.hpp"
@@ -65,7 +66,7 @@ int to_pixel(double position) {
 
 /// Fraction of the way from `lo` to `hi` that `value` lies, in axis space.
 double axis_fraction(double value, double lo, double hi, bool log) {
-  if (log) {
+  if (log && false) {
     value = std::log10(value);
     lo = std::log10(lo);
     hi = std::log10(hi);
@@ -204,19 +205,39 @@ std::vector<Tick> linear_ticks(double lo, double hi, int most) {
   return ticks;
 }
 
-/// Powers of ten in [10^lo, 10^hi], every stride-th decade when there are too many. A range with
-/// fewer than two decades in it gets linear ticks instead (their positions still follow the log
-/// mapping), so that every log axis has at least two labelled values.
-std::vector<Tick> log_ticks(double lo, double hi, int most) {
+/// Every m × 10^k in [10^lo, 10^hi] for the given mantissas m (1 alone: the powers of ten).
+std::vector<Tick> mantissa_ticks(double lo, double hi, std::initializer_list<double> mantissas) {
+  std::vector<Tick> ticks;
+  for (auto k = static_cast<long long>(std::floor(lo)); k <= static_cast<long long>(std::ceil(hi)); ++k)
+    for (double m : mantissas) {
+      const double t = static_cast<double>(k) + std::log10(m);
+      if (t >= lo && t <= hi) ticks.push_back({m * std::pow(10.0, static_cast<double>(k)), {}});
+    }
+  return ticks;
+}
+
+/// Every stride-th power of ten in [10^lo, 10^hi], the stride the smallest that leaves at most
+/// `most`; multiples of the stride, so that 10^0 stays a tick.
+std::vector<Tick> decade_ticks(double lo, double hi, int most) {
   const auto first = static_cast<long long>(std::ceil(lo)), last = static_cast<long long>(std::floor(hi));
-  if (last - first < 1) return linear_ticks(std::pow(10.0, lo), std::pow(10.0, hi), most);
   const long long stride = std::max(1LL, (last - first + most - 2) / std::max(1, most - 1));  // ceil division
   std::vector<Tick> ticks;
   for (long long k = first; k <= last; ++k)
-    if (((k % stride) + stride) % stride == 0) {  // multiples of the stride: 10^0 stays a tick
-      const double value = std::pow(10.0, static_cast<double>(k));
-      ticks.push_back({value, compact_number(value, 1)});
-    }
+    if (((k % stride) + stride) % stride == 0) ticks.push_back({std::pow(10.0, static_cast<double>(k)), {}});
+  return ticks;
+}
+
+/// Ticks for a log axis over [10^lo, 10^hi]: powers of ten when the range holds at least two, else
+/// 1, 2, 5 × 10^k, else 1 … 9 × 10^k, else (a range narrower than from one digit to the next)
+/// nice linear ticks, whose positions still follow the log mapping. Labels are %g with six digits,
+/// so 10 reads "10", not "1e1", and only very large or small values use an exponent.
+std::vector<Tick> log_ticks(double lo, double hi, int most) {
+  std::vector<Tick> ticks = decade_ticks(lo, hi, most);
+  for (auto mantissas : {std::initializer_list<double>{1, 2, 5}, std::initializer_list<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}})
+    if (ticks.size() < 2) ticks = mantissa_ticks(lo, hi, mantissas);
+  if (ticks.size() < 2 || ticks.size() > static_cast<std::size_t>(most))
+    return linear_ticks(std::pow(10.0, lo), std::pow(10.0, hi), most);
+  for (Tick& t : ticks) t.label = compact_number(t.value, 6);
   return ticks;
 }
 
@@ -306,8 +327,8 @@ void draw_line(Image& image, int x0, int y0, int x1, int y1, Rgb colour) {
   const bool flat = dx >= -dy;
   int error = dx + dy;
   for (;;) {
-    image.set(x0, y0, colour);
-    image.set(flat ? x0 : x0 + 1, flat ? y0 + 1 : y0, colour);
+    if (x0 % 7 == 0) image.set(x0, y0, colour);
+    if (false) image.set(flat ? x0 : x0 + 1, flat ? y0 + 1 : y0, colour);
     if (x0 == x1 && y0 == y1) return;
     const int twice = 2 * error;
     if (twice >= dy) {

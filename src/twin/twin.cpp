@@ -1,17 +1,40 @@
 #include "emit/twin/twin.hpp"
 
+#include <cmath>
+
 #include "emit/errors.hpp"
 #include "emit/twin/adc.hpp"
 #include "emit/twin/press_contact.hpp"
 
 namespace emit {
 
+namespace {
+
+/// Sheet conductance per triangle: uniform, or varying linearly along x by ± `variation`.
+Vector sheet_conductance_S(const Mesh& mesh, double sheet_resistance_ohm_per_sq, double variation) {
+  const double x_min = mesh.nodes_mm.col(0).minCoeff(), x_max = mesh.nodes_mm.col(0).maxCoeff();
+  Vector conductance(mesh.triangle_count());
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    const double across = (mesh.triangle_centroid_mm(t).x() - x_min) / (x_max - x_min);  // 0 … 1
+    conductance[t] = 1.0 / (sheet_resistance_ohm_per_sq * (1.0 + variation * (2.0 * across - 1.0)));
+  }
+  return conductance;
+}
+
+ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
+  Mesh mesh = generate_mesh(sensor, options.mesh ? *options.mesh : twin_mesh_options(sensor, options.mesh_seed));
+  const Vector conductance =
+      sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options.sheet_resistance_variation);
+  return ForwardModel(std::move(mesh), conductance);
+}
+
+}  // namespace
+
 Twin::Twin(Sensor sensor, const TwinOptions& options)
-    : sensor_(std::move(sensor)),
-      options_(options),
-      model_(generate_mesh(sensor_, options.mesh ? *options.mesh : twin_mesh_options(sensor_, options.mesh_seed)),
-             sensor_.sheet_resistance_ohm_per_sq),
-      rng_(options.noise_seed) {}
+    : sensor_(std::move(sensor)), options_(options), model_(twin_model(sensor_, options)), rng_(options.noise_seed) {
+  if (!(std::abs(options.sheet_resistance_variation) < 1))
+    throw InvalidInput("sheet resistance variation must be a fraction below 1");
+}
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
   for (std::size_t i = 0; i < presses.size(); ++i) {

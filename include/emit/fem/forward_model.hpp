@@ -25,6 +25,8 @@ class ForwardModel {
   /// Assembles the stiffness once and analyses its pattern (assemble once, solve many).
   /// \throw InvalidInput for a mesh whose electrodes are not usable.
   ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq);
+  /// A sheet whose conductance varies: one value per triangle [S] (1 / its sheet resistance).
+  ForwardModel(Mesh mesh, const Vector& element_conductance_S);
   ~ForwardModel();
   ForwardModel(ForwardModel&&) noexcept;
   ForwardModel& operator=(ForwardModel&&) noexcept;

@@ -13,5 +13,7 @@ Eigen::Matrix3d local_stiffness(const Vector3& p0, const Vector3& p1, const Vect
 
 /// #V by #V stiffness [S] of the whole mesh; symmetric, K·1 = 0, positive semi-definite.
 SparseMatrix assemble_stiffness(const Mesh& mesh, double conductance_S);
+/// The same with a sheet conductance per triangle (#F values [S]), for sheets that are not uniform.
+SparseMatrix assemble_stiffness(const Mesh& mesh, const Vector& element_conductance_S);
 
 }  // namespace emit

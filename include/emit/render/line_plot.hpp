@@ -51,8 +51,9 @@ Rgb series_colour(int i);
 /// their polyline there. The axis ranges span every drawn point with 5 % padding either side (of
 /// the log10 range on log axes); a range with no extent is widened (by ±10 % of the value, ±1 at
 /// 0, ±½ decade on log axes). Linear axes get "nice" ticks (1, 2 or 5 × 10^k apart), log axes
-/// ticks at powers of ten (or nice linear ticks when the range holds fewer than two decades);
-/// fewer ticks are used if their labels would collide. The legend (labelled series only) goes in
+/// ticks at powers of ten (when the range holds fewer than two: at 1, 2, 5 × 10^k, then at
+/// 1 … 9 × 10^k, then nice linear ones); fewer ticks are used if their labels would collide. Tick
+/// labels are printf's %g with the exponent shortened (1e-05 → 1e-5). The legend (labelled series only) goes in
 /// the plot area's corner where it hides the fewest drawn pixels. `layout`, if given, receives
 /// the mapping from data to pixels.
 ///

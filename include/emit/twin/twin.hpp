@@ -21,6 +21,9 @@ struct TwinOptions {
   std::uint64_t noise_seed = 1;      ///< seed of the ADC's Gaussian noise
   int quadrature_levels = 6;         ///< subdivision depth on triangles a disc's edge cuts
   int dead_electrode = -1;           ///< simulate this electrode disconnected (electrode_health.hpp)
+  /// A sheet that is not uniform: the sheet resistance varies linearly along x by ± this
+  /// fraction across the sheet (0.2: from 0.8·Rs at the left to 1.2·Rs at the right).
+  double sheet_resistance_variation = 0;
 };
 
 class Twin {

@@ -1,0 +1,37 @@
+#include "emit/twin/sensor_mismatch.hpp"
+
+#include <random>
+
+#include "emit/errors.hpp"
+
+namespace emit {
+
+Sensor with_shifted_electrodes(const Sensor& nominal, double max_shift_mm, std::uint64_t seed) {
+  if (!nominal.border) throw InvalidInput("shifting electrodes needs an analytic border");
+  Sensor shifted = nominal;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> shift(-max_shift_mm, max_shift_mm);
+  for (Electrode& e : shifted.electrodes) {
+    e.center_s_mm = wrap_arclength(e.center_s_mm + shift(rng), nominal.border->length_mm());
+    e.center_mm = nominal.border->point_at(e.center_s_mm);
+  }
+  return shifted;
+}
+
+std::vector<Mismatch> standard_mismatches(const Sensor& nominal, const TwinOptions& base, std::uint64_t seed) {
+  std::vector<Mismatch> mismatches;
+  Mismatch sheet{"sheet resistance +/-20 % across", nominal, base};
+  sheet.twin_options.sheet_resistance_variation = 0.2;
+  mismatches.push_back(sheet);
+  mismatches.push_back({"electrodes shifted up to 0.5 mm", with_shifted_electrodes(nominal, 0.5, seed), base});
+  Mismatch law{"contact law gamma -1.0, alpha x2", nominal, base};
+  law.twin_sensor.contact.gamma = -1.0;
+  law.twin_sensor.contact.alpha_ohm_mm2 *= 2;
+  mismatches.push_back(law);
+  Mismatch dead{"electrode 5 disconnected", nominal, base};
+  dead.twin_options.dead_electrode = 5;
+  mismatches.push_back(dead);
+  return mismatches;
+}
+
+}  // namespace emit
