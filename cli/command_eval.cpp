@@ -1,6 +1,7 @@
 // emit eval: simulate presses with the twin (a finer, different mesh; 12-bit ADC, 1 mV noise),
 // reconstruct them, and report positional and pressure errors per method at its best lambda,
 // beside the paper's figures.
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -10,7 +11,10 @@
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/reconstruct/jacobian.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include <filesystem>
+
 #include "emit/reconstruct/electrode_health.hpp"
+#include "emit/render/line_plot.hpp"
 #include "emit/twin/press_scripts.hpp"
 #include "emit/twin/sensor_mismatch.hpp"
 
@@ -24,6 +28,7 @@ struct EvalArgs {
   int mesh_seed = 3;
   std::uint64_t seed = 1;
   bool quick = false, sweep = false, mismatches = true;
+  std::string plots_dir = "emit-eval";
 };
 
 struct EvalCase {
@@ -88,9 +93,16 @@ Runs simulate_case(const EvalCase& c, const EvalArgs& args) {
   return runs;
 }
 
+/// One method's λ sweep, for the plots.
+struct SweepCurve {
+  std::string method;
+  std::vector<double> lambda2, mean_error_mm, residual_norm_V, solution_norm_V;
+};
+
 /// \return the best lambda² by the paper's positional error.
 double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel& model, const Matrix& J,
-                       const std::string& method, const EvalArgs& args) {
+                       const std::string& method, const EvalArgs& args, SweepCurve& curve) {
+  curve.method = method;
   const std::vector<double> sweep = args.lambda2.empty() ? default_sweep() : args.lambda2;
   model.options = method_options(method);
   const OperatorFamily family(J, model.mesh, model.options.prior, model.options.noser_exponent);
@@ -101,6 +113,11 @@ double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel&
     model.op = family.operator_for(lambda2);
     Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));
     const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
+    const LCurvePoint l = l_curve_point(J, model.op, model.measurements, runs.grid);
+    curve.lambda2.push_back(lambda2);
+    curve.mean_error_mm.push_back(r.image_centroid.mean);
+    curve.residual_norm_V.push_back(l.residual_norm_V);
+    curve.solution_norm_V.push_back(l.solution_norm_V);
     if (args.sweep)
       std::printf("    %-10s lambda2 %9.3g: %6.2f +/- %5.2f mm (contact: %6.2f mm)\n", method.c_str(), lambda2,
                   r.image_centroid.mean, r.image_centroid.std, r.strongest_contact.mean);
@@ -149,6 +166,47 @@ void evaluate_mismatches(const EvalCase& c, const std::string& method, double la
   }
 }
 
+std::string file_stem(const std::string& name) {
+  std::string stem;
+  for (char ch : name)
+    if (std::isalnum(static_cast<unsigned char>(ch))) stem += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    else if (!stem.empty() && stem.back() != '_') stem += '_';
+  while (!stem.empty() && stem.back() == '_') stem.pop_back();
+  return stem;
+}
+
+/// Error versus λ², and the L-curve (image norm versus misfit, λ² labelled every decade).
+void write_plots(const EvalCase& c, const std::vector<SweepCurve>& curves, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  std::vector<PlotSeries> errors, l_curves;
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const SweepCurve& s = curves[i];
+    errors.push_back({s.method, s.lambda2, s.mean_error_mm, series_colour(static_cast<int>(i)), true, {}});
+    PlotSeries l{s.method, s.residual_norm_V, s.solution_norm_V, series_colour(static_cast<int>(i)), true, {}};
+    for (double lambda2 : s.lambda2) {
+      const double decade = std::log10(lambda2);
+      char label[24] = "";
+      if (std::abs(decade - std::round(decade)) < 1e-9 && static_cast<long>(std::round(decade)) % 2 == 0)
+        std::snprintf(label, sizeof label, "1e%ld", static_cast<long>(std::round(decade)));
+      l.point_labels.push_back(label);
+    }
+    l_curves.push_back(l);
+  }
+  const std::string stem = dir + "/" + file_stem(c.name);
+  PlotOptions options;
+  options.title = c.name + ": positional error versus λ²";
+  options.x_label = "λ²";
+  options.y_label = "mean error (mm)";
+  options.log_x = true;
+  write_png(render_line_plot(errors, options), stem + "_error_vs_lambda.png");
+  options.title = c.name + ": L-curve (labels: λ²)";
+  options.x_label = "misfit |J·δφ - δV| (V)";
+  options.y_label = "image norm |δφ| (V)";
+  options.log_x = options.log_y = true;
+  write_png(render_line_plot(l_curves, options), stem + "_l_curve.png");
+  std::printf("  plots: %s_error_vs_lambda.png, %s_l_curve.png\n", stem.c_str(), stem.c_str());
+}
+
 void run_eval(const EvalArgs& args) {
   std::printf("emit eval: twin on a finer mesh (seed %d), 12-bit ADC, 1 mV noise; %s grid of single presses\n",
               args.mesh_seed, args.quick ? "a coarse" : "a jittered");
@@ -167,10 +225,12 @@ void run_eval(const EvalArgs& args) {
     std::printf("  %-10s %9s  %13s  %6s %6s  %6s  %16s  %6s  %6s\n", "method", "lambda2", "mean +/- std", "median",
                 "p95", "contact", "pressure N/mm2", "2 found", "2 match");
     double paper_lambda2 = 0;
-    for (const std::string& method : args.methods) {
-      const double best = evaluate_method(c, runs, model, J, method, args);
-      if (method == "paper") paper_lambda2 = best;
+    std::vector<SweepCurve> curves(args.methods.size());
+    for (std::size_t i = 0; i < args.methods.size(); ++i) {
+      const double best = evaluate_method(c, runs, model, J, args.methods[i], args, curves[i]);
+      if (args.methods[i] == "paper") paper_lambda2 = best;
     }
+    if (!args.plots_dir.empty()) write_plots(c, curves, args.plots_dir);
     if (c.pressure_and_two_press && paper_lambda2 > 0 && args.mismatches) evaluate_mismatches(c, "paper", paper_lambda2, args);
   }
 }
@@ -187,6 +247,8 @@ void add_eval_command(CLI::App& app) {
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_flag("--quick", a->quick, "Fewer presses (a smoke test)");
   cmd->add_flag("!--no-mismatches", a->mismatches, "Skip the sensor-mismatch runs");
+  cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
+      ->capture_default_str();
   cmd->callback([a] { run_eval(*a); });
 }
 

@@ -66,7 +66,7 @@ int to_pixel(double position) {
 
 /// Fraction of the way from `lo` to `hi` that `value` lies, in axis space.
 double axis_fraction(double value, double lo, double hi, bool log) {
-  if (log && false) {
+  if (log) {
     value = std::log10(value);
     lo = std::log10(lo);
     hi = std::log10(hi);
@@ -233,11 +233,11 @@ std::vector<Tick> decade_ticks(double lo, double hi, int most) {
 /// so 10 reads "10", not "1e1", and only very large or small values use an exponent.
 std::vector<Tick> log_ticks(double lo, double hi, int most) {
   std::vector<Tick> ticks = decade_ticks(lo, hi, most);
-  for (auto mantissas : {std::initializer_list<double>{1, 2, 5}, std::initializer_list<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}})
-    if (ticks.size() < 2) ticks = mantissa_ticks(lo, hi, mantissas);
+  if (ticks.size() < 2) ticks = mantissa_ticks(lo, hi, {1, 2, 5});
+  if (ticks.size() < 2) ticks = mantissa_ticks(lo, hi, {1, 2, 3, 4, 5, 6, 7, 8, 9});
   if (ticks.size() < 2 || ticks.size() > static_cast<std::size_t>(most))
     return linear_ticks(std::pow(10.0, lo), std::pow(10.0, hi), most);
-  for (Tick& t : ticks) t.label = compact_number(t.value, 6);
+  for (Tick& t : ticks) t.label = compact_number(t.value, 4);  // 1000, then 1e4: no six-digit labels
   return ticks;
 }
 
@@ -327,8 +327,8 @@ void draw_line(Image& image, int x0, int y0, int x1, int y1, Rgb colour) {
   const bool flat = dx >= -dy;
   int error = dx + dy;
   for (;;) {
-    if (x0 % 7 == 0) image.set(x0, y0, colour);
-    if (false) image.set(flat ? x0 : x0 + 1, flat ? y0 + 1 : y0, colour);
+    image.set(x0, y0, colour);
+    image.set(flat ? x0 : x0 + 1, flat ? y0 + 1 : y0, colour);
     if (x0 == x1 && y0 == y1) return;
     const int twice = 2 * error;
     if (twice >= dy) {

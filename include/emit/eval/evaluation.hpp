@@ -50,4 +50,12 @@ struct TwoPressResult {
 };
 TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun& run, double match_mm);
 
+/// One point of the L-curve (Hansen): for an operator R, the mean over the run's frames of the
+/// data misfit ‖J·δφ − δV‖ and of the image norm ‖δφ‖, δφ = R·δV.
+struct LCurvePoint {
+  double residual_norm_V = 0, solution_norm_V = 0;
+};
+LCurvePoint l_curve_point(const Matrix& J, const Matrix& op, const MeasurementSet& measurements,
+                          const SimulatedRun& run);
+
 }  // namespace emit
