@@ -52,6 +52,35 @@ TEST(ForwardModel, StripConvergesAtSecondOrder) {
   }
 }
 
+// The same strip with a resistive driving layer (sheet resistance Rd) fed along one end: with
+// d = v − u and w = Rd·u + Rs·v, d'' = k²d (k² = g(Rs + Rd)) and w'' = 0, so at the far end the
+// probing sheet reads Rs/(Rs + Rd) · E (1 − 1/cosh(kH)).
+TEST(ForwardModel, StripWithResistiveDrivingLayerMatchesAnalyticSolution) {
+  const double W = 4, H = 20, Rd = Rs, g = 1e-6;  // kH = 2 again, and half the ideal reading
+  const double exact = Rs / (Rs + Rd) * E * (1.0 - 1.0 / std::cosh(std::sqrt(g * (Rs + Rd)) * H));
+  const Mesh mesh = test::strip_mesh(W, H, 16, 80);
+  const ContactLoad contact = contact_load_from_elements(mesh, Vector::Constant(mesh.triangle_count(), g));
+  // Fed at the grounded end; the top-fed case grounds electrode 1 through the regrounding.
+  for (int ground : {0, 1}) {
+    DrivingLayer layer{Vector::Constant(mesh.triangle_count(), 1.0 / Rd), {}};
+    for (int node = 0; node < mesh.node_count(); ++node)
+      if (std::abs(mesh.nodes_mm(node, 1) - (ground == 0 ? 0.0 : H)) < 1e-9) layer.feed_nodes.push_back(node);
+    const ForwardModel model(mesh, Vector::Constant(mesh.triangle_count(), 1.0 / Rs), layer);
+    EXPECT_NEAR(model.solve_frame(contact, E)(ground, 1 - ground), exact, 2e-3 * E) << "ground " << ground;
+  }
+}
+
+TEST(ForwardModel, NearlyIdealDrivingLayerGivesTheEquipotentialFrame) {
+  const Mesh mesh = test::strip_mesh(4, 20, 8, 40);
+  const ContactLoad contact = contact_load_from_elements(mesh, Vector::Constant(mesh.triangle_count(), 2e-6));
+  const Vector sheet = Vector::Constant(mesh.triangle_count(), 1.0 / Rs);
+  const Frame ideal = ForwardModel(mesh, sheet).solve_frame(contact, E);
+  const Frame nearly = ForwardModel(mesh, sheet, bottom_fed_driving_layer(mesh, 1e-6 * Rs)).solve_frame(contact, E);
+  // The driving layer's drop is first order in Rd/Rs: 1e-6 of E, far above round-off.
+  EXPECT_LT((nearly - ideal).cwiseAbs().maxCoeff(), 1e-5 * E);
+  EXPECT_GT(ideal.maxCoeff(), 0.1 * E);
+}
+
 TEST(ForwardModel, ZeroFrameWithoutContact) {
   const ForwardModel model(test::strip_mesh(4, 4, 4, 4), Rs);
   const Frame frame = model.solve_frame(ContactLoad{}, E);

@@ -1,8 +1,11 @@
 #include "emit/fem/forward_model.hpp"
 
+#include <optional>
+
 #include <Eigen/Dense>
 
 #include "emit/errors.hpp"
+#include "emit/fem/driving_layer.hpp"
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/sparse_cholesky.hpp"
 #include "emit/fem/stiffness.hpp"
@@ -13,6 +16,7 @@ struct ForwardModel::Impl {
   Mesh mesh;
   ElectrodeDofs dofs;
   SparseMatrix stiffness_dof;  ///< K in dof space [S]
+  std::optional<CoupledAssembler> driving;  ///< a resistive driving layer; none: an equipotential
   mutable SparseCholesky cholesky;
 
   void set_mesh(Mesh new_mesh) {
@@ -28,26 +32,34 @@ struct ForwardModel::Impl {
     cholesky.analyze(stiffness_dof.bottomRightCorner(n - 1, n - 1));
   }
 
+  /// The system for one contact and its drive per volt: with an equipotential driving layer,
+  /// (K + C)·u = E·C·1 on the probing dofs; with a resistive one, the coupled system.
+  CoupledSystem system_for(const ContactLoad& contact) const {
+    if (driving) return driving->system(contact);
+    // C touches only couplings within triangles, so F keeps the stiffness's pattern.
+    const SparseMatrix C = contact_to_dof_space(mesh, contact, dofs);
+    return {stiffness_dof + C, C * Vector::Ones(dofs.dof_count)};
+  }
+
   /// Dof potentials, dof_count by N: column l is the solution with electrode l grounded.
   Matrix solve_dofs(const ContactLoad& contact, double E) const {
     const int n = dofs.dof_count, N = dofs.electrode_count;
-    Matrix U = Matrix::Zero(n, N);
-    if (contact.empty()) return U;
-    // C touches only couplings within triangles, so F keeps the stiffness's pattern.
-    const SparseMatrix C = contact_to_dof_space(mesh, contact, dofs);
-    const SparseMatrix F = stiffness_dof + C;
-    const SparseMatrix A0 = F.bottomRightCorner(n - 1, n - 1);  // electrode 0 grounded
+    if (contact.empty()) return Matrix::Zero(n, N);
+    const auto [F, drive] = system_for(contact);
+    const auto unknowns = static_cast<int>(F.rows());  // n, or n + the driving layer's free nodes
+    const SparseMatrix A0 = F.bottomRightCorner(unknowns - 1, unknowns - 1);  // electrode 0 grounded
+    if (driving) cholesky.analyze(A0);  // the coupling's pattern follows the contact
     cholesky.factorize(A0);
 
-    const Vector drive = C * Vector::Ones(n);  // C·1: the contact's pull towards E per unit drive
-    Matrix rhs = Matrix::Zero(n - 1, N);       // reduced index r = dof − 1
-    rhs.col(0) = drive.tail(n - 1);
+    Matrix rhs = Matrix::Zero(unknowns - 1, N);  // reduced index r = dof − 1
+    rhs.col(0) = drive.tail(unknowns - 1);
     for (int l = 1; l < N; ++l) rhs(l - 1, l) = 1.0;
     const Matrix X = cholesky.solve(rhs);  // X.col(0) = a (unit drive), X.col(l) = w_l (unit current at l)
 
-    const Vector f0 = Vector(F.col(0)).tail(n - 1);  // row 0 of F, F symmetric
+    const Vector f0 = Vector(F.col(0)).tail(unknowns - 1);  // row 0 of F, F symmetric
     const double alpha0 = f0.dot(X.col(0)) - drive[0];
-    U.col(0).tail(n - 1) = E * X.col(0);
+    Matrix U = Matrix::Zero(unknowns, N);
+    U.col(0).tail(unknowns - 1) = E * X.col(0);
     for (int l = 1; l < N; ++l) {
       // Unknowns x = E − c and I: u(e_l) = c + x·a_l + I·w_l(l) = 0; net current at electrode 0 = 0.
       Eigen::Matrix2d M;
@@ -55,9 +67,9 @@ struct ForwardModel::Impl {
       const Eigen::Vector2d xI = M.fullPivLu().solve(Eigen::Vector2d(-E, 0.0));
       const double c = E - xI[0];
       U.col(l).setConstant(c);
-      U.col(l).tail(n - 1) += xI[0] * X.col(0) + xI[1] * X.col(l);
+      U.col(l).tail(unknowns - 1) += xI[0] * X.col(0) + xI[1] * X.col(l);
     }
-    return U;
+    return U.topRows(n);
   }
 };
 
@@ -67,11 +79,20 @@ ForwardModel::ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq) : impl
   impl_->assemble(Vector::Constant(impl_->mesh.triangle_count(), 1.0 / sheet_resistance_ohm_per_sq));
 }
 
-ForwardModel::ForwardModel(Mesh mesh, const Vector& element_conductance_S) : impl_(std::make_unique<Impl>()) {
+ForwardModel::ForwardModel(Mesh mesh, const Vector& element_conductance_S, const std::optional<DrivingLayer>& driving)
+    : impl_(std::make_unique<Impl>()) {
   impl_->set_mesh(std::move(mesh));
-  if (element_conductance_S.size() != impl_->mesh.triangle_count() || !(element_conductance_S.minCoeff() > 0))
+  const auto positive_per_triangle = [&](const Vector& c) {
+    return c.size() == impl_->mesh.triangle_count() && c.minCoeff() > 0;
+  };
+  if (!positive_per_triangle(element_conductance_S))
     throw InvalidInput("sheet conductance: one positive value per triangle is needed");
   impl_->assemble(element_conductance_S);
+  if (driving) {
+    if (!positive_per_triangle(driving->element_conductance_S))
+      throw InvalidInput("driving layer conductance: one positive value per triangle is needed");
+    impl_->driving.emplace(impl_->mesh, impl_->dofs, impl_->stiffness_dof, *driving);
+  }
 }
 
 ForwardModel::~ForwardModel() = default;

@@ -28,6 +28,11 @@ std::vector<Mismatch> standard_mismatches(const Sensor& nominal, const TwinOptio
   law.twin_sensor.contact.gamma = -1.0;
   law.twin_sensor.contact.alpha_ohm_mm2 *= 2;
   mismatches.push_back(law);
+  // A fabric of 1 % of the probing sheet's resistance changes nothing measurable (the contact's
+  // resistance, tens of kΩ, dwarfs its spreading resistance); 10 % is a poor driving layer.
+  Mismatch driving{"driving layer at 10 % of Rs, fed at the bottom", nominal, base};
+  driving.twin_options.driving_sheet_resistance_ohm_per_sq = 0.1 * nominal.sheet_resistance_ohm_per_sq;
+  mismatches.push_back(driving);
   Mismatch dead{"electrode 5 disconnected", nominal, base};
   dead.twin_options.dead_electrode = 5;
   mismatches.push_back(dead);

@@ -25,7 +25,10 @@ ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
   Mesh mesh = generate_mesh(sensor, options.mesh ? *options.mesh : twin_mesh_options(sensor, options.mesh_seed));
   const Vector conductance =
       sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options.sheet_resistance_variation);
-  return ForwardModel(std::move(mesh), conductance);
+  std::optional<DrivingLayer> driving;
+  if (options.driving_sheet_resistance_ohm_per_sq != 0)
+    driving = bottom_fed_driving_layer(mesh, options.driving_sheet_resistance_ohm_per_sq);
+  return ForwardModel(std::move(mesh), conductance, driving);
 }
 
 }  // namespace

@@ -9,8 +9,10 @@
 /// electrode 0 fix (c, I) by a 2×2 solve. This works because K·1 = 0, so shifting u by c is the
 /// same as lowering the drive by c.
 #include <memory>
+#include <optional>
 
 #include "emit/fem/contact_load.hpp"
+#include "emit/fem/driving_layer.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/types.hpp"
 
@@ -25,8 +27,10 @@ class ForwardModel {
   /// Assembles the stiffness once and analyses its pattern (assemble once, solve many).
   /// \throw InvalidInput for a mesh whose electrodes are not usable.
   ForwardModel(Mesh mesh, double sheet_resistance_ohm_per_sq);
-  /// A sheet whose conductance varies: one value per triangle [S] (1 / its sheet resistance).
-  ForwardModel(Mesh mesh, const Vector& element_conductance_S);
+  /// A sheet whose conductance varies: one value per triangle [S] (1 / its sheet resistance),
+  /// and optionally a driving layer with its own resistance (driving_layer.hpp) instead of an
+  /// equipotential one; with it, every contact costs a symbolic analysis as well.
+  ForwardModel(Mesh mesh, const Vector& element_conductance_S, const std::optional<DrivingLayer>& driving = {});
   ~ForwardModel();
   ForwardModel(ForwardModel&&) noexcept;
   ForwardModel& operator=(ForwardModel&&) noexcept;

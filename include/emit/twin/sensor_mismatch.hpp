@@ -21,7 +21,8 @@ struct Mismatch {
 Sensor with_shifted_electrodes(const Sensor& nominal, double max_shift_mm, std::uint64_t seed);
 
 /// Sheet resistance ±20 % across the sheet; electrodes shifted by up to 0.5 mm; another contact
-/// law (γ = −1.0, α doubled); a dead electrode (number 5). `base` carries the mesh seed and noise.
+/// law (γ = −1.0, α doubled); a driving layer of 10 % of the probing sheet's resistance, fed at
+/// the bottom; a dead electrode (number 5). `base` carries the mesh seed and noise.
 std::vector<Mismatch> standard_mismatches(const Sensor& nominal, const TwinOptions& base, std::uint64_t seed);
 
 }  // namespace emit

@@ -24,6 +24,9 @@ struct TwinOptions {
   /// A sheet that is not uniform: the sheet resistance varies linearly along x by ± this
   /// fraction across the sheet (0.2: from 0.8·Rs at the left to 1.2·Rs at the right).
   double sheet_resistance_variation = 0;
+  /// A driving layer with this sheet resistance, fed along a bus bar at the bottom of the sheet
+  /// (driving_layer.hpp); 0: an equipotential driving layer, as the reconstruction assumes.
+  double driving_sheet_resistance_ohm_per_sq = 0;
 };
 
 class Twin {
