@@ -2,6 +2,9 @@
 // reconstruct them, and report positional and pressure errors per method at its best lambda,
 // beside the paper's figures.
 #include <cctype>
+#include <algorithm>
+#include <chrono>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -14,6 +17,7 @@
 #include <filesystem>
 
 #include "emit/reconstruct/electrode_health.hpp"
+#include "emit/fit/fit_model.hpp"
 #include "emit/render/line_plot.hpp"
 #include "emit/twin/press_scripts.hpp"
 #include "emit/twin/sensor_mismatch.hpp"
@@ -23,7 +27,7 @@ namespace emit::cli {
 namespace {
 
 struct EvalArgs {
-  std::vector<std::string> methods{"paper", "noser", "laplacian"};
+  std::vector<std::string> methods{"paper", "noser", "laplacian", "fit"};
   std::vector<double> lambda2;  // empty: 10^0 … 10^6, eight per decade
   int mesh_seed = 3;
   std::uint64_t seed = 1;
@@ -139,9 +143,59 @@ double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel&
   return best_lambda2;
 }
 
+/// Fitted contacts' pressure, calibrated: log P = c0 + c1 log g fitted by least squares on the
+/// calibration run's strongest contacts (eq. 2 in logs), applied to the test run.
+double fit_pressure_error(Reconstructor& reconstructor, const Runs& runs) {
+  auto pairs = [&](const SimulatedRun& run) {
+    reconstructor.set_reference(run.reference);
+    std::vector<std::pair<double, double>> out;  // (log g, true P)
+    for (std::size_t f = 0; f < run.frames.size(); ++f) {
+      reconstructor.process(run.frames[f]);
+      const FitResult* fit = reconstructor.fit_result();
+      if (fit->contacts.empty()) continue;
+      out.emplace_back(std::log(fit->contacts[0].disc.conductance_S_per_mm2), run.presses[f].at(0).pressure_N_per_mm2());
+    }
+    return out;
+  };
+  const auto calibration = pairs(runs.calibration);
+  Eigen::MatrixX2d A(calibration.size(), 2);
+  Vector b(calibration.size());
+  for (std::size_t i = 0; i < calibration.size(); ++i) {
+    A.row(i) << 1.0, calibration[i].first;
+    b[i] = std::log(calibration[i].second);
+  }
+  const Eigen::Vector2d c = A.colPivHouseholderQr().solve(b);
+  std::vector<double> errors;
+  for (const auto& [log_g, pressure] : pairs(runs.test)) errors.push_back(std::abs(std::exp(c[0] + c[1] * log_g) - pressure));
+  return summarize_errors(errors, 0).mean;
+}
+
+/// Model-based contact fitting, seeded by the paper method's image.
+void evaluate_fit(const EvalCase& c, const Runs& runs, ReconstructionModel model, const Matrix& J) {
+  model.options = method_options("paper");
+  model.op = build_reconstruction_operator(J, model.mesh, model.options);
+  const FitModel fit_model = build_fit_model(c.sensor);
+  ContactFitter fitter(c.sensor, fit_model.mesh, fit_model.green, model.measurements);
+  Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));
+  reconstructor.use_fitter(&fitter);
+  const auto start = std::chrono::steady_clock::now();
+  const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+                    static_cast<double>(runs.grid.frames.size());
+  const ErrorStats& e = r.strongest_contact;
+  std::printf("  %-10s %9s  %5.2f +/- %4.2f  %6.2f %6.2f  %6.2f  ", "fit", "-", e.mean, e.std, e.median, e.p95, e.mean);
+  if (c.pressure_and_two_press) {
+    const double p = fit_pressure_error(reconstructor, runs);
+    const TwoPressResult two = two_press_rates(reconstructor, runs.two_press, 2.0);
+    std::printf("%7.4f (%4.1f %%)  %5.0f %%  %5.0f %%", p, 100 * p / 0.5, 100 * two.two_contacts, 100 * two.both_matched);
+  }
+  std::printf("  (%.0f ms a frame, %d mesh nodes; 2 match: within 2 mm)\n", ms, static_cast<int>(fit_model.mesh.node_count()));
+}
+
 /// The twin departs from the description; the reconstruction keeps the nominal one (and leaves
 /// out electrodes it finds dead, as `emit reconstruct` does).
-void evaluate_mismatches(const EvalCase& c, const std::string& method, double lambda2, const EvalArgs& args) {
+void evaluate_mismatches(const EvalCase& c, const std::string& method, double lambda2, const EvalArgs& args,
+                         const FitModel* fit_model) {
   std::printf("  mismatches (twin differs, reconstruction nominal; %s at lambda2 = %.3g):\n", method.c_str(), lambda2);
   TwinOptions base;
   base.mesh_seed = args.mesh_seed;
@@ -161,8 +215,14 @@ void evaluate_mismatches(const EvalCase& c, const std::string& method, double la
     const ReconstructionModel model = build_reconstruction_model(c.sensor, options, "", dead);
     Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));
     const ErrorStats e = localisation_errors(reconstructor, run, 0.5).image_centroid;
-    std::printf("    %-34s %5.2f +/- %4.2f mm (median %.2f, p95 %.2f)%s\n", m.name.c_str(), e.mean, e.std, e.median,
-                e.p95, dead.empty() ? "" : ", dead electrode found and left out");
+    std::printf("    %-46s %5.2f +/- %4.2f mm (median %.2f, p95 %.2f)", m.name.c_str(), e.mean, e.std, e.median, e.p95);
+    if (fit_model) {
+      ContactFitter fitter(c.sensor, fit_model->mesh, fit_model->green, model.measurements);
+      reconstructor.use_fitter(&fitter);
+      const ErrorStats f = localisation_errors(reconstructor, run, 0.5).strongest_contact;
+      std::printf("   fit: %5.2f +/- %4.2f mm (p95 %.2f)", f.mean, f.std, f.p95);
+    }
+    std::printf("%s\n", dead.empty() ? "" : ", dead electrode found and left out");
   }
 }
 
@@ -181,6 +241,7 @@ void write_plots(const EvalCase& c, const std::vector<SweepCurve>& curves, const
   std::vector<PlotSeries> errors, l_curves;
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const SweepCurve& s = curves[i];
+    if (s.lambda2.empty()) continue;  // a method without λ (fit)
     errors.push_back({s.method, s.lambda2, s.mean_error_mm, series_colour(static_cast<int>(i)), true, {}});
     PlotSeries l{s.method, s.residual_norm_V, s.solution_norm_V, series_colour(static_cast<int>(i)), true, {}};
     for (double lambda2 : s.lambda2) {
@@ -227,11 +288,19 @@ void run_eval(const EvalArgs& args) {
     double paper_lambda2 = 0;
     std::vector<SweepCurve> curves(args.methods.size());
     for (std::size_t i = 0; i < args.methods.size(); ++i) {
+      if (args.methods[i] == "fit") {
+        evaluate_fit(c, runs, model, J);
+        continue;
+      }
       const double best = evaluate_method(c, runs, model, J, args.methods[i], args, curves[i]);
       if (args.methods[i] == "paper") paper_lambda2 = best;
     }
     if (!args.plots_dir.empty()) write_plots(c, curves, args.plots_dir);
-    if (c.pressure_and_two_press && paper_lambda2 > 0 && args.mismatches) evaluate_mismatches(c, "paper", paper_lambda2, args);
+    if (c.pressure_and_two_press && paper_lambda2 > 0 && args.mismatches) {
+      const bool with_fit = std::find(args.methods.begin(), args.methods.end(), "fit") != args.methods.end();
+      const std::optional<FitModel> fit_model = with_fit ? std::optional<FitModel>(build_fit_model(c.sensor)) : std::nullopt;
+      evaluate_mismatches(c, "paper", paper_lambda2, args, fit_model ? &*fit_model : nullptr);
+    }
   }
 }
 

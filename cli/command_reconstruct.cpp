@@ -2,9 +2,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "emit/errors.hpp"
+#include "emit/fit/fit_model.hpp"
 #include "emit/io/atomic_file.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
@@ -42,7 +44,8 @@ void write_pressure_image(const Reconstructor& reconstructor, const std::vector<
 
 void run_reconstruct(const ReconstructArgs& args) {
   const Sensor sensor = sensor_from_option(args.sensor_path);
-  OperatorOptions options = method_options(args.method);
+  const bool fit = args.method == "fit";  // fitting is seeded by the paper method's image
+  OperatorOptions options = method_options(fit ? "paper" : args.method);
   if (args.lambda2 > 0) options.lambda2 = args.lambda2;
   const PressureCalibration calibration =
       args.calibration_path.empty() ? PressureCalibration::uncalibrated(sensor) : load_calibration(args.calibration_path);
@@ -65,6 +68,12 @@ void run_reconstruct(const ReconstructArgs& args) {
   }
   check_no_stuck_rows(frames, sensor.adc, dead, args.frames_path);
   if (!dead.empty()) model = build_reconstruction_model(sensor, options, cache, dead, say);
+  std::optional<FitModel> fit_model;
+  std::optional<ContactFitter> fitter;
+  if (fit) {
+    fit_model = build_fit_model(sensor, say);
+    fitter.emplace(sensor, fit_model->mesh, fit_model->green, model.measurements);
+  }
   std::fprintf(stderr, "model ready in %.2f s (%lld triangles, %d measurements%s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                static_cast<long long>(model.mesh.triangle_count()), model.measurements.size(),
@@ -74,6 +83,7 @@ void run_reconstruct(const ReconstructArgs& args) {
   frame_options.threshold_fraction = args.threshold;
   frame_options.min_contact_area_mm2 = args.min_area_mm2;
   Reconstructor reconstructor(model, calibration, frame_options);
+  if (fitter) reconstructor.use_fitter(&*fitter);
   reconstructor.set_reference(reference);
   Progress progress("reconstructing frame", static_cast<int>(frames.size()));
   const auto online_start = std::chrono::steady_clock::now();
@@ -88,9 +98,11 @@ void run_reconstruct(const ReconstructArgs& args) {
   if (frames.size() >= 20) progress.finish();
   contacts_file.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - online_start).count();
-  std::printf("reconstructed %zu frames (%.0f frames/s%s) with the %s method (lambda2 = %g); contacts in %s\n",
-              frames.size(), frames.size() / std::max(seconds, 1e-9), args.images_dir.empty() ? "" : ", with images",
-              args.method.c_str(), options.lambda2, args.contacts_path.c_str());
+  char lambda[48] = "";
+  if (!fit) std::snprintf(lambda, sizeof lambda, " (lambda2 = %g)", options.lambda2);
+  std::printf("reconstructed %zu frames (%.0f frames/s%s) with the %s method%s; contacts in %s\n", frames.size(),
+              frames.size() / std::max(seconds, 1e-9), args.images_dir.empty() ? "" : ", with images",
+              args.method.c_str(), lambda, args.contacts_path.c_str());
   if (!calibration.calibrated) std::printf("note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }
 
@@ -109,7 +121,9 @@ void add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--contacts", a->contacts_path, "Contacts out (JSON Lines, one object per frame)")->required();
   cmd->add_option("--calibration", a->calibration_path, "Pressure calibration (JSON from 'emit calibrate')")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--method", a->method, "paper (Tikhonov, Q = I), noser, or laplacian")->capture_default_str();
+  cmd->add_option("--method", a->method, "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
+      ->check(CLI::IsMember({"fit", "paper", "noser", "laplacian"}))
+      ->capture_default_str();
   cmd->add_option("--lambda2", a->lambda2, "Regularisation lambda^2 (default: the method's)")->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", a->threshold, "Threshold as a fraction of the image's maximum")->capture_default_str();
   cmd->add_option("--min-area-mm2", a->min_area_mm2, "Drop contacts smaller than this")->check(CLI::NonNegativeNumber);

@@ -1,6 +1,7 @@
 #include "emit/reconstruct/reconstructor.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include "emit/errors.hpp"
 
@@ -43,7 +44,37 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
     selected_[static_cast<std::size_t>(k)] = on;
     pressure_[k] = on ? calibration_.pressure_N_per_mm2(dphi_[k]) : 0.0;  // paper eq. 8
   }
-  return finder_.find(selected_, pressure_, dphi_, options_.min_contact_area_mm2);
+  const std::vector<Contact>& linear = finder_.find(selected_, pressure_, dphi_, options_.min_contact_area_mm2);
+  return fitter_ ? fit_contacts(linear) : linear;
+}
+
+const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contact>& linear) {
+  seeds_.clear();
+  for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
+  const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
+    residual_image_.noalias() = model_.op * (-misfit);
+    Index peak;
+    if (residual_image_.maxCoeff(&peak) <= 0) return false;
+    const Vector3 at = model_.mesh.triangle_centroid_mm(peak);
+    seed = {at.x(), at.y(), 0, 0};
+    return true;
+  };
+  fitter_result_ = fitter_->fit(dV_, seeds_, residual_peak);
+  fitted_.clear();
+  pressure_.setZero();  // the picture: each fitted disc at its pressure
+  for (const FittedContact& f : fitter_result_.contacts) {
+    Contact c;
+    c.x_mm = f.disc.x_mm, c.y_mm = f.disc.y_mm;
+    c.area_mm2 = std::numbers::pi * f.disc.radius_mm * f.disc.radius_mm;
+    c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;
+    c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
+    fitted_.push_back(c);
+    for (Index k = 0; k < pressure_.size(); ++k)
+      if ((model_.mesh.triangle_centroid_mm(k).head<2>() - Vector2(c.x_mm, c.y_mm)).norm() <= f.disc.radius_mm)
+        pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
+  }
+  return fitted_;
 }
 
 Frame average_frames(const std::vector<Frame>& frames) {

@@ -212,6 +212,11 @@ double ContactLaw::conductance_S_per_mm2(double pressure_N_per_mm2) const {
   return 1.0 / (alpha_ohm_mm2 * std::pow(pressure_N_per_mm2, gamma));
 }
 
+double ContactLaw::pressure_N_per_mm2(double conductance_S_per_mm2) const {
+  if (!(conductance_S_per_mm2 > 0)) return 0.0;
+  return std::pow(alpha_ohm_mm2 * conductance_S_per_mm2, -1.0 / gamma);  // g = 1/(α P^γ)
+}
+
 Sensor parse_sensor(const json& j, const std::string& where, const std::string& base_dir) {
   Sensor sensor;
   try {

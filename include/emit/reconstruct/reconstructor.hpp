@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "emit/fem/forward_model.hpp"
+#include "emit/fit/contact_fitter.hpp"
 #include "emit/reconstruct/contacts.hpp"
 #include "emit/reconstruct/pressure.hpp"
 #include "emit/reconstruct/reconstruction_model.hpp"
@@ -25,6 +26,13 @@ class Reconstructor {
   /// The no-contact reference frame. \throw InvalidInput if it is not N×N or not finite.
   void set_reference(const Frame& reference);
 
+  /// Contacts by model-based fitting (contact_fitter.hpp), seeded by the linear image's contacts,
+  /// instead of from the thresholded image. `fitter` must outlive this and use the same
+  /// measurements; null turns fitting off.
+  void use_fitter(ContactFitter* fitter) { fitter_ = fitter; }
+  /// The last frame's fit (valid when a fitter is in use).
+  const FitResult* fit_result() const { return fitter_ ? &fitter_result_ : nullptr; }
+
   /// One frame → contacts (valid until the next call). \throw InvalidInput if the frame is not
   /// N×N; the frame's values are not checked here (the readers check them).
   const std::vector<Contact>& process(const Frame& frame);
@@ -40,6 +48,12 @@ class Reconstructor {
   ContactFinder finder_;
   Vector reference_, dV_, dphi_, pressure_;
   std::vector<std::uint8_t> selected_;
+  ContactFitter* fitter_ = nullptr;
+  FitResult fitter_result_;
+  std::vector<Disc> seeds_;
+  std::vector<Contact> fitted_;
+  Vector residual_image_;
+  const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
 };
 
 /// The mean of several frames (the reference is captured as an average). \throw InvalidInput

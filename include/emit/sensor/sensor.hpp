@@ -39,6 +39,8 @@ struct ContactLaw {
   double min_pressure_N_per_mm2 = 0.002;
   /// g = 1/r_c [S/mm²]; 0 below the minimum pressure.
   double conductance_S_per_mm2(double pressure_N_per_mm2) const;
+  /// The inverse (paper eq. 2 solved for P); 0 for g ≤ 0.
+  double pressure_N_per_mm2(double conductance_S_per_mm2) const;
 };
 
 /// The acquisition's ADC (paper §3.1: the ESP32's 12-bit ADC at 3.3 V).

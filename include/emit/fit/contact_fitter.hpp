@@ -1,0 +1,93 @@
+#pragma once
+/// \file contact_fitter.hpp
+/// Model-based contact fitting (DESIGN §3, beyond the paper): each contact a disc (centre,
+/// radius, contact conductance, disc_contact.hpp); the frame it gives predicted on the
+/// reconstruction mesh (frame_predictor.hpp); the discs fitted to the measured δV by
+/// Levenberg–Marquardt (Ceres). The linear image only seeds it. The linear method's error is
+/// model bias; fitting the physics removes it.
+///
+/// Multi-touch: start from the strongest seed; add a contact, seeded at the next seed or at the
+/// peak of the residual's linear image, while doing so cuts the misfit by a clear fraction.
+#include <functional>
+#include <vector>
+
+#include "emit/fem/forward_model.hpp"
+#include "emit/fit/disc_contact.hpp"
+#include "emit/fit/frame_predictor.hpp"
+#include "emit/reconstruct/measurements.hpp"
+#include "emit/sensor/sensor.hpp"
+
+namespace emit {
+
+struct FitOptions {
+  int max_contacts = 3;
+  double edge_mm = 0;              ///< rim smoothing half-width; 0: a quarter of the mesh size
+  double min_radius_mm = 0;        ///< 0: twice the rim's half-width
+  double max_radius_mm = 0;        ///< 0: 2.5 × the prior radius, at most a quarter of the sheet
+  /// A weak log-normal prior on the radius. Why a prior: while the contact's resistance dwarfs
+  /// the sheet's spreading resistance (the current-source regime, DESIGN §2), a disc's field
+  /// outside it is a point source's (the mean-value property), so the frame pins the centre and
+  /// g·area sharply but the radius only weakly. The prior keeps it where the data do not speak.
+  double prior_radius_mm = 4;      ///< a fingertip
+  double prior_radius_log_std = 0.7;  ///< ln 2: a factor of 2 is one σ
+  /// Fit the radius (with the prior) or hold it at prior_radius_mm. Held by default: on the twin
+  /// the fitted radius wanders to its bounds without moving the centre (measured), and a free
+  /// radius makes the patch, and so each prediction, large. Pressure then comes from g·area
+  /// through a calibration (contacts of one indenter), not from the radius.
+  bool fit_radius = false;
+  /// A further contact is kept only if it cuts the misfit (sum of squares) by this fraction.
+  double new_contact_gain = 0.5;
+  int max_iterations = 50;
+  void validate() const;  ///< \throw InvalidInput naming the option
+};
+
+struct FittedContact {
+  Disc disc;
+  double x_std_mm = 0, y_std_mm = 0;  ///< 1σ from the fit's covariance
+  double radius_std_mm = 0;
+  double conductance_relative_std = 0;
+  double pressure_N_per_mm2 = 0;  ///< from g by the sensor's contact law (paper eq. 2)
+};
+
+struct FitResult {
+  std::vector<FittedContact> contacts;  ///< strongest (largest g·area) first
+  double rms_misfit_V = 0;              ///< RMS of predicted − measured over the measurements
+  int evaluations = 0;                  ///< frames predicted
+};
+
+class ContactFitter {
+ public:
+  /// Keeps references to all but `options`; they must outlive it. \throw InvalidInput.
+  ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+                const MeasurementSet& measurements, FitOptions options = {});
+
+  /// Fits contacts to δV (one value per measurement), seeded by `seeds` (strongest first; their
+  /// conductance may be 0: a default is used). `residual_peak` is called with the current misfit
+  /// (per measurement) to propose a seed for one more contact; it may be empty.
+  const FitResult& fit(const Vector& dV, const std::vector<Disc>& seeds,
+                       const std::function<bool(const Vector& misfit, Disc& seed)>& residual_peak = {});
+
+  /// The frame the discs give (N×N), for tests and pictures.
+  Frame predict(const std::vector<Disc>& discs);
+  double noise_V() const { return noise_V_; }
+
+ private:
+  friend class FrameMisfit;
+  double fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance);
+  void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
+  Disc clamp_seed(Disc seed) const;
+
+  const Sensor& sensor_;
+  const MeasurementSet& measurements_;
+  FitOptions options_;
+  DiscContactIntegrator integrator_;
+  FramePredictor predictor_;
+  double noise_V_;
+  Vector2 lower_mm_, upper_mm_;
+  DiscLoad load_;
+  Frame frame_;
+  FitResult result_;
+  std::vector<double> covariance_std_;
+};
+
+}  // namespace emit

@@ -1,0 +1,238 @@
+#include "emit/fit/contact_fitter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <ceres/ceres.h>
+
+#include "emit/errors.hpp"
+
+namespace emit {
+
+void FitOptions::validate() const {
+  if (max_contacts < 1) throw InvalidInput("fit: max_contacts must be at least 1");
+  if (edge_mm < 0) throw InvalidInput("fit: edge_mm must not be negative");
+  if (min_radius_mm < 0 || max_radius_mm < 0) throw InvalidInput("fit: radius bounds must not be negative");
+  if (max_radius_mm > 0 && max_radius_mm <= min_radius_mm) throw InvalidInput("fit: max_radius_mm must exceed min_radius_mm");
+  if (!(new_contact_gain > 0 && new_contact_gain < 1)) throw InvalidInput("fit: new_contact_gain must be a fraction");
+  if (max_iterations < 1) throw InvalidInput("fit: max_iterations must be at least 1");
+  if (!(prior_radius_mm > 0) || !(prior_radius_log_std > 0)) throw InvalidInput("fit: the radius prior must be positive");
+}
+
+namespace {
+
+constexpr int disc_parameters = 4;  // x [mm], y [mm], log r [log mm], log g [log S/mm²]
+
+std::array<double, disc_parameters> to_parameters(const Disc& d) {
+  return {d.x_mm, d.y_mm, std::log(d.radius_mm), std::log(d.conductance_S_per_mm2)};
+}
+
+Disc to_disc(const double* p) { return {p[0], p[1], std::exp(p[2]), std::exp(p[3])}; }
+
+/// Noise of one reading: the ADC's Gaussian noise and its quantisation (LSB²/12).
+double reading_noise_V(const AdcSpec& adc) {
+  const double lsb = adc.vref_V / std::pow(2.0, adc.bits);
+  return std::sqrt(adc.noise_V * adc.noise_V + lsb * lsb / 12);
+}
+
+/// (log r − log r₀)/σ: the radius prior as one more residual.
+struct RadiusPrior {
+  double log_prior, inverse_std;
+  template <typename T>
+  bool operator()(const T* disc, T* residual) const {
+    residual[0] = (disc[2] - log_prior) * inverse_std;
+    return true;
+  }
+};
+
+}  // namespace
+
+/// Ceres's view of the fit: residuals (predicted − measured)/σ for all discs at once, with the
+/// analytic Jacobian (disc_contact.hpp's ∂C/∂(x, y, r), ∂C/∂log g = C, frame_predictor.hpp's
+/// derivative).
+class FrameMisfit : public ceres::CostFunction {
+ public:
+  FrameMisfit(ContactFitter& fitter, const Vector& dV, int discs) : fitter_(fitter), dV_(dV), discs_(discs) {
+    for (int i = 0; i < discs; ++i) mutable_parameter_block_sizes()->push_back(disc_parameters);
+    set_num_residuals(fitter.measurements_.size());
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    ContactFitter& f = fitter_;
+    f.load_.clear();
+    ranges_.clear();
+    for (int i = 0; i < discs_; ++i) {
+      const std::size_t begin = f.load_.triangles.size();
+      f.integrator_.integrate(to_disc(parameters[i]), f.load_, jacobians != nullptr);
+      ranges_.emplace_back(begin, f.load_.triangles.size());
+    }
+    f.predictor_.predict(f.load_.triangles, f.load_.local_S, f.sensor_.drive_voltage_V, f.frame_);
+    const MeasurementSet& m = f.measurements_;
+    for (int r = 0; r < m.size(); ++r) residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / f.noise_V_;
+    if (!jacobians) return std::isfinite(residuals[0]);
+    for (int i = 0; i < discs_; ++i) {
+      if (!jacobians[i]) continue;
+      const double radius = std::exp(parameters[i][2]);
+      for (int j = 0; j < disc_parameters; ++j) {
+        direction_.assign(f.load_.triangles.size(), Eigen::Matrix3d::Zero());
+        for (std::size_t t = ranges_[i].first; t < ranges_[i].second; ++t)
+          direction_[t] = j == 3 ? f.load_.local_S[t] : j == 2 ? radius * f.load_.d_local_S[t][2] : f.load_.d_local_S[t][j];
+        f.predictor_.derivative(f.load_.triangles, direction_, d_frame_);
+        for (int r = 0; r < m.size(); ++r)
+          jacobians[i][r * disc_parameters + j] = d_frame_.data()[m.frame_index[r]] / f.noise_V_;
+      }
+    }
+    return true;
+  }
+
+ private:
+  ContactFitter& fitter_;
+  const Vector& dV_;
+  int discs_;
+  mutable std::vector<std::pair<std::size_t, std::size_t>> ranges_;
+  mutable std::vector<Eigen::Matrix3d> direction_;
+  mutable Frame d_frame_;
+};
+
+ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+                             const MeasurementSet& measurements, FitOptions options)
+    : sensor_(sensor),
+      measurements_(measurements),
+      options_(options),
+      integrator_(mesh, options.edge_mm > 0 ? options.edge_mm : sensor.mesh.element_size_mm / 4),
+      predictor_(mesh, green),
+      noise_V_(reading_noise_V(sensor.adc)) {
+  options_.validate();
+  if (options_.min_radius_mm == 0) options_.min_radius_mm = 2 * integrator_.edge_mm();
+  lower_mm_ = mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose();
+  upper_mm_ = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose();
+  if (options_.max_radius_mm == 0)
+    options_.max_radius_mm = std::min(2.5 * options_.prior_radius_mm, (upper_mm_ - lower_mm_).minCoeff() / 4);
+  if (options_.max_radius_mm <= options_.min_radius_mm) throw InvalidInput("fit: the sheet is too small for its mesh");
+}
+
+Frame ContactFitter::predict(const std::vector<Disc>& discs) {
+  load_.clear();
+  for (const Disc& d : discs) integrator_.integrate(d, load_);
+  predictor_.predict(load_.triangles, load_.local_S, sensor_.drive_voltage_V, frame_);
+  return frame_;
+}
+
+void ContactFitter::misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out) {
+  predict(discs);
+  out.resize(measurements_.size());
+  for (int i = 0; i < measurements_.size(); ++i) out[i] = frame_.data()[measurements_.frame_index[i]] - dV[i];
+}
+
+Disc ContactFitter::clamp_seed(Disc seed) const {
+  seed.x_mm = std::clamp(seed.x_mm, lower_mm_.x(), upper_mm_.x());
+  seed.y_mm = std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
+  seed.radius_mm = options_.fit_radius ? std::clamp(seed.radius_mm > 0 ? seed.radius_mm : options_.prior_radius_mm,
+                                                    1.5 * options_.min_radius_mm, 0.9 * options_.max_radius_mm)
+                                       : options_.prior_radius_mm;
+  if (!(seed.conductance_S_per_mm2 > 0)) seed.conductance_S_per_mm2 = sensor_.contact.conductance_S_per_mm2(0.1);
+  return seed;
+}
+
+/// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
+double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance) {
+  const int k = static_cast<int>(discs.size());
+  std::vector<std::array<double, disc_parameters>> parameters;
+  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
+  ceres::Problem problem;
+  std::vector<double*> blocks;
+  for (auto& p : parameters) blocks.push_back(p.data());
+  problem.AddResidualBlock(new FrameMisfit(*this, dV, k), nullptr, blocks);
+  for (double* p : blocks)
+    if (options_.fit_radius)
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RadiusPrior, 1, disc_parameters>(new RadiusPrior{
+                                   std::log(options_.prior_radius_mm), 1 / options_.prior_radius_log_std}),
+                               nullptr, p);
+  for (double* p : blocks) {
+    problem.SetParameterLowerBound(p, 0, lower_mm_.x());
+    problem.SetParameterUpperBound(p, 0, upper_mm_.x());
+    problem.SetParameterLowerBound(p, 1, lower_mm_.y());
+    problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+    if (options_.fit_radius) {
+      problem.SetParameterLowerBound(p, 2, std::log(options_.min_radius_mm));
+      problem.SetParameterUpperBound(p, 2, std::log(options_.max_radius_mm));
+    } else {
+      problem.SetManifold(p, new ceres::SubsetManifold(disc_parameters, {2}));
+    }
+  }
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = options_.max_iterations;
+  solver.logging_type = ceres::SILENT;
+  solver.function_tolerance = 1e-10;
+  solver.parameter_tolerance = 1e-10;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  result_.evaluations += summary.num_residual_evaluations;
+
+  for (int i = 0; i < k; ++i) discs[i] = to_disc(parameters[i].data());
+  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * k), 0.0);
+  if (covariance) {
+    ceres::Covariance::Options covariance_options;
+    covariance_options.algorithm_type = ceres::DENSE_SVD;
+    covariance_options.null_space_rank = -1;
+    ceres::Covariance estimate(covariance_options);
+    std::vector<std::pair<const double*, const double*>> pairs;
+    for (double* p : blocks) pairs.emplace_back(p, p);
+    if (estimate.Compute(pairs, &problem)) {
+      // Residuals are in units of σ; where the model's misfit exceeds the noise, scale up by it.
+      const double dof = std::max(1, measurements_.size() - disc_parameters * k);
+      const double scale = std::max(1.0, 2 * summary.final_cost / dof);
+      for (int i = 0; i < k; ++i) {
+        double c[disc_parameters * disc_parameters];
+        estimate.GetCovarianceBlock(blocks[i], blocks[i], c);
+        for (int j = 0; j < disc_parameters; ++j)
+          covariance_std_[static_cast<std::size_t>(disc_parameters * i + j)] = std::sqrt(std::max(0.0, c[j * disc_parameters + j] * scale));
+      }
+    }
+  }
+  return 2 * summary.final_cost * noise_V_ * noise_V_;
+}
+
+const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& seeds,
+                                    const std::function<bool(const Vector&, Disc&)>& residual_peak) {
+  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  result_ = {};
+  if (seeds.empty()) return result_;
+  std::vector<Disc> discs{clamp_seed(seeds[0])};
+  double misfit_sq = fit_discs(dV, discs, false);
+  std::size_t next_seed = 1;
+  Vector residual;
+  // Look for another contact only while the misfit is clearly above the readings' noise.
+  const auto unexplained = [&] { return misfit_sq > 4 * noise_V_ * noise_V_ * measurements_.size(); };
+  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained()) {
+    Disc seed;
+    if (next_seed < seeds.size()) {
+      seed = seeds[next_seed++];
+    } else {
+      this->misfit(discs, dV, residual);
+      if (!residual_peak || !residual_peak(residual, seed)) break;
+    }
+    std::vector<Disc> more = discs;
+    more.push_back(clamp_seed(seed));
+    const double more_sq = fit_discs(dV, more, false);
+    if (more_sq > (1 - options_.new_contact_gain) * misfit_sq) break;
+    discs = std::move(more);
+    misfit_sq = more_sq;
+  }
+  misfit_sq = fit_discs(dV, discs, true);  // converged already: this is for the covariance
+  result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    const double* s = covariance_std_.data() + disc_parameters * i;
+    // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
+    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3],
+                                sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2)});
+  }
+  std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
+    return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >
+           b.disc.conductance_S_per_mm2 * b.disc.radius_mm * b.disc.radius_mm;
+  });
+  return result_;
+}
+
+}  // namespace emit
