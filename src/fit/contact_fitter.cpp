@@ -16,7 +16,7 @@ void FitOptions::validate() const {
   if (max_radius_mm > 0 && max_radius_mm <= min_radius_mm) throw InvalidInput("fit: max_radius_mm must exceed min_radius_mm");
   if (!(new_contact_gain > 0 && new_contact_gain < 1)) throw InvalidInput("fit: new_contact_gain must be a fraction");
   if (max_iterations < 1) throw InvalidInput("fit: max_iterations must be at least 1");
-  if (!(prior_radius_mm > 0) || !(prior_radius_log_std > 0)) throw InvalidInput("fit: the radius prior must be positive");
+  if (prior_radius_mm < 0 || !(prior_radius_log_std > 0)) throw InvalidInput("fit: the radius prior must be positive");
 }
 
 namespace {
@@ -103,6 +103,7 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
       predictor_(mesh, green),
       noise_V_(reading_noise_V(sensor.adc)) {
   options_.validate();
+  if (options_.prior_radius_mm == 0) options_.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
   if (options_.min_radius_mm == 0) options_.min_radius_mm = 2 * integrator_.edge_mm();
   lower_mm_ = mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose();
   upper_mm_ = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose();

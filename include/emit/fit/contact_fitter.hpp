@@ -24,16 +24,18 @@ struct FitOptions {
   double edge_mm = 0;              ///< rim smoothing half-width; 0: a quarter of the mesh size
   double min_radius_mm = 0;        ///< 0: twice the rim's half-width
   double max_radius_mm = 0;        ///< 0: 2.5 × the prior radius, at most a quarter of the sheet
-  /// A weak log-normal prior on the radius. Why a prior: while the contact's resistance dwarfs
-  /// the sheet's spreading resistance (the current-source regime, DESIGN §2), a disc's field
-  /// outside it is a point source's (the mean-value property), so the frame pins the centre and
-  /// g·area sharply but the radius only weakly. The prior keeps it where the data do not speak.
-  double prior_radius_mm = 4;      ///< a fingertip
+  /// The model disc's radius, and a weak log-normal prior on it when it is fitted. While the
+  /// contact's resistance dwarfs the sheet's spreading resistance (the current-source regime,
+  /// DESIGN §2), a disc's field outside it is a point source's (the mean-value property): the frame
+  /// pins the centre and g·area sharply and the radius hardly at all. So the radius is held small:
+  /// the centre does not depend on it, a small disc never reaches over the border (a 4 mm disc
+  /// there biased the centre by up to 0.9 mm on the 30 mm sheet; 2 mm: 0.06 mm), and its patch,
+  /// and so each prediction, stays small (2 frames/s → 33 frames/s there).
+  double prior_radius_mm = 0;         ///< 0: twice the mesh's element size
   double prior_radius_log_std = 0.7;  ///< ln 2: a factor of 2 is one σ
   /// Fit the radius (with the prior) or hold it at prior_radius_mm. Held by default: on the twin
-  /// the fitted radius wanders to its bounds without moving the centre (measured), and a free
-  /// radius makes the patch, and so each prediction, large. Pressure then comes from g·area
-  /// through a calibration (contacts of one indenter), not from the radius.
+  /// a fitted radius wandered to its bounds without moving the centre. Pressure then comes from
+  /// g·area through a calibration (contacts of one indenter), not from the radius.
   bool fit_radius = false;
   /// A further contact is kept only if it cuts the misfit (sum of squares) by this fraction.
   double new_contact_gain = 0.5;
