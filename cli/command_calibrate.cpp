@@ -1,11 +1,15 @@
 // emit calibrate: fit eq. 8's a1, a2, a3 from presses of known force (and eq. 2's alpha, gamma
 // from resistance-pressure pairs).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
 #include "commands.hpp"
 #include "emit/errors.hpp"
+#include "emit/fit/fit_model.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
@@ -17,16 +21,18 @@ namespace emit::cli {
 namespace {
 
 struct CalibrateArgs {
-  std::string sensor_path, reference_path, frames_path, truth_path, out_path, contact_law_path, method = "paper";
+  std::string sensor_path, reference_path, frames_path, truth_path, out_path, contact_law_path, method = "fit", cache_dir;
   double lambda2 = 0, threshold = 0.5;
 };
 
 void fit_pressure(const CalibrateArgs& args) {
   const Sensor sensor = sensor_from_option(args.sensor_path);
-  OperatorOptions options = method_options(args.method);
+  const bool fit = args.method == "fit";  // fitting is seeded by the paper method's image
+  OperatorOptions options = method_options(fit ? "paper" : args.method);
   if (args.lambda2 > 0) options.lambda2 = args.lambda2;
-  const ReconstructionModel model = build_reconstruction_model(
-      sensor, options, default_cache_dir(), {}, [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); });
+  const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
+  const ReconstructionModel model =
+      build_reconstruction_model(sensor, options, args.cache_dir.empty() ? default_cache_dir() : args.cache_dir, {}, say);
   const int N = model.mesh.electrode_count();
   const Frame reference = average_frames(read_frames_csv(args.reference_path, N));
   const std::vector<Frame> frames = read_frames_csv(args.frames_path, N);
@@ -37,20 +43,52 @@ void fit_pressure(const CalibrateArgs& args) {
   FrameOptions frame_options;
   frame_options.threshold_fraction = args.threshold;
   Reconstructor reconstructor(model, PressureCalibration::uncalibrated(sensor), frame_options);
+  std::optional<FitModel> fit_model;
+  std::optional<ContactFitter> fitter;
+  if (fit) {
+    fit_model = build_fit_model(sensor, say);
+    fitter.emplace(sensor, fit_model->mesh, fit_model->green, model.measurements);
+    reconstructor.use_fitter(&*fitter);
+  }
   reconstructor.set_reference(reference);
   std::vector<PressureSample> samples;
+  std::vector<double> pressures, resistances;  // for fit: true P, and 1/g of the fitted disc [Ω·mm²]
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
     reconstructor.process(frames[f]);
-    samples.push_back(pressure_sample(reconstructor, args.threshold, truth[f][0].pressure_N_per_mm2()));
+    const double pressure = truth[f][0].pressure_N_per_mm2();
+    if (!fit) {
+      samples.push_back(pressure_sample(reconstructor, args.threshold, pressure));
+    } else if (!reconstructor.fit_result()->contacts.empty()) {
+      pressures.push_back(pressure);
+      resistances.push_back(1 / reconstructor.fit_result()->contacts[0].disc.conductance_S_per_mm2);
+    }
   }
-  const PressureFit fit = fit_pressure_calibration(samples);
-  write_calibration(args.out_path, fit.calibration);
+  if (fit) {
+    const ContactLawFit law = fit_contact_law(pressures, resistances);
+    PressureCalibration calibration;
+    calibration.calibrated = true;
+    calibration.fitted_contact_law = ContactLaw{law.alpha, law.gamma, sensor.contact.min_pressure_N_per_mm2};
+    double sum_sq = 0, largest = 0;
+    for (std::size_t i = 0; i < pressures.size(); ++i) {
+      const double error = calibration.fitted_contact_law->pressure_N_per_mm2(1 / resistances[i]) - pressures[i];
+      sum_sq += error * error, largest = std::max(largest, std::abs(error));
+    }
+    write_calibration(args.out_path, calibration);
+    std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
+                pressures.size(), law.alpha, law.gamma);
+    std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
+                std::sqrt(sum_sq / std::max<std::size_t>(1, pressures.size())), largest, 100 * largest / 0.5,
+                args.out_path.c_str());
+    return;
+  }
+  const PressureFit result = fit_pressure_calibration(samples);
+  write_calibration(args.out_path, result.calibration);
   std::printf("fitted P = (a1/dphi + a2)^a3 on %zu presses (%s, lambda2 = %g): a1 = %.6g, a2 = %.6g, a3 = %.6g\n",
-              samples.size(), args.method.c_str(), options.lambda2, fit.calibration.a1, fit.calibration.a2,
-              fit.calibration.a3);
+              samples.size(), args.method.c_str(), options.lambda2, result.calibration.a1, result.calibration.a2,
+              result.calibration.a3);
   std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
-              fit.rms_N_per_mm2, fit.max_abs_N_per_mm2, 100 * fit.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
+              result.rms_N_per_mm2, result.max_abs_N_per_mm2, 100 * result.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
 }
 
 void fit_law(const std::string& path) {
@@ -95,9 +133,12 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--out", a->out_path, "Calibration to write (JSON)");
   cmd->add_option("--contact-law", a->contact_law_path, "Also fit eq. 2 from pairs (CSV: pressure_N_per_mm2,resistance_ohm)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--method", a->method, "Reconstruction method the calibration is for")->capture_default_str();
+  cmd->add_option("--method", a->method, "Reconstruction method the calibration is for")
+      ->check(CLI::IsMember({"fit", "paper", "noser", "laplacian"}))
+      ->capture_default_str();
   cmd->add_option("--lambda2", a->lambda2, "lambda^2 (default: the method's)")->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", a->threshold, "Threshold fraction")->capture_default_str();
+  cmd->add_option("--cache", a->cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->callback([a] { run_calibrate(*a); });
 }
 

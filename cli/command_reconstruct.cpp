@@ -23,7 +23,7 @@ namespace {
 
 struct ReconstructArgs {
   std::string sensor_path, reference_path, frames_path, contacts_path, calibration_path, images_dir;
-  std::string method = "paper", cache_dir;
+  std::string method = "fit", cache_dir;
   double lambda2 = 0, threshold = 0.5, min_area_mm2 = 0;
   bool no_cache = false;
 };
@@ -49,6 +49,9 @@ void run_reconstruct(const ReconstructArgs& args) {
   if (args.lambda2 > 0) options.lambda2 = args.lambda2;
   const PressureCalibration calibration =
       args.calibration_path.empty() ? PressureCalibration::uncalibrated(sensor) : load_calibration(args.calibration_path);
+  if (calibration.calibrated && fit != calibration.fitted_contact_law.has_value())
+    throw InvalidInput(args.calibration_path + ": a calibration for " + (fit ? "the linear methods" : "contact fitting") +
+                       "; run 'emit calibrate --method " + args.method + "'");
   if (!args.images_dir.empty()) std::filesystem::create_directories(args.images_dir);
   AtomicFile contacts_file(args.contacts_path);  // fails now, not after the work, if unwritable
 
@@ -70,9 +73,11 @@ void run_reconstruct(const ReconstructArgs& args) {
   if (!dead.empty()) model = build_reconstruction_model(sensor, options, cache, dead, say);
   std::optional<FitModel> fit_model;
   std::optional<ContactFitter> fitter;
+  Sensor fit_sensor = sensor;  // with the calibrated contact law, if there is one
   if (fit) {
+    if (calibration.fitted_contact_law) fit_sensor.contact = *calibration.fitted_contact_law;
     fit_model = build_fit_model(sensor, say);
-    fitter.emplace(sensor, fit_model->mesh, fit_model->green, model.measurements);
+    fitter.emplace(fit_sensor, fit_model->mesh, fit_model->green, model.measurements);
   }
   std::fprintf(stderr, "model ready in %.2f s (%lld triangles, %d measurements%s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),

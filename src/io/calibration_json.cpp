@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,26 +22,36 @@ PressureCalibration load_calibration(const std::string& path) {
   } catch (const nlohmann::json::parse_error& e) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
   }
-  if (!j.is_object()) throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"}");
+  if (!j.is_object()) throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"} or {\"alpha_ohm_mm2\", \"gamma\"}");
   PressureCalibration c;
   c.calibrated = true;
+  const bool law = j.contains("alpha_ohm_mm2") || j.contains("gamma");
+  if (law) c.fitted_contact_law = ContactLaw{};
   for (const auto& item : j.items()) {
     if (!item.value().is_number() || !std::isfinite(item.value().get<double>()))
       throw InvalidInput(path + ": " + item.key() + ": must be a finite number");
     const double v = item.value().get<double>();
-    if (item.key() == "a1") c.a1 = v;
-    else if (item.key() == "a2") c.a2 = v;
-    else if (item.key() == "a3") c.a3 = v;
-    else throw InvalidInput(path + ": " + item.key() + ": unknown key");
+    if (!law && item.key() == "a1") c.a1 = v;
+    else if (!law && item.key() == "a2") c.a2 = v;
+    else if (!law && item.key() == "a3") c.a3 = v;
+    else if (law && item.key() == "alpha_ohm_mm2") c.fitted_contact_law->alpha_ohm_mm2 = v;
+    else if (law && item.key() == "gamma") c.fitted_contact_law->gamma = v;
+    else throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
   }
-  for (const char* key : {"a1", "a2", "a3"})
+  for (const char* key : law ? std::vector<const char*>{"alpha_ohm_mm2", "gamma"} : std::vector<const char*>{"a1", "a2", "a3"})
     if (!j.contains(key)) throw InvalidInput(path + ": " + key + ": missing");
+  if (law && !(c.fitted_contact_law->alpha_ohm_mm2 > 0 && c.fitted_contact_law->gamma < 0))
+    throw InvalidInput(path + ": alpha_ohm_mm2 must be positive and gamma negative");
   return c;
 }
 
 void write_calibration(const std::string& path, const PressureCalibration& c) {
   AtomicFile file(path);
-  file.stream() << nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}}.dump(2) << '\n';
+  const nlohmann::json j = c.fitted_contact_law
+                              ? nlohmann::json{{"alpha_ohm_mm2", c.fitted_contact_law->alpha_ohm_mm2},
+                                               {"gamma", c.fitted_contact_law->gamma}}
+                              : nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
+  file.stream() << j.dump(2) << '\n';
   file.commit();
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file calibration_json.hpp
-/// Pressure calibration files: {"a1": …, "a2": …, "a3": …} (paper eq. 8), as `emit calibrate`
-/// writes them; other keys are errors.
+/// Pressure calibration files, as `emit calibrate` writes them: {"a1": …, "a2": …, "a3": …}
+/// (paper eq. 8) for the linear methods, {"alpha_ohm_mm2": …, "gamma": …} (eq. 2 as the fit
+/// sees it) for contact fitting; other keys are errors.
 #include <string>
 
 #include "emit/reconstruct/pressure.hpp"

@@ -2,6 +2,8 @@
 /// \file pressure.hpp
 /// Potential → pressure, paper eq. 8: P_k = (a1/δφ_k + a2)^a3. From eqs. 1–2, a1 = E·R0/α,
 /// a2 = −R0/α, a3 = 1/γ; `emit calibrate` fits them from presses of known force.
+#include <optional>
+
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
@@ -9,6 +11,9 @@ namespace emit {
 struct PressureCalibration {
   double a1 = 3.3, a2 = -1.0, a3 = -1.0 / 1.2;
   bool calibrated = false;
+  /// For contact fitting instead of eq. 8: the contact law (eq. 2) as the fit sees it, fitted
+  /// from presses of known pressure (the fitted disc's conductance against the true pressure).
+  std::optional<ContactLaw> fitted_contact_law;
 
   /// The uncalibrated default from the sensor: R0/α = 1, so a1 = E, a2 = −1, a3 = 1/γ. It is
   /// monotone in δφ but its scale is arbitrary until calibrated.
