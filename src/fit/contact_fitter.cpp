@@ -68,8 +68,13 @@ class FrameMisfit : public ceres::CostFunction {
     }
     f.predictor_.predict(f.load_.triangles, f.load_.local_S, f.sensor_.drive_voltage_V, f.frame_);
     const MeasurementSet& m = f.measurements_;
-    for (int r = 0; r < m.size(); ++r) residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / f.noise_V_;
-    if (!jacobians) return std::isfinite(residuals[0]);
+    bool finite = true;
+    for (int r = 0; r < m.size(); ++r) {
+      residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / f.noise_V_;
+      finite = finite && std::isfinite(residuals[r]);
+    }
+    if (!finite) return false;  // a step too far: Ceres shrinks it
+    if (!jacobians) return true;
     for (int i = 0; i < discs_; ++i) {
       if (!jacobians[i]) continue;
       const double radius = std::exp(parameters[i][2]);
@@ -131,7 +136,9 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
   seed.radius_mm = options_.fit_radius ? std::clamp(seed.radius_mm > 0 ? seed.radius_mm : options_.prior_radius_mm,
                                                     1.5 * options_.min_radius_mm, 0.9 * options_.max_radius_mm)
                                        : options_.prior_radius_mm;
-  if (!(seed.conductance_S_per_mm2 > 0)) seed.conductance_S_per_mm2 = sensor_.contact.conductance_S_per_mm2(0.1);
+  const double g = sensor_.contact.conductance_S_per_mm2(0.1);
+  seed.conductance_S_per_mm2 =
+      seed.conductance_S_per_mm2 > 0 ? std::clamp(seed.conductance_S_per_mm2, g * std::exp(-13), g * std::exp(13)) : g;
   return seed;
 }
 
@@ -154,6 +161,10 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool
     problem.SetParameterUpperBound(p, 0, upper_mm_.x());
     problem.SetParameterLowerBound(p, 1, lower_mm_.y());
     problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+    // g within six decades of the contact law's at 0.1 N/mm²: keeps exp(log g) finite.
+    const double log_g = std::log(sensor_.contact.conductance_S_per_mm2(0.1));
+    problem.SetParameterLowerBound(p, 3, log_g - 14);
+    problem.SetParameterUpperBound(p, 3, log_g + 14);
     if (options_.fit_radius) {
       problem.SetParameterLowerBound(p, 2, std::log(options_.min_radius_mm));
       problem.SetParameterUpperBound(p, 2, std::log(options_.max_radius_mm));
