@@ -1,20 +1,75 @@
-// emit demo: the main job on the built-in sensor. For now: simulate a few presses on the default
-// 60 x 60 mm sheet, print the frames' summary and draw the sheet's potential for each.
+// emit demo: the main job on the built-in sensor, end to end. The digital twin of the default
+// 60 x 60 mm sheet stands in for a real one: it records a reference frame and presses of known
+// force (the calibration), then a few presses; emit calibrates, reconstructs them by contact
+// fitting and by the paper's method, prints what it found beside the truth, and draws each frame.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "commands.hpp"
+#include "emit/fit/fit_model.hpp"
+#include "emit/io/atomic_file.hpp"
+#include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
-#include "emit/mesh/mesh_quality.hpp"
+#include "emit/mesh/element_to_node.hpp"
+#include "emit/reconstruct/calibration.hpp"
+#include "emit/reconstruct/operator_cache.hpp"
 #include "emit/render/field_image.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/press_scripts.hpp"
 #include "emit/twin/twin.hpp"
 
 namespace emit::cli {
 
 namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The contact law as the fit sees it, from single presses of known pressure (emit calibrate).
+ContactLaw calibrate_fit(Reconstructor& reconstructor, const std::vector<Frame>& frames, const PressSequence& truth,
+                         const ContactLaw& nominal) {
+  std::vector<double> pressure, resistance;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    reconstructor.process(frames[f]);
+    if (reconstructor.fit_result()->contacts.empty()) continue;
+    pressure.push_back(truth[f][0].pressure_N_per_mm2());
+    resistance.push_back(1 / reconstructor.fit_result()->contacts[0].disc.conductance_S_per_mm2);
+  }
+  const ContactLawFit law = fit_contact_law(pressure, resistance);
+  return {law.alpha, law.gamma, nominal.min_pressure_N_per_mm2};
+}
+
+/// Each true press beside the fitted contact nearest to it and the paper method's strongest
+/// contact; fitted contacts near no press are printed as false ones.
+void print_found(std::size_t f, const std::vector<Press>& presses, const std::vector<Contact>& fitted,
+                 const std::vector<Contact>& paper) {
+  std::vector<bool> used(fitted.size(), false);
+  for (std::size_t i = 0; i < presses.size(); ++i) {
+    const Press& p = presses[i];
+    std::printf("  %5zu  %5.1f %5.1f %6.3f", f, p.x_mm, p.y_mm, p.pressure_N_per_mm2());
+    std::size_t nearest = fitted.size();
+    for (std::size_t k = 0; k < fitted.size(); ++k)
+      if (!used[k] && (nearest == fitted.size() || std::hypot(fitted[k].x_mm - p.x_mm, fitted[k].y_mm - p.y_mm) <
+                                                       std::hypot(fitted[nearest].x_mm - p.x_mm, fitted[nearest].y_mm - p.y_mm)))
+        nearest = k;
+    if (nearest < fitted.size()) {
+      used[nearest] = true;
+      std::printf("   %6.2f %6.2f %6.3f", fitted[nearest].x_mm, fitted[nearest].y_mm, fitted[nearest].pressure_N_per_mm2);
+    } else {
+      std::printf("   %20s", "(not found)");
+    }
+    if (i == 0 && !paper.empty()) std::printf("   %6.1f %6.1f", paper[0].x_mm, paper[0].y_mm);
+    std::printf("\n");
+  }
+  for (std::size_t k = 0; k < fitted.size(); ++k)
+    if (!used[k])
+      std::printf("  %5zu  %19s   %6.2f %6.2f %6.3f (a false contact)\n", f, "", fitted[k].x_mm, fitted[k].y_mm,
+                  fitted[k].pressure_N_per_mm2);
+}
 
 void run_demo(const std::string& out_dir) {
   const Sensor sensor = default_sensor();
@@ -25,40 +80,71 @@ void run_demo(const std::string& out_dir) {
       {{45, 15, 3, 2}},                     // a small, light press
   };
   std::filesystem::create_directories(out_dir);
-  std::printf("emit demo: the digital twin of %s (%d electrodes, %.1f V drive, %.0f ohm/sq)\n", sensor.name.c_str(),
-              sensor.electrode_count(), sensor.drive_voltage_V, sensor.sheet_resistance_ohm_per_sq);
-  const auto start = std::chrono::steady_clock::now();
+  std::printf("emit demo: %s (%d electrodes, %.1f V drive, %.0f ohm/sq); its digital twin stands in for the sheet\n",
+              sensor.name.c_str(), sensor.electrode_count(), sensor.drive_voltage_V, sensor.sheet_resistance_ohm_per_sq);
+  auto start = std::chrono::steady_clock::now();
   Twin twin(sensor);
-  const MeshQuality q = measure_mesh_quality(twin.mesh());
-  std::printf("twin mesh: %lld triangles, %lld nodes, min angle %.1f deg (meshed and assembled in %.2f s)\n",
-              static_cast<long long>(q.triangle_count), static_cast<long long>(q.node_count), q.min_angle_deg,
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  const Frame reference = twin.frame({});
+  PressStyle style;  // 5 mm indenter, 2 to 39 N: 0.025 to 0.5 N/mm², the paper's range
+  style.min_force_N = 2, style.max_force_N = 39, style.seed = 11;
+  const PressSequence calibration_presses = random_script(sensor, 20, style);
+  std::vector<Frame> calibration_frames, frames;
+  for (const auto& presses : calibration_presses) calibration_frames.push_back(twin.frame(presses));
+  for (const auto& presses : sequence) frames.push_back(twin.frame(presses));
+  std::printf("twin: a reference frame, 20 presses of known force, %zu frames to reconstruct (%.1f s)\n",
+              sequence.size(), seconds_since(start));
 
-  std::vector<Frame> frames;
-  for (std::size_t f = 0; f < sequence.size(); ++f) {
-    frames.push_back(twin.frame(sequence[f]));
+  start = std::chrono::steady_clock::now();
+  const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
+  const ReconstructionModel model = build_reconstruction_model(sensor, method_options("paper"), default_cache_dir(), {}, say);
+  const FitModel fit_model = build_fit_model(sensor, say);
+  std::printf("models: paper operator (%lld triangles), contact fitting (%lld nodes) in %.1f s\n",
+              static_cast<long long>(model.mesh.triangle_count()), static_cast<long long>(fit_model.mesh.node_count()),
+              seconds_since(start));
+
+  Reconstructor paper(model, PressureCalibration::uncalibrated(sensor));
+  paper.set_reference(reference);
+  ContactFitter uncalibrated(sensor, fit_model.mesh, fit_model.green, model.measurements);
+  Reconstructor fitting(model, PressureCalibration::uncalibrated(sensor));
+  fitting.use_fitter(&uncalibrated);
+  fitting.set_reference(reference);
+  Sensor calibrated = sensor;
+  calibrated.contact = calibrate_fit(fitting, calibration_frames, calibration_presses, sensor.contact);
+  std::printf("calibrated on the 20 presses: the contact law as the fit sees it, alpha = %.4g ohm mm2, gamma = %.3f\n",
+              calibrated.contact.alpha_ohm_mm2, calibrated.contact.gamma);
+  ContactFitter fitter(calibrated, fit_model.mesh, fit_model.green, model.measurements);
+  fitting.use_fitter(&fitter);
+
+  std::printf("\n  frame   true x     y  P N/mm2   fit x      y  P N/mm2   paper x    y\n");
+  AtomicFile contacts_file(out_dir + "/contacts.jsonl");
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const std::vector<Contact> found = fitting.process(frames[f]);
+    const std::vector<Contact> linear = paper.process(frames[f]);
+    print_found(f, sequence[f], found, linear);
+    write_contacts_line(contacts_file.stream(), static_cast<long>(f), found);
     std::vector<Circle> outlines;
     for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
     FieldImageOptions image;
-    image.title = "frame " + std::to_string(f) + ": potential, electrode 0 grounded";
-    write_png(render_field(twin.mesh(), twin.potentials(sequence[f]).col(0), outlines, image),
+    image.title = "frame " + std::to_string(f) + ": pressure by contact fitting; circles: the true presses";
+    image.unit = "N/mm2";
+    image.min_value = 0;
+    write_png(render_field(fitting.mesh(), element_to_node(fitting.mesh(), fitting.pressure()), outlines, image),
               out_dir + "/frame_" + std::to_string(f) + ".png");
   }
+  contacts_file.commit();
   write_frames_csv(out_dir + "/frames.csv", frames);
   write_presses_csv(out_dir + "/presses.csv", sequence);
-  print_frames_summary(frames, sequence);
-  std::printf("electrode potentials (V) for the centre press, electrode 0 grounded:\n ");
-  for (Index m = 0; m < frames[0].cols(); ++m) std::printf(" %.4f", frames[0](0, m));
-  std::printf("\nwrote %s/frames.csv, %s/presses.csv and %zu images %s/frame_*.png\n", out_dir.c_str(),
-              out_dir.c_str(), sequence.size(), out_dir.c_str());
+  std::printf("\nwrote %s/frames.csv, presses.csv, contacts.jsonl and %zu pressure maps frame_*.png\n", out_dir.c_str(),
+              sequence.size());
+  std::printf("next: emit eval (accuracy against the paper), emit reconstruct --help (your own frames)\n");
 }
 
 }  // namespace
 
 void add_demo_command(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("emit-demo");
-  CLI::App* cmd = app.add_subcommand("demo", "Simulate a few presses on the built-in 60 mm sensor and draw them");
-  cmd->add_option("--out", *out_dir, "Folder for the frames, presses and images")->capture_default_str();
+  CLI::App* cmd = app.add_subcommand("demo", "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw them");
+  cmd->add_option("--out", *out_dir, "Folder for the frames, presses, contacts and images")->capture_default_str();
   cmd->callback([out_dir] { run_demo(*out_dir); });
 }
 

@@ -102,6 +102,7 @@ class FrameMisfit : public ceres::CostFunction {
 ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
                              const MeasurementSet& measurements, FitOptions options)
     : sensor_(sensor),
+      mesh_(mesh),
       measurements_(measurements),
       options_(options),
       integrator_(mesh, options.edge_mm > 0 ? options.edge_mm : sensor.mesh.element_size_mm / 4),
@@ -140,6 +141,16 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
   seed.conductance_S_per_mm2 =
       seed.conductance_S_per_mm2 > 0 ? std::clamp(seed.conductance_S_per_mm2, g * std::exp(-13), g * std::exp(13)) : g;
   return seed;
+}
+
+/// A contact added to a fit is a press only if every disc stays on the sheet (one pushed off it is
+/// the optimiser using it as a fudge) and the new one is not beside another: two small discs side
+/// by side are one large press, modelled by two (the held radius is smaller than most presses).
+bool ContactFitter::plausible_addition(const std::vector<Disc>& discs) const {
+  const Disc& added = discs.back();
+  for (std::size_t i = 0; i + 1 < discs.size(); ++i)
+    if (std::hypot(discs[i].x_mm - added.x_mm, discs[i].y_mm - added.y_mm) < 3 * options_.prior_radius_mm) return false;
+  return std::all_of(discs.begin(), discs.end(), [&](const Disc& d) { return mesh_.contains_xy(Vector2(d.x_mm, d.y_mm)); });
 }
 
 /// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
@@ -214,8 +225,10 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   std::vector<Disc> discs{clamp_seed(seeds[0])};
   double misfit_sq = fit_discs(dV, discs, false);
   std::size_t next_seed = 1;
+  bool residual_tried = false;
   Vector residual;
-  // Look for another contact only while the misfit is clearly above the readings' noise.
+  // Look for another contact only while the misfit is clearly above the readings' noise. Try the
+  // remaining seeds in turn, then one at the residual's peak.
   const auto unexplained = [&] { return misfit_sq > 4 * noise_V_ * noise_V_ * measurements_.size(); };
   while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained()) {
     Disc seed;
@@ -223,14 +236,17 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
       seed = seeds[next_seed++];
     } else {
       this->misfit(discs, dV, residual);
-      if (!residual_peak || !residual_peak(residual, seed)) break;
+      if (residual_tried || !residual_peak || !residual_peak(residual, seed)) break;
+      residual_tried = true;
     }
     std::vector<Disc> more = discs;
     more.push_back(clamp_seed(seed));
     const double more_sq = fit_discs(dV, more, false);
-    if (more_sq > (1 - options_.new_contact_gain) * misfit_sq) break;
-    discs = std::move(more);
-    misfit_sq = more_sq;
+    if (plausible_addition(more) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {
+      discs = std::move(more);
+      misfit_sq = more_sq;
+      residual_tried = false;
+    }
   }
   misfit_sq = fit_discs(dV, discs, true);  // converged already: this is for the covariance
   result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());

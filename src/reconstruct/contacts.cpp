@@ -194,4 +194,23 @@ const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>&
   return contacts_;
 }
 
+const std::vector<Vector2>& ContactFinder::peaks(const Vector& image, double min_value, double min_separation_mm) {
+  peak_elements_.clear();
+  for (int t = 0; t < static_cast<int>(centroids_mm_.size()); ++t) {
+    if (!(image[t] >= min_value)) continue;
+    bool highest = true;
+    for (int k = neighbour_offsets_[t]; k < neighbour_offsets_[t + 1] && highest; ++k)
+      highest = image[neighbours_[k]] <= image[t];
+    if (highest) peak_elements_.push_back(t);
+  }
+  std::sort(peak_elements_.begin(), peak_elements_.end(), [&](int a, int b) { return image[a] > image[b]; });
+  peaks_.clear();
+  for (int t : peak_elements_) {
+    bool apart = true;
+    for (const Vector2& p : peaks_) apart = apart && (p - centroids_mm_[t]).norm() >= min_separation_mm;
+    if (apart) peaks_.push_back(centroids_mm_[t]);
+  }
+  return peaks_;
+}
+
 }  // namespace emit

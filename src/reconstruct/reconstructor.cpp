@@ -49,8 +49,12 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
 }
 
 const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contact>& linear) {
+  // Seeds: the linear image's peaks above a quarter of its maximum, 8 mm apart (two presses
+  // 12 mm apart still give two peaks); the thresholded regions' centroids if it has none.
   seeds_.clear();
-  for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  for (const Vector2& p : finder_.peaks(dphi_, 0.25 * dphi_.maxCoeff(), 8.0)) seeds_.push_back({p.x(), p.y(), 0, 0});
+  if (seeds_.empty())
+    for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
   const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
     residual_image_.noalias() = model_.op * (-misfit);

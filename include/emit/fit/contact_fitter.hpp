@@ -78,8 +78,10 @@ class ContactFitter {
   double fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance);
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
+  bool plausible_addition(const std::vector<Disc>& discs) const;
 
   const Sensor& sensor_;
+  const Mesh& mesh_;
   const MeasurementSet& measurements_;
   FitOptions options_;
   DiscContactIntegrator integrator_;

@@ -38,6 +38,12 @@ class ContactFinder {
   const std::vector<Contact>& find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
                                    const Vector& weight, double min_area_mm2 = 0.0);
 
+  /// The image's peaks: elements whose value is at least min_value and no smaller than any edge
+  /// neighbour's, strongest first, each at least min_separation_mm from every stronger one kept.
+  /// Where a 50 % threshold merges two presses into one region, the image still has two peaks.
+  /// \return the peaks' centroids, valid until the next call.
+  const std::vector<Vector2>& peaks(const Vector& image, double min_value, double min_separation_mm);
+
   Index element_count() const { return static_cast<Index>(areas_mm2_.size()); }
 
  private:
@@ -46,6 +52,8 @@ class ContactFinder {
   std::vector<Vector2> centroids_mm_;
   std::vector<int> label_, stack_;  ///< scratch
   std::vector<Contact> contacts_;   ///< output, capacity #F
+  std::vector<int> peak_elements_;
+  std::vector<Vector2> peaks_;
 };
 
 }  // namespace emit

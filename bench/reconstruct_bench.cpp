@@ -1,0 +1,86 @@
+// The online path per frame on the default sensor: the paper method (one matrix-vector product,
+// threshold, contacts) and contact fitting (seeded by it); and the fit's inner step, a predicted
+// frame, by Woodbury on the contact's patch against the sparse forward model on the same mesh
+// (the baseline it replaces), in the same run.
+#include <benchmark/benchmark.h>
+
+#include "emit/fem/forward_model.hpp"
+#include "emit/fit/fit_model.hpp"
+#include "emit/fit/frame_predictor.hpp"
+#include "emit/reconstruct/reconstruction_model.hpp"
+#include "emit/reconstruct/reconstructor.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/press_contact.hpp"
+#include "emit/twin/twin.hpp"
+
+namespace {
+
+using namespace emit;
+
+struct Bench {
+  Sensor sensor = default_sensor();
+  ReconstructionModel model = build_reconstruction_model(sensor, method_options("paper"), "");
+  FitModel fit_model = build_fit_model(sensor);
+  Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 3; return o; }()};
+  Frame reference = twin.frame({});
+  std::vector<Frame> frames;  // single presses across the sheet
+  Bench() {
+    for (double x : {12.0, 30.0, 47.0})
+      for (double y : {14.0, 33.0, 50.0}) frames.push_back(twin.frame({{x, y, 5, 8}}));
+  }
+};
+
+Bench& bench() {
+  static Bench b;
+  return b;
+}
+
+void BM_PaperFrame(benchmark::State& state) {
+  Bench& b = bench();
+  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor));
+  reconstructor.set_reference(b.reference);
+  std::size_t f = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+void BM_FitFrame(benchmark::State& state) {
+  Bench& b = bench();
+  ContactFitter fitter(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
+  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor));
+  reconstructor.use_fitter(&fitter);
+  reconstructor.set_reference(b.reference);
+  std::size_t f = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+/// One predicted frame for a disc of the fit's size (2.4 mm) on the fit's mesh.
+ContactLoad fit_sized_contact() {
+  Bench& b = bench();
+  return press_contact_load(b.fit_model.mesh, {{21, 37, 2.4, 2}}, b.sensor.contact);
+}
+
+void BM_PredictWoodbury(benchmark::State& state) {
+  Bench& b = bench();
+  FramePredictor predictor(b.fit_model.mesh, b.fit_model.green);
+  const ContactLoad load = fit_sized_contact();
+  Frame frame;
+  for (auto _ : state) {
+    predictor.predict(load.triangles, load.local_S, b.sensor.drive_voltage_V, frame);
+    benchmark::DoNotOptimize(frame.data());
+  }
+  state.counters["patch_triangles"] = static_cast<double>(load.triangles.size());
+}
+
+void BM_PredictSparse(benchmark::State& state) {
+  Bench& b = bench();
+  const ForwardModel model(b.fit_model.mesh, b.sensor.sheet_resistance_ohm_per_sq);
+  const ContactLoad load = fit_sized_contact();
+  for (auto _ : state) benchmark::DoNotOptimize(model.solve_frame(load, b.sensor.drive_voltage_V).data());
+}
+
+BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PredictWoodbury)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PredictSparse)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
