@@ -153,6 +153,31 @@ bool ContactFitter::plausible_addition(const std::vector<Disc>& discs) const {
   return std::all_of(discs.begin(), discs.end(), [&](const Disc& d) { return mesh_.contains_xy(Vector2(d.x_mm, d.y_mm)); });
 }
 
+/// 1σ of each parameter from the Gauss–Newton covariance (JᵀJ)⁻¹ at the solution (residuals are
+/// in units of σ), scaled up by the misfit per degree of freedom where the model misfits more than
+/// the noise. Computed here from the analytic Jacobian rather than by ceres::Covariance, whose
+/// Eigen temporaries cross the library boundary (and an ASan build's allocator with them).
+void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2) {
+  const int k = static_cast<int>(parameters.size()), M = measurements_.size();
+  const FrameMisfit cost(*this, dV, k);
+  Vector residuals(M);
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, disc_parameters, Eigen::RowMajor>> blocks(k, decltype(blocks)::value_type(M, disc_parameters));
+  std::vector<const double*> values;
+  std::vector<double*> jacobians;
+  for (int i = 0; i < k; ++i) values.push_back(parameters[i].data()), jacobians.push_back(blocks[i].data());
+  if (!cost.Evaluate(values.data(), residuals.data(), jacobians.data())) return;
+  std::vector<int> free;  // the radius is held unless fitted
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < disc_parameters; ++j)
+      if (j != 2 || options_.fit_radius) free.push_back(disc_parameters * i + j);
+  Matrix J(M, static_cast<Index>(free.size()));
+  for (std::size_t c = 0; c < free.size(); ++c) J.col(static_cast<Index>(c)) = blocks[free[c] / disc_parameters].col(free[c] % disc_parameters);
+  const Matrix covariance = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse();
+  const double scale = std::max(1.0, chi2 / std::max<double>(1, M - static_cast<double>(free.size())));
+  for (std::size_t c = 0; c < free.size(); ++c)
+    covariance_std_[static_cast<std::size_t>(free[c])] = std::sqrt(std::max(0.0, covariance(static_cast<Index>(c), static_cast<Index>(c)) * scale));
+}
+
 /// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
 double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance) {
   const int k = static_cast<int>(discs.size());
@@ -195,25 +220,7 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool
 
   for (int i = 0; i < k; ++i) discs[i] = to_disc(parameters[i].data());
   covariance_std_.assign(static_cast<std::size_t>(disc_parameters * k), 0.0);
-  if (covariance) {
-    ceres::Covariance::Options covariance_options;
-    covariance_options.algorithm_type = ceres::DENSE_SVD;
-    covariance_options.null_space_rank = -1;
-    ceres::Covariance estimate(covariance_options);
-    std::vector<std::pair<const double*, const double*>> pairs;
-    for (double* p : blocks) pairs.emplace_back(p, p);
-    if (estimate.Compute(pairs, &problem)) {
-      // Residuals are in units of σ; where the model's misfit exceeds the noise, scale up by it.
-      const double dof = std::max(1, measurements_.size() - disc_parameters * k);
-      const double scale = std::max(1.0, 2 * summary.final_cost / dof);
-      for (int i = 0; i < k; ++i) {
-        double c[disc_parameters * disc_parameters];
-        estimate.GetCovarianceBlock(blocks[i], blocks[i], c);
-        for (int j = 0; j < disc_parameters; ++j)
-          covariance_std_[static_cast<std::size_t>(disc_parameters * i + j)] = std::sqrt(std::max(0.0, c[j * disc_parameters + j] * scale));
-      }
-    }
-  }
+  if (covariance) parameter_std(dV, parameters, 2 * summary.final_cost);
   return 2 * summary.final_cost * noise_V_ * noise_V_;
 }
 

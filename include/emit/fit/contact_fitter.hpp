@@ -8,6 +8,7 @@
 ///
 /// Multi-touch: start from the strongest seed; add a contact, seeded at the next seed or at the
 /// peak of the residual's linear image, while doing so cuts the misfit by a clear fraction.
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -79,6 +80,7 @@ class ContactFitter {
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
   bool plausible_addition(const std::vector<Disc>& discs) const;
+  void parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2);
 
   const Sensor& sensor_;
   const Mesh& mesh_;
