@@ -179,7 +179,7 @@ void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<doubl
 }
 
 /// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
-double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance) {
+double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   const int k = static_cast<int>(discs.size());
   std::vector<std::array<double, disc_parameters>> parameters;
   for (const Disc& d : discs) parameters.push_back(to_parameters(d));
@@ -219,8 +219,6 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs, bool
   result_.evaluations += summary.num_residual_evaluations;
 
   for (int i = 0; i < k; ++i) discs[i] = to_disc(parameters[i].data());
-  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * k), 0.0);
-  if (covariance) parameter_std(dV, parameters, 2 * summary.final_cost);
   return 2 * summary.final_cost * noise_V_ * noise_V_;
 }
 
@@ -230,7 +228,7 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   result_ = {};
   if (seeds.empty()) return result_;
   std::vector<Disc> discs{clamp_seed(seeds[0])};
-  double misfit_sq = fit_discs(dV, discs, false);
+  double misfit_sq = fit_discs(dV, discs);
   std::size_t next_seed = 1;
   bool residual_tried = false;
   Vector residual;
@@ -248,14 +246,17 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     }
     std::vector<Disc> more = discs;
     more.push_back(clamp_seed(seed));
-    const double more_sq = fit_discs(dV, more, false);
+    const double more_sq = fit_discs(dV, more);
     if (plausible_addition(more) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {
       discs = std::move(more);
       misfit_sq = more_sq;
       residual_tried = false;
     }
   }
-  misfit_sq = fit_discs(dV, discs, true);  // converged already: this is for the covariance
+  std::vector<std::array<double, disc_parameters>> parameters;
+  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
+  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * discs.size()), 0.0);
+  parameter_std(dV, parameters, misfit_sq / (noise_V_ * noise_V_));
   result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
   for (std::size_t i = 0; i < discs.size(); ++i) {
     const double* s = covariance_std_.data() + disc_parameters * i;

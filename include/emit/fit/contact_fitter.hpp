@@ -76,7 +76,7 @@ class ContactFitter {
 
  private:
   friend class FrameMisfit;
-  double fit_discs(const Vector& dV, std::vector<Disc>& discs, bool covariance);
+  double fit_discs(const Vector& dV, std::vector<Disc>& discs);
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
   bool plausible_addition(const std::vector<Disc>& discs) const;
