@@ -125,7 +125,7 @@ void run_demo(const std::string& out_dir) {
     std::vector<Circle> outlines;
     for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
     FieldImageOptions image;
-    image.title = "frame " + std::to_string(f) + ": pressure by contact fitting; circles: the true presses";
+    image.title = "frame " + std::to_string(f) + ": pressure by contact fitting (circles: the true presses)";
     image.unit = "N/mm2";
     image.min_value = 0;
     write_png(render_field(fitting.mesh(), element_to_node(fitting.mesh(), fitting.pressure()), outlines, image),
