@@ -50,7 +50,13 @@ void BM_FitFrame(benchmark::State& state) {
   reconstructor.use_fitter(&fitter);
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+  double evaluations = 0, contacts = 0;
+  for (auto _ : state) {
+    contacts += static_cast<double>(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+    evaluations += reconstructor.fit_result()->evaluations;
+  }
+  state.counters["evaluations"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+  state.counters["contacts"] = benchmark::Counter(contacts, benchmark::Counter::kAvgIterations);
 }
 
 /// One predicted frame for a disc of the fit's size (2.4 mm) on the fit's mesh.

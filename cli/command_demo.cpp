@@ -121,7 +121,7 @@ void run_demo(const std::string& out_dir) {
     const std::vector<Contact> found = fitting.process(frames[f]);
     const std::vector<Contact> linear = paper.process(frames[f]);
     print_found(f, sequence[f], found, linear);
-    write_contacts_line(contacts_file.stream(), static_cast<long>(f), found);
+    write_contacts_line(contacts_file.stream(), static_cast<long>(f), found, 1e3 * fitting.fit_result()->rms_misfit_V);
     std::vector<Circle> outlines;
     for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
     FieldImageOptions image;

@@ -94,7 +94,8 @@ void run_reconstruct(const ReconstructArgs& args) {
   const auto online_start = std::chrono::steady_clock::now();
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const auto& contacts = reconstructor.process(frames[f]);
-    write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts);
+    const FitResult* fitted = reconstructor.fit_result();
+    write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts, fitted ? 1e3 * fitted->rms_misfit_V : -1);
     if (!args.images_dir.empty())
       write_pressure_image(reconstructor, contacts, static_cast<long>(f), args.method,
                            args.images_dir + "/frame_" + std::to_string(f) + ".png");

@@ -95,6 +95,14 @@ TEST(Cli, CalibrateThenReconstruct) {
   // Contact fitting: issue 4's targets, p95 0.6 mm and a pressure error of 0.02 N/mm².
   EXPECT_LE(std::hypot(contacts[0].x_mm - 21, contacts[0].y_mm - 37), 0.6);
   EXPECT_NEAR(contacts[0].pressure_N_per_mm2, 12 / (std::numbers::pi * 25), 0.02);
+  // With its uncertainty: a 1σ between a hundredth and a few tenths of a millimetre (the fit's
+  // errors on the twin are ~0.1 mm), and the frame's misfit near the 1 mV noise of the readings.
+  EXPECT_GT(contacts[0].x_std_mm, 0.005);
+  EXPECT_LT(contacts[0].x_std_mm, 0.3);
+  const std::string line = test::read_text(d + "/c.jsonl");
+  const auto misfit_at = line.find("\"fit_misfit_mV\": ");
+  ASSERT_NE(misfit_at, std::string::npos) << line;
+  EXPECT_LT(std::stod(line.substr(misfit_at + 17)), 3.0) << line;
   EXPECT_GT(read_png(d + "/img/frame_0.png").width(), 100);
   // A second run loads the (seeding) operator from the cache.
   r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" + cache);

@@ -359,6 +359,27 @@ TEST(ContactsJsonl, KeysInTheDocumentedOrder) {
   }
 }
 
+TEST(ContactsJsonl, UncertaintiesAndTheFitsMisfitRoundTripWhenThere) {
+  std::vector<Contact> written = two_contacts();
+  written[0].x_std_mm = 0.031, written[0].y_std_mm = 0.027, written[0].pressure_std_N_per_mm2 = 0.0042;
+  std::ostringstream out;
+  write_contacts_line(out, 5, written, 1.23);
+  const std::string line = out.str();
+  EXPECT_NE(line.find("\"fit_misfit_mV\": 1.23"), std::string::npos) << line;
+  // Only the contact that has them carries the uncertainty keys.
+  EXPECT_EQ(line.find("x_std_mm"), line.rfind("x_std_mm")) << line;
+  const std::vector<Contact> read = parse_contacts_line(line);
+  ASSERT_EQ(read.size(), 2u);
+  expect_near_printed(read[0].x_std_mm, 0.031, "x_std_mm");
+  expect_near_printed(read[0].y_std_mm, 0.027, "y_std_mm");
+  expect_near_printed(read[0].pressure_std_N_per_mm2, 0.0042, "pressure_std");
+  EXPECT_EQ(read[1].x_std_mm, 0.0);
+  std::ostringstream without;
+  write_contacts_line(without, 5, two_contacts());
+  EXPECT_EQ(without.str().find("std"), std::string::npos) << "the linear methods estimate no uncertainty";
+  EXPECT_EQ(without.str().find("fit_misfit_mV"), std::string::npos);
+}
+
 TEST(ContactsJsonl, EmptyContactsList) {
   std::ostringstream out;
   write_contacts_line(out, 3, {});

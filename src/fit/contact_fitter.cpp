@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <ceres/ceres.h>
 
@@ -234,8 +235,10 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   Vector residual;
   // Look for another contact only while the misfit is clearly above the readings' noise. Try the
   // remaining seeds in turn, then one at the residual's peak.
-  const auto unexplained = [&] { return misfit_sq > 4 * noise_V_ * noise_V_ * measurements_.size(); };
-  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained()) {
+  // A strong single press leaves ~2σ (the held radius); a missed second press, tens of σ.
+  const auto unexplained = [&] { return misfit_sq > 9 * noise_V_ * noise_V_ * measurements_.size(); };
+  int failed = 0;  // each try costs a fit: give up after a few
+  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained() && failed < 3) {
     Disc seed;
     if (next_seed < seeds.size()) {
       seed = seeds[next_seed++];
@@ -246,11 +249,14 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     }
     std::vector<Disc> more = discs;
     more.push_back(clamp_seed(seed));
+    if (!plausible_addition(more)) continue;  // a seed beside a contact: not worth a fit
     const double more_sq = fit_discs(dV, more);
     if (plausible_addition(more) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {
       discs = std::move(more);
       misfit_sq = more_sq;
       residual_tried = false;
+    } else {
+      ++failed;
     }
   }
   std::vector<std::array<double, disc_parameters>> parameters;
@@ -261,8 +267,9 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   for (std::size_t i = 0; i < discs.size(); ++i) {
     const double* s = covariance_std_.data() + disc_parameters * i;
     // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
-    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3],
-                                sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2)});
+    const double pressure = sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
+    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3], pressure,
+                                pressure * s[3] / std::abs(sensor_.contact.gamma)});
   }
   std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
     return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >

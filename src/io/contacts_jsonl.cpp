@@ -17,15 +17,21 @@ namespace {
 struct Field {
   const char* key;
   double Contact::*value;
+  bool optional;  ///< written only when some of the optional fields is nonzero; may be absent
 };
 constexpr Field fields[] = {
-    {"x_mm", &Contact::x_mm},
-    {"y_mm", &Contact::y_mm},
-    {"area_mm2", &Contact::area_mm2},
-    {"pressure_N_per_mm2", &Contact::pressure_N_per_mm2},
-    {"peak_pressure_N_per_mm2", &Contact::peak_pressure_N_per_mm2},
-    {"force_N", &Contact::force_N},
+    {"x_mm", &Contact::x_mm, false},
+    {"y_mm", &Contact::y_mm, false},
+    {"area_mm2", &Contact::area_mm2, false},
+    {"pressure_N_per_mm2", &Contact::pressure_N_per_mm2, false},
+    {"peak_pressure_N_per_mm2", &Contact::peak_pressure_N_per_mm2, false},
+    {"force_N", &Contact::force_N, false},
+    {"x_std_mm", &Contact::x_std_mm, true},
+    {"y_std_mm", &Contact::y_std_mm, true},
+    {"pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2, true},
 };
+
+bool has_uncertainty(const Contact& c) { return c.x_std_mm > 0 || c.y_std_mm > 0 || c.pressure_std_N_per_mm2 > 0; }
 
 /// JSON has no NaN or infinity; refuse before writing anything, so no half line is left behind.
 void check_finite(long frame, const std::vector<Contact>& contacts) {
@@ -41,7 +47,9 @@ void write_contact(std::ostream& out, const Contact& contact) {
   char text[96];  // the longest key (23) + quotes and separators + a %.6g number (at most 13) fit
   out << '{';
   const char* separator = "";
+  const bool uncertain = has_uncertainty(contact);
   for (const Field& field : fields) {
+    if (field.optional && !uncertain) continue;
     std::snprintf(text, sizeof text, "%s\"%s\": %.6g", separator, field.key, contact.*field.value);
     out << text;
     separator = ", ";
@@ -75,6 +83,7 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
   if (!object.is_object()) throw InvalidInput(where + " is not an object");
   Contact contact;
   for (const Field& field : fields) {
+    if (field.optional && !object.contains(field.key)) continue;
     const nlohmann::json& value = member(object, field.key, where);
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       throw InvalidInput(where + ": \"" + field.key + "\" is not a finite number");
@@ -85,8 +94,10 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
 
 }  // namespace
 
-void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts) {
+void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts, double fit_misfit_mV) {
   check_finite(frame, contacts);
+  if (!std::isfinite(fit_misfit_mV))
+    throw InvalidInput("contacts of frame " + std::to_string(frame) + ": the fit's misfit is not finite");
   char head[64];
   std::snprintf(head, sizeof head, "{\"frame\": %ld, \"contacts\": [", frame);
   out << head;
@@ -94,7 +105,12 @@ void write_contacts_line(std::ostream& out, long frame, const std::vector<Contac
     if (k > 0) out << ", ";
     write_contact(out, contacts[k]);
   }
-  out << "]}\n";
+  out << ']';
+  if (fit_misfit_mV >= 0) {
+    std::snprintf(head, sizeof head, ", \"fit_misfit_mV\": %.4g", fit_misfit_mV);
+    out << head;
+  }
+  out << "}\n";
 }
 
 std::vector<Contact> parse_contacts_line(const std::string& line, long* frame) {

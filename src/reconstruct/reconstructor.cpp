@@ -49,12 +49,17 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
 }
 
 const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contact>& linear) {
-  // Seeds: the linear image's peaks above a quarter of its maximum, 8 mm apart (two presses
-  // 12 mm apart still give two peaks); the thresholded regions' centroids if it has none.
+  // Seeds: the thresholded regions' centroids (the paper's estimate, strongest first), then the
+  // image's other peaks above a quarter of its maximum (where the threshold merged two presses
+  // into one region, the image still has two peaks). Raw peaks alone make poor first seeds: the
+  // linear image's maximum often sits by an electrode, far from the press.
   seeds_.clear();
-  for (const Vector2& p : finder_.peaks(dphi_, 0.25 * dphi_.maxCoeff(), 8.0)) seeds_.push_back({p.x(), p.y(), 0, 0});
-  if (seeds_.empty())
-    for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  for (const Vector2& p : finder_.peaks(dphi_, 0.25 * dphi_.maxCoeff(), 8.0)) {
+    bool apart = true;
+    for (const Contact& c : linear) apart = apart && std::hypot(p.x() - c.x_mm, p.y() - c.y_mm) >= 8.0;
+    if (apart) seeds_.push_back({p.x(), p.y(), 0, 0});
+  }
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
   const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
     residual_image_.noalias() = model_.op * (-misfit);
@@ -73,6 +78,8 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     c.area_mm2 = std::numbers::pi * f.disc.radius_mm * f.disc.radius_mm;
     c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;
     c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
+    c.x_std_mm = f.x_std_mm, c.y_std_mm = f.y_std_mm;
+    c.pressure_std_N_per_mm2 = f.pressure_std_N_per_mm2;
     fitted_.push_back(c);
     for (Index k = 0; k < pressure_.size(); ++k)
       if ((model_.mesh.triangle_centroid_mm(k).head<2>() - Vector2(c.x_mm, c.y_mm)).norm() <= f.disc.radius_mm)

@@ -50,6 +50,7 @@ struct FittedContact {
   double radius_std_mm = 0;
   double conductance_relative_std = 0;
   double pressure_N_per_mm2 = 0;  ///< from g by the sensor's contact law (paper eq. 2)
+  double pressure_std_N_per_mm2 = 0;  ///< P ∝ g^(−1/γ): σ_P = P σ_log g / |γ|
 };
 
 struct FitResult {

@@ -2,7 +2,11 @@
 /// \file contacts_jsonl.hpp
 /// Contacts out as JSON Lines (DESIGN §5), one object per frame:
 /// {"frame": i, "contacts": [{"x_mm":…, "y_mm":…, "area_mm2":…, "pressure_N_per_mm2":…,
-///   "peak_pressure_N_per_mm2":…, "force_N":…}]}
+///   "peak_pressure_N_per_mm2":…, "force_N":…[, "x_std_mm":…, "y_std_mm":…,
+///   "pressure_std_N_per_mm2":…]}][, "fit_misfit_mV":…]}
+/// The uncertainties (1σ) and the frame's fit misfit (RMS of predicted − measured, to compare with
+/// the ADC's noise) come with contact fitting; a confident contact has a small σ in a frame whose
+/// misfit is near the noise.
 #include <ostream>
 #include <string>
 #include <vector>
@@ -12,7 +16,9 @@
 namespace emit {
 
 /// Append one frame's line. Numbers are written with enough digits (e.g. %.6g), finite only.
-void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts);
+/// `fit_misfit_mV` < 0: not written.
+void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts,
+                         double fit_misfit_mV = -1);
 
 /// Parse one line back (for tests and tools). \throw InvalidInput naming what is wrong.
 std::vector<Contact> parse_contacts_line(const std::string& line, long* frame = nullptr);

@@ -21,6 +21,8 @@ struct Contact {
   double pressure_N_per_mm2 = 0;         ///< area-weighted mean pressure
   double peak_pressure_N_per_mm2 = 0;    ///< largest element pressure
   double force_N = 0;                    ///< Σ P_k A_k
+  /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
+  double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;
   int element_count = 0;
 };
 
