@@ -33,6 +33,7 @@ struct EvalArgs {
   std::uint64_t seed = 1;
   bool quick = false, sweep = false, mismatches = true;
   std::string plots_dir = "emit-eval";
+  std::string sheet;  ///< only the sheets whose name contains this
 };
 
 struct EvalCase {
@@ -41,6 +42,7 @@ struct EvalCase {
   double spacing_mm, jitter_mm, radius_mm;
   const char* paper_position;
   bool pressure_and_two_press;
+  int lambdas_per_decade = 8;  ///< of the λ sweep (the 32-electrode sheet's operators cost 10× more)
 };
 
 std::vector<EvalCase> eval_cases() {
@@ -49,12 +51,14 @@ std::vector<EvalCase> eval_cases() {
       {"60 x 60 mm sheet", default_sensor(), 6.0, 2.0, 5.0, "paper: 3.49 +/- 1.56 mm", true},
       {"30 x 30 mm sheet", load_sensor(dir + "/square30.json"), 3.0, 1.0, 2.5, "paper: 1.74 mm", true},
       {"circle, r = 40 mm", load_sensor(dir + "/circle40.json"), 8.0, 2.0, 5.0, "paper: -", false},
+      {"120 x 120 mm sheet", load_sensor(dir + "/square120_32.json"), 12.0, 4.0, 5.0, "paper: -", false, 2},
   };
 }
 
-std::vector<double> default_sweep() {
+/// λ² from 1 to 10⁶.
+std::vector<double> default_sweep(int per_decade) {
   std::vector<double> values;
-  for (int i = 0; i <= 48; ++i) values.push_back(std::pow(10.0, i / 8.0));
+  for (int i = 0; i <= 6 * per_decade; ++i) values.push_back(std::pow(10.0, i / static_cast<double>(per_decade)));
   return values;
 }
 
@@ -107,7 +111,7 @@ struct SweepCurve {
 double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel& model, const Matrix& J,
                        const std::string& method, const EvalArgs& args, SweepCurve& curve) {
   curve.method = method;
-  const std::vector<double> sweep = args.lambda2.empty() ? default_sweep() : args.lambda2;
+  const std::vector<double> sweep = args.lambda2.empty() ? default_sweep(c.lambdas_per_decade) : args.lambda2;
   model.options = method_options(method);
   const OperatorFamily family(J, model.mesh, model.options.prior, model.options.noser_exponent);
   LocalisationResult best;
@@ -274,6 +278,7 @@ void run_eval(const EvalArgs& args) {
   std::printf("position: the paper's estimate (centroid of the image above 50 %% of its max); also the strongest\n"
               "contact's centroid. pressure: after calibration on separate presses, |error| vs 0.5 N/mm2 full scale.\n");
   for (const EvalCase& c : eval_cases()) {
+    if (c.name.find(args.sheet) == std::string::npos) continue;
     std::printf("\n%s, %d electrodes (%s; pressure paper: 0.0457 N/mm2)\n", c.name.c_str(), c.sensor.electrode_count(),
                 c.paper_position);
     const Runs runs = simulate_case(c, args);
@@ -314,6 +319,7 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--mesh-seed", a->mesh_seed, "Seed of the twin's mesh")->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the presses and of the ADC noise")->capture_default_str();
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
+  cmd->add_option("--sheet", a->sheet, "Only the sheets whose name contains this (60, 30, circle, 120)");
   cmd->add_flag("--quick", a->quick, "Fewer presses (a smoke test)");
   cmd->add_flag("!--no-mismatches", a->mismatches, "Skip the sensor-mismatch runs");
   cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
