@@ -241,7 +241,6 @@ std::string file_stem(const std::string& name) {
 
 /// Error versus λ², and the L-curve (image norm versus misfit, λ² labelled every decade).
 void write_plots(const EvalCase& c, const std::vector<SweepCurve>& curves, const std::string& dir) {
-  std::filesystem::create_directories(dir);
   std::vector<PlotSeries> errors, l_curves;
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const SweepCurve& s = curves[i];
@@ -257,6 +256,8 @@ void write_plots(const EvalCase& c, const std::vector<SweepCurve>& curves, const
     }
     l_curves.push_back(l);
   }
+  if (errors.empty()) return;  // no method with a λ (fit alone): nothing to plot
+  std::filesystem::create_directories(dir);
   const std::string stem = dir + "/" + file_stem(c.name);
   PlotOptions options;
   options.title = c.name + ": positional error versus λ²";

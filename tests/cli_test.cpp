@@ -1,6 +1,7 @@
 // End to end: the emit CLI run as a user runs it, on good and on bad input.
 #include <filesystem>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -124,6 +125,20 @@ TEST(Cli, CalibrateThenReconstruct) {
                "/c4.jsonl --calibration " + d + "/calib.json" + cache);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("emit calibrate --method paper"), std::string::npos) << r.err;
+}
+
+// emit eval as a user runs it, on one sheet: contact fitting meets issue 4's target for the 30 mm
+// sheet (0.2 mm) on the twin, and the plots are drawn.
+TEST(Cli, EvalMeasuresContactFitting) {
+  const std::string d = test::temp_folder("cli_eval");
+  const auto r = run_emit("eval --quick --sheet 30 --methods fit --no-mismatches --plots " + d + "/plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto row = r.out.find("\n  fit ");
+  ASSERT_NE(row, std::string::npos) << r.out;
+  double mean_mm = -1, std_mm = -1;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + row, "\n  fit %*s %lf +/- %lf", &mean_mm, &std_mm), 2) << r.out;
+  EXPECT_GE(mean_mm, 0.0);
+  EXPECT_LT(mean_mm, 0.2) << r.out;
 }
 
 // A disconnected electrode: a one-line warning, its measurements left out, contacts still found.
