@@ -51,36 +51,27 @@ void fit_pressure(const CalibrateArgs& args) {
     reconstructor.use_fitter(&*fitter);
   }
   reconstructor.set_reference(reference);
+  if (fit) {
+    std::vector<Frame> single;
+    std::vector<double> pressures;
+    for (std::size_t f = 0; f < frames.size(); ++f)
+      if (truth[f].size() == 1) single.push_back(frames[f]), pressures.push_back(truth[f][0].pressure_N_per_mm2());
+    const FittedLawCalibration fitted = calibrate_fitted_contact_law(reconstructor, single, pressures, sensor.contact);
+    PressureCalibration calibration;
+    calibration.calibrated = true;
+    calibration.fitted_contact_law = fitted.law;
+    write_calibration(args.out_path, calibration);
+    std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
+                fitted.presses, fitted.law.alpha_ohm_mm2, fitted.law.gamma);
+    std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
+                fitted.rms_N_per_mm2, fitted.max_abs_N_per_mm2, 100 * fitted.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
+    return;
+  }
   std::vector<PressureSample> samples;
-  std::vector<double> pressures, resistances;  // for fit: true P, and 1/g of the fitted disc [Ω·mm²]
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
     reconstructor.process(frames[f]);
-    const double pressure = truth[f][0].pressure_N_per_mm2();
-    if (!fit) {
-      samples.push_back(pressure_sample(reconstructor, args.threshold, pressure));
-    } else if (!reconstructor.fit_result()->contacts.empty()) {
-      pressures.push_back(pressure);
-      resistances.push_back(1 / reconstructor.fit_result()->contacts[0].disc.conductance_S_per_mm2);
-    }
-  }
-  if (fit) {
-    const ContactLawFit law = fit_contact_law(pressures, resistances);
-    PressureCalibration calibration;
-    calibration.calibrated = true;
-    calibration.fitted_contact_law = ContactLaw{law.alpha, law.gamma, sensor.contact.min_pressure_N_per_mm2};
-    double sum_sq = 0, largest = 0;
-    for (std::size_t i = 0; i < pressures.size(); ++i) {
-      const double error = calibration.fitted_contact_law->pressure_N_per_mm2(1 / resistances[i]) - pressures[i];
-      sum_sq += error * error, largest = std::max(largest, std::abs(error));
-    }
-    write_calibration(args.out_path, calibration);
-    std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
-                pressures.size(), law.alpha, law.gamma);
-    std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
-                std::sqrt(sum_sq / std::max<std::size_t>(1, pressures.size())), largest, 100 * largest / 0.5,
-                args.out_path.c_str());
-    return;
+    samples.push_back(pressure_sample(reconstructor, args.threshold, truth[f][0].pressure_N_per_mm2()));
   }
   const PressureFit result = fit_pressure_calibration(samples);
   write_calibration(args.out_path, result.calibration);

@@ -29,20 +29,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The contact law as the fit sees it, from single presses of known pressure (emit calibrate).
-ContactLaw calibrate_fit(Reconstructor& reconstructor, const std::vector<Frame>& frames, const PressSequence& truth,
-                         const ContactLaw& nominal) {
-  std::vector<double> pressure, resistance;
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    reconstructor.process(frames[f]);
-    if (reconstructor.fit_result()->contacts.empty()) continue;
-    pressure.push_back(truth[f][0].pressure_N_per_mm2());
-    resistance.push_back(1 / reconstructor.fit_result()->contacts[0].disc.conductance_S_per_mm2);
-  }
-  const ContactLawFit law = fit_contact_law(pressure, resistance);
-  return {law.alpha, law.gamma, nominal.min_pressure_N_per_mm2};
-}
-
 /// Each true press beside the fitted contact nearest to it and the paper method's strongest
 /// contact; fitted contacts near no press are printed as false ones.
 void print_found(std::size_t f, const std::vector<Press>& presses, const std::vector<Contact>& fitted,
@@ -109,7 +95,9 @@ void run_demo(const std::string& out_dir) {
   fitting.use_fitter(&uncalibrated);
   fitting.set_reference(reference);
   Sensor calibrated = sensor;
-  calibrated.contact = calibrate_fit(fitting, calibration_frames, calibration_presses, sensor.contact);
+  std::vector<double> calibration_pressures;
+  for (const auto& presses : calibration_presses) calibration_pressures.push_back(presses[0].pressure_N_per_mm2());
+  calibrated.contact = calibrate_fitted_contact_law(fitting, calibration_frames, calibration_pressures, sensor.contact).law;
   std::printf("calibrated on the 20 presses: the contact law as the fit sees it, alpha = %.4g ohm mm2, gamma = %.3f\n",
               calibrated.contact.alpha_ohm_mm2, calibrated.contact.gamma);
   ContactFitter fitter(calibrated, fit_model.mesh, fit_model.green, model.measurements);

@@ -18,6 +18,7 @@
 
 #include "emit/reconstruct/electrode_health.hpp"
 #include "emit/fit/fit_model.hpp"
+#include "emit/reconstruct/calibration.hpp"
 #include "emit/render/line_plot.hpp"
 #include "emit/twin/press_scripts.hpp"
 #include "emit/twin/sensor_mismatch.hpp"
@@ -147,30 +148,26 @@ double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel&
   return best_lambda2;
 }
 
-/// Fitted contacts' pressure, calibrated: log P = c0 + c1 log g fitted by least squares on the
-/// calibration run's strongest contacts (eq. 2 in logs), applied to the test run.
-double fit_pressure_error(Reconstructor& reconstructor, const Runs& runs) {
-  auto pairs = [&](const SimulatedRun& run) {
-    reconstructor.set_reference(run.reference);
-    std::vector<std::pair<double, double>> out;  // (log g, true P)
-    for (std::size_t f = 0; f < run.frames.size(); ++f) {
-      reconstructor.process(run.frames[f]);
-      const FitResult* fit = reconstructor.fit_result();
-      if (fit->contacts.empty()) continue;
-      out.emplace_back(std::log(fit->contacts[0].disc.conductance_S_per_mm2), run.presses[f].at(0).pressure_N_per_mm2());
-    }
+/// Fitted contacts' pressure after `emit calibrate --method fit` on the calibration run: the
+/// mean |error| on the test run.
+double fit_pressure_error(Reconstructor& reconstructor, const EvalCase& c, const Runs& runs) {
+  const auto pressures = [](const SimulatedRun& run) {
+    std::vector<double> out;
+    for (const auto& presses : run.presses) out.push_back(presses.at(0).pressure_N_per_mm2());
     return out;
   };
-  const auto calibration = pairs(runs.calibration);
-  Eigen::MatrixX2d A(calibration.size(), 2);
-  Vector b(calibration.size());
-  for (std::size_t i = 0; i < calibration.size(); ++i) {
-    A.row(i) << 1.0, calibration[i].first;
-    b[i] = std::log(calibration[i].second);
-  }
-  const Eigen::Vector2d c = A.colPivHouseholderQr().solve(b);
+  reconstructor.set_reference(runs.calibration.reference);
+  const ContactLaw law =
+      calibrate_fitted_contact_law(reconstructor, runs.calibration.frames, pressures(runs.calibration), c.sensor.contact).law;
+  reconstructor.set_reference(runs.test.reference);
+  const std::vector<double> truth = pressures(runs.test);
   std::vector<double> errors;
-  for (const auto& [log_g, pressure] : pairs(runs.test)) errors.push_back(std::abs(std::exp(c[0] + c[1] * log_g) - pressure));
+  for (std::size_t f = 0; f < runs.test.frames.size(); ++f) {
+    reconstructor.process(runs.test.frames[f]);
+    const FitResult& fit = *reconstructor.fit_result();
+    if (fit.contacts.empty()) continue;
+    errors.push_back(std::abs(law.pressure_N_per_mm2(fit.contacts[0].disc.conductance_S_per_mm2) - truth[f]));
+  }
   return summarize_errors(errors, 0).mean;
 }
 
@@ -189,7 +186,7 @@ void evaluate_fit(const EvalCase& c, const Runs& runs, ReconstructionModel model
   const ErrorStats& e = r.strongest_contact;
   std::printf("  %-10s %9s  %5.2f +/- %4.2f  %6.2f %6.2f  %6.2f  ", "fit", "-", e.mean, e.std, e.median, e.p95, e.mean);
   if (c.pressure_and_two_press) {
-    const double p = fit_pressure_error(reconstructor, runs);
+    const double p = fit_pressure_error(reconstructor, c, runs);
     const TwoPressResult two = two_press_rates(reconstructor, runs.two_press, 2.0);
     std::printf("%7.4f (%4.1f %%)  %5.0f %%  %5.0f %%", p, 100 * p / 0.5, 100 * two.two_contacts, 100 * two.both_matched);
   }

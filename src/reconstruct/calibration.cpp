@@ -176,4 +176,29 @@ ContactLawFit fit_contact_law(const std::vector<double>& pressure, const std::ve
   return fit;
 }
 
+FittedLawCalibration calibrate_fitted_contact_law(Reconstructor& reconstructor, const std::vector<Frame>& frames,
+                                                  const std::vector<double>& true_pressure_N_per_mm2,
+                                                  const ContactLaw& nominal) {
+  if (!reconstructor.fit_result()) throw InvalidInput("calibrating contact fitting needs a reconstructor that fits");
+  if (frames.size() != true_pressure_N_per_mm2.size()) throw InvalidInput("one true pressure per frame is needed");
+  std::vector<double> pressure, resistance;  // true P, and 1/g of the fitted disc [Ω·mm²]
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    reconstructor.process(frames[f]);
+    const FitResult& fit = *reconstructor.fit_result();
+    if (fit.contacts.empty()) continue;
+    pressure.push_back(true_pressure_N_per_mm2[f]);
+    resistance.push_back(1 / fit.contacts[0].disc.conductance_S_per_mm2);
+  }
+  const ContactLawFit fit = fit_contact_law(pressure, resistance);
+  FittedLawCalibration result{{fit.alpha, fit.gamma, nominal.min_pressure_N_per_mm2}, 0, 0, pressure.size()};
+  double sum_sq = 0;
+  for (std::size_t i = 0; i < pressure.size(); ++i) {
+    const double error = result.law.pressure_N_per_mm2(1 / resistance[i]) - pressure[i];
+    sum_sq += error * error;
+    result.max_abs_N_per_mm2 = std::max(result.max_abs_N_per_mm2, std::abs(error));
+  }
+  result.rms_N_per_mm2 = std::sqrt(sum_sq / static_cast<double>(pressure.size()));
+  return result;
+}
+
 }  // namespace emit

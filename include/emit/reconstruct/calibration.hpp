@@ -43,4 +43,17 @@ struct ContactLawFit {
 /// \throw InvalidInput for fewer than 2 pairs or non-positive values.
 ContactLawFit fit_contact_law(const std::vector<double>& pressure_N_per_mm2, const std::vector<double>& resistance_ohm);
 
+/// Contact fitting's calibration: eq. 2 as the fit sees it. Each single-press frame is
+/// reconstructed (`reconstructor` must use a fitter and hold the reference), and α, γ are fitted
+/// to the true pressure against 1/g of the strongest fitted contact.
+struct FittedLawCalibration {
+  ContactLaw law;
+  double rms_N_per_mm2 = 0, max_abs_N_per_mm2 = 0;  ///< the law's pressure − true, over the presses
+  std::size_t presses = 0;                           ///< frames that gave a contact
+};
+/// \param true_pressure_N_per_mm2  one per frame. \throw InvalidInput as fit_contact_law.
+FittedLawCalibration calibrate_fitted_contact_law(Reconstructor& reconstructor, const std::vector<Frame>& frames,
+                                                  const std::vector<double>& true_pressure_N_per_mm2,
+                                                  const ContactLaw& nominal);
+
 }  // namespace emit
