@@ -80,6 +80,10 @@ class FrameMisfit : public ceres::CostFunction {
       if (!jacobians[i]) continue;
       const double radius = std::exp(parameters[i][2]);
       for (int j = 0; j < disc_parameters; ++j) {
+        if (j == 2 && !f.options_.fit_radius) {  // held: Ceres ignores the column, so spare its solve
+          for (int r = 0; r < m.size(); ++r) jacobians[i][r * disc_parameters + j] = 0;
+          continue;
+        }
         direction_.assign(f.load_.triangles.size(), Eigen::Matrix3d::Zero());
         for (std::size_t t = ranges_[i].first; t < ranges_[i].second; ++t)
           direction_[t] = j == 3 ? f.load_.local_S[t] : j == 2 ? radius * f.load_.d_local_S[t][2] : f.load_.d_local_S[t][j];
