@@ -65,8 +65,7 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     residual_image_.noalias() = model_.op * (-misfit);
     Index peak;
     if (residual_image_.maxCoeff(&peak) <= 0) return false;
-    const Vector3 at = model_.mesh.triangle_centroid_mm(peak);
-    seed = {at.x(), at.y(), 0, 0};
+    seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};
     return true;
   };
   fitter_result_ = fitter_->fit(dV_, seeds_, residual_peak);
@@ -82,7 +81,7 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     c.pressure_std_N_per_mm2 = f.pressure_std_N_per_mm2;
     fitted_.push_back(c);
     for (Index k = 0; k < pressure_.size(); ++k)
-      if ((model_.mesh.triangle_centroid_mm(k).head<2>() - Vector2(c.x_mm, c.y_mm)).norm() <= f.disc.radius_mm)
+      if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= f.disc.radius_mm)
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
   }
   return fitted_;

@@ -47,6 +47,7 @@ class ContactFinder {
   const std::vector<Vector2>& peaks(const Vector& image, double min_value, double min_separation_mm);
 
   Index element_count() const { return static_cast<Index>(areas_mm2_.size()); }
+  const Vector2& centroid_mm(Index element) const { return centroids_mm_[static_cast<std::size_t>(element)]; }
 
  private:
   std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
