@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <optional>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "commands.hpp"
 #include "emit/errors.hpp"
 #include "emit/fit/fit_model.hpp"
+#include "emit/fit/sheet_calibration.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
@@ -23,7 +25,49 @@ namespace {
 struct CalibrateArgs {
   std::string sensor_path, reference_path, frames_path, truth_path, out_path, contact_law_path, method = "fit", cache_dir;
   double lambda2 = 0, threshold = 0.5;
+  bool sheet = true;  ///< with --method fit: also fit the sheet's resistance
 };
+
+/// Contact fitting's calibration: the sheet's resistance (unless --no-sheet) from where the
+/// presses were, then the contact law as the fit sees it, on the corrected sheet.
+void calibrate_fitting(const CalibrateArgs& args, const Sensor& sensor, const ReconstructionModel& model,
+                       Reconstructor& reconstructor, const Frame& reference, const std::vector<Frame>& frames,
+                       const PressSequence& truth, const std::function<void(const std::string&)>& say) {
+  std::vector<Frame> single;
+  std::vector<Vector> dV;
+  std::vector<Vector2> centres;
+  std::vector<double> pressures;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    single.push_back(frames[f]);
+    dV.push_back(frame_difference(model.measurements, frames[f], reference));
+    centres.emplace_back(truth[f][0].x_mm, truth[f][0].y_mm);
+    pressures.push_back(truth[f][0].pressure_N_per_mm2());
+  }
+  PressureCalibration calibration;
+  calibration.calibrated = true;
+  if (args.sheet) {
+    say("meshing the sheet for contact fitting");
+    const Mesh mesh = fit_mesh(sensor);
+    const SheetCalibration sheet = calibrate_sheet(sensor, mesh, model.measurements, dV, centres, {}, say);
+    calibration.sheet_correction = sheet.correction;
+    const auto [low, high] = sheet.correction.factor_range(mesh);
+    std::printf("fitted the sheet's resistance on %d presses: its conductance is %.3f to %.3f times the nominal; "
+                "misfit %.3f mV -> %.3f mV rms\n",
+                sheet.presses, low, high, 1e3 * sheet.rms_misfit_nominal_V, 1e3 * sheet.rms_misfit_corrected_V);
+  }
+  const FitModel fit_model =
+      build_fit_model(sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr, say);
+  ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
+  reconstructor.use_fitter(&fitter);
+  const FittedLawCalibration fitted = calibrate_fitted_contact_law(reconstructor, single, pressures, sensor.contact);
+  calibration.fitted_contact_law = fitted.law;
+  write_calibration(args.out_path, calibration);
+  std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
+              fitted.presses, fitted.law.alpha_ohm_mm2, fitted.law.gamma);
+  std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
+              fitted.rms_N_per_mm2, fitted.max_abs_N_per_mm2, 100 * fitted.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
+}
 
 void fit_pressure(const CalibrateArgs& args) {
   const Sensor sensor = sensor_from_option(args.sensor_path);
@@ -43,30 +87,8 @@ void fit_pressure(const CalibrateArgs& args) {
   FrameOptions frame_options;
   frame_options.threshold_fraction = args.threshold;
   Reconstructor reconstructor(model, PressureCalibration::uncalibrated(sensor), frame_options);
-  std::optional<FitModel> fit_model;
-  std::optional<ContactFitter> fitter;
-  if (fit) {
-    fit_model = build_fit_model(sensor, say);
-    fitter.emplace(sensor, fit_model->mesh, fit_model->green, model.measurements);
-    reconstructor.use_fitter(&*fitter);
-  }
   reconstructor.set_reference(reference);
-  if (fit) {
-    std::vector<Frame> single;
-    std::vector<double> pressures;
-    for (std::size_t f = 0; f < frames.size(); ++f)
-      if (truth[f].size() == 1) single.push_back(frames[f]), pressures.push_back(truth[f][0].pressure_N_per_mm2());
-    const FittedLawCalibration fitted = calibrate_fitted_contact_law(reconstructor, single, pressures, sensor.contact);
-    PressureCalibration calibration;
-    calibration.calibrated = true;
-    calibration.fitted_contact_law = fitted.law;
-    write_calibration(args.out_path, calibration);
-    std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
-                fitted.presses, fitted.law.alpha_ohm_mm2, fitted.law.gamma);
-    std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
-                fitted.rms_N_per_mm2, fitted.max_abs_N_per_mm2, 100 * fitted.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
-    return;
-  }
+  if (fit) return calibrate_fitting(args, sensor, model, reconstructor, reference, frames, truth, say);
   std::vector<PressureSample> samples;
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
@@ -129,6 +151,8 @@ void add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lambda2", a->lambda2, "lambda^2 (default: the method's)")->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", a->threshold, "Threshold fraction")->capture_default_str();
+  cmd->add_flag("!--no-sheet", a->sheet,
+                "With --method fit: keep the nominal sheet resistance instead of fitting its variation from the presses");
   cmd->add_option("--cache", a->cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->callback([a] { run_calibrate(*a); });
 }

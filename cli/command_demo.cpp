@@ -83,7 +83,7 @@ void run_demo(const std::string& out_dir) {
   start = std::chrono::steady_clock::now();
   const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
   const ReconstructionModel model = build_reconstruction_model(sensor, method_options("paper"), default_cache_dir(), {}, say);
-  const FitModel fit_model = build_fit_model(sensor, say);
+  const FitModel fit_model = build_fit_model(sensor, nullptr, say);
   std::printf("models: paper operator (%lld triangles), contact fitting (%lld nodes) in %.1f s\n",
               static_cast<long long>(model.mesh.triangle_count()), static_cast<long long>(fit_model.mesh.node_count()),
               seconds_since(start));

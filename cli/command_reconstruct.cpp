@@ -76,7 +76,7 @@ void run_reconstruct(const ReconstructArgs& args) {
   Sensor fit_sensor = sensor;  // with the calibrated contact law, if there is one
   if (fit) {
     if (calibration.fitted_contact_law) fit_sensor.contact = *calibration.fitted_contact_law;
-    fit_model = build_fit_model(sensor, say);
+    fit_model = build_fit_model(sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr, say);
     fitter.emplace(fit_sensor, fit_model->mesh, fit_model->green, model.measurements);
   }
   std::fprintf(stderr, "model ready in %.2f s (%lld triangles, %d measurements%s)\n",

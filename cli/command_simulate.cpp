@@ -25,6 +25,7 @@ struct SimulateArgs {
   int mesh_seed = 1;
   bool exact = false, print_table = false;
   int dead_electrode = -1;
+  double sheet_variation = 0;
   double noise_V = -1;
 };
 
@@ -90,6 +91,7 @@ void run_simulate(const SimulateArgs& args) {
   options.adc = !args.exact;
   options.noise_seed = args.seed;
   options.dead_electrode = args.dead_electrode;
+  options.sheet_resistance_variation = args.sheet_variation;
   Twin twin(sensor, options);
   const MeshQuality q = measure_mesh_quality(twin.mesh());
   std::fprintf(stderr, "twin mesh: %lld triangles, %lld nodes, min angle %.1f deg\n",
@@ -156,6 +158,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--mesh-seed", a->mesh_seed, "Seed of the twin's mesh");
   cmd->add_option("--noise-V", a->noise_V, "Override the ADC noise (standard deviation, V)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--exact", a->exact, "No ADC: exact, noise-free volts");
+  cmd->add_option("--sheet-variation", a->sheet_variation,
+                  "Sheet resistance varying linearly along x by +/- this fraction (e.g. 0.2)")
+      ->check(CLI::Range(-0.9, 0.9));
   cmd->add_option("--dead-electrode", a->dead_electrode, "Simulate this electrode disconnected")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--table", a->print_table, "Print every frame as an N x N table instead of a summary");

@@ -23,11 +23,7 @@ struct FitBench {
   MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
   Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 4; return o; }()};
   Vector dV(const std::vector<Press>& presses) {
-    const Frame frame = twin.frame(presses), reference = twin.frame({});
-    Vector out(measurements.size());
-    for (int i = 0; i < measurements.size(); ++i)
-      out[i] = frame.data()[measurements.frame_index[i]] - reference.data()[measurements.frame_index[i]];
-    return out;
+    return frame_difference(measurements, twin.frame(presses), twin.frame({}));
   }
 };
 
@@ -43,8 +39,7 @@ TEST(ContactFitter, RecoversTheDiscThatMadeTheFrame) {
   ContactFitter fitter(s.sensor, s.mesh, s.green, s.measurements, options);
   const Disc truth{21.3, 34.7, 5, 3.2e-7};
   const Frame frame = fitter.predict({truth});
-  Vector dV(s.measurements.size());
-  for (int i = 0; i < s.measurements.size(); ++i) dV[i] = frame.data()[s.measurements.frame_index[i]];
+  const Vector dV = frame_difference(s.measurements, frame, Frame::Zero(frame.rows(), frame.cols()));
   const FitResult& r = fitter.fit(dV, {Disc{truth.x_mm + 3, truth.y_mm - 3, 0, 0}});
   ASSERT_EQ(r.contacts.size(), 1u);
   // Noise-free frames of the fitter's own model: only the optimiser's tolerance remains.

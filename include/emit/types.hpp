@@ -14,5 +14,8 @@ using Vector2 = Eigen::Vector2d;
 using Vector3 = Eigen::Vector3d;
 /// Column-major sparse matrix with int indices, the layout sparse direct solvers expect.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+/// One frame: N×N volts, row l = grounded electrode, column m = sensed electrode. Row-major, so
+/// data() is the ground-major order l·N + m of DESIGN §1.
+using Frame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 }  // namespace emit

@@ -90,10 +90,8 @@ TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun&
 LCurvePoint l_curve_point(const Matrix& J, const Matrix& op, const MeasurementSet& measurements,
                           const SimulatedRun& run) {
   LCurvePoint point;
-  Vector dV(measurements.size());
   for (const Frame& frame : run.frames) {
-    for (int i = 0; i < measurements.size(); ++i)
-      dV[i] = frame.data()[measurements.frame_index[i]] - run.reference.data()[measurements.frame_index[i]];
+    const Vector dV = frame_difference(measurements, frame, run.reference);
     const Vector dphi = op * dV;
     point.residual_norm_V += (J * dphi - dV).norm();
     point.solution_norm_V += dphi.norm();

@@ -7,6 +7,7 @@
 #include <ceres/ceres.h>
 
 #include "emit/errors.hpp"
+#include "emit/twin/adc.hpp"
 
 namespace emit {
 
@@ -29,12 +30,6 @@ std::array<double, disc_parameters> to_parameters(const Disc& d) {
 }
 
 Disc to_disc(const double* p) { return {p[0], p[1], std::exp(p[2]), std::exp(p[3])}; }
-
-/// Noise of one reading: the ADC's Gaussian noise and its quantisation (LSB²/12).
-double reading_noise_V(const AdcSpec& adc) {
-  const double lsb = adc.vref_V / std::pow(2.0, adc.bits);
-  return std::sqrt(adc.noise_V * adc.noise_V + lsb * lsb / 12);
-}
 
 /// (log r − log r₀)/σ: the radius prior as one more residual.
 struct RadiusPrior {
@@ -104,24 +99,28 @@ class FrameMisfit : public ceres::CostFunction {
   mutable Frame d_frame_;
 };
 
+FitOptions resolved_fit_options(FitOptions o, const Sensor& sensor, const Mesh& mesh) {
+  o.validate();
+  if (o.edge_mm == 0) o.edge_mm = sensor.mesh.element_size_mm / 4;
+  if (o.prior_radius_mm == 0) o.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
+  if (o.min_radius_mm == 0) o.min_radius_mm = 2 * o.edge_mm;
+  const Vector2 extent = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff() - mesh.nodes_mm.leftCols<2>().colwise().minCoeff();
+  if (o.max_radius_mm == 0) o.max_radius_mm = std::min(2.5 * o.prior_radius_mm, extent.minCoeff() / 4);
+  if (o.max_radius_mm <= o.min_radius_mm) throw InvalidInput("fit: the sheet is too small for its mesh");
+  return o;
+}
+
 ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
                              const MeasurementSet& measurements, FitOptions options)
     : sensor_(sensor),
       mesh_(mesh),
       measurements_(measurements),
-      options_(options),
-      integrator_(mesh, options.edge_mm > 0 ? options.edge_mm : sensor.mesh.element_size_mm / 4),
+      options_(resolved_fit_options(options, sensor, mesh)),
+      integrator_(mesh, options_.edge_mm),
       predictor_(mesh, green),
-      noise_V_(reading_noise_V(sensor.adc)) {
-  options_.validate();
-  if (options_.prior_radius_mm == 0) options_.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
-  if (options_.min_radius_mm == 0) options_.min_radius_mm = 2 * integrator_.edge_mm();
-  lower_mm_ = mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose();
-  upper_mm_ = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose();
-  if (options_.max_radius_mm == 0)
-    options_.max_radius_mm = std::min(2.5 * options_.prior_radius_mm, (upper_mm_ - lower_mm_).minCoeff() / 4);
-  if (options_.max_radius_mm <= options_.min_radius_mm) throw InvalidInput("fit: the sheet is too small for its mesh");
-}
+      noise_V_(reading_noise_V(sensor.adc)),
+      lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
+      upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {}
 
 Frame ContactFitter::predict(const std::vector<Disc>& discs) {
   load_.clear();

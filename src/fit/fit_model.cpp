@@ -4,13 +4,20 @@
 
 namespace emit {
 
-FitModel build_fit_model(const Sensor& sensor, const std::function<void(const std::string&)>& progress) {
-  if (progress) progress("meshing the sheet for contact fitting");
+Mesh fit_mesh(const Sensor& sensor) {
   MeshOptions options = reconstruction_mesh_options(sensor);
   options.electrode_edge_size_factor = 0.25;
-  FitModel model{generate_mesh(sensor, options), {}};
+  return generate_mesh(sensor, options);
+}
+
+FitModel build_fit_model(const Sensor& sensor, const SheetCorrection* correction,
+                         const std::function<void(const std::string&)>& progress) {
+  if (progress) progress("meshing the sheet for contact fitting");
+  FitModel model{fit_mesh(sensor), {}};
   if (progress) progress("Green's function (" + std::to_string(model.mesh.node_count()) + " nodes)");
-  model.green = dense_green_function(model.mesh, sensor.sheet_resistance_ohm_per_sq);
+  model.green = correction ? dense_green_function(model.mesh, correction->element_conductance_S(
+                                                                  model.mesh, sensor.sheet_resistance_ohm_per_sq))
+                           : dense_green_function(model.mesh, sensor.sheet_resistance_ohm_per_sq);
   return model;
 }
 

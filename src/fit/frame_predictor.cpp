@@ -38,12 +38,11 @@ void FramePredictor::predict(const std::vector<Index>& triangles, const std::vec
   if (triangles.empty()) return;
   gather_patch(triangles, local_S);
   const auto p = static_cast<Index>(patch_dofs_.size());
-  const Matrix& G0 = green_.G0;
   G_pp_.resize(p, p);
   G_pe_.resize(p, N);
   for (Index i = 0; i < p; ++i) {
-    for (Index j = 0; j < p; ++j) G_pp_(i, j) = G0(patch_dofs_[i], patch_dofs_[j]);
-    for (int e = 0; e < N; ++e) G_pe_(i, e) = G0(patch_dofs_[i], e);
+    for (Index j = 0; j < p; ++j) G_pp_(i, j) = green_.at(patch_dofs_[i], patch_dofs_[j]);
+    for (int e = 0; e < N; ++e) G_pe_(i, e) = green_.at(patch_dofs_[i], e);
   }
   c1_.noalias() = C_.rowwise().sum();  // C·1: the contact's pull per volt of drive
 
@@ -71,7 +70,7 @@ void FramePredictor::predict(const std::vector<Index>& triangles, const std::vec
   xI_.resize(N);
   for (int l = 1; l < N; ++l) {
     // w_l = (A0 + C)⁻¹ e_l on the electrodes and the patch.
-    W_e_.col(l) = G0.col(l).head(N) - Z_e_.col(l);
+    W_e_.col(l) = green_.column(l).head(N) - Z_e_.col(l);
     const auto w_e = W_e_.col(l);
     const double lost_through_contact = c1_.dot(Q_.col(l));  // −(contact inflow)
     // Unknowns x = E − c and I (see forward_model.hpp): u(e_l) = c + x a_l + I w_l(l) = 0, and no

@@ -1,5 +1,6 @@
 #include "emit/io/calibration_json.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -12,6 +13,41 @@
 #include "emit/io/atomic_file.hpp"
 
 namespace emit {
+
+namespace {
+
+/// n finite numbers, or an error naming the key.
+std::vector<double> numbers(const std::string& where, const nlohmann::json& value, std::size_t n) {
+  if (!value.is_array() || value.size() != n)
+    throw InvalidInput(where + ": must be an array of " + std::to_string(n) + " numbers");
+  std::vector<double> out;
+  for (const auto& v : value) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) throw InvalidInput(where + ": must hold finite numbers");
+    out.push_back(v.get<double>());
+  }
+  return out;
+}
+
+/// {"box_mm": [x0, y0, x1, y1], "log_conductance": [θ1 … θ5]}
+SheetCorrection sheet_correction_from_json(const std::string& path, const nlohmann::json& j) {
+  const std::string where = path + ": sheet_correction";
+  if (!j.is_object()) throw InvalidInput(where + ": must be an object {\"box_mm\", \"log_conductance\"}");
+  for (const auto& item : j.items())
+    if (item.key() != "box_mm" && item.key() != "log_conductance")
+      throw InvalidInput(where + ": " + item.key() + ": unknown key");
+  for (const char* key : {"box_mm", "log_conductance"})
+    if (!j.contains(key)) throw InvalidInput(where + ": " + key + ": missing");
+  const std::vector<double> box = numbers(where + ".box_mm", j["box_mm"], 4);
+  const std::vector<double> theta = numbers(where + ".log_conductance", j["log_conductance"], SheetCorrection::terms);
+  if (!(box[2] > box[0] && box[3] > box[1])) throw InvalidInput(where + ".box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
+  SheetCorrection c;
+  c.lower_mm = {box[0], box[1]};
+  c.upper_mm = {box[2], box[3]};
+  std::copy(theta.begin(), theta.end(), c.log_conductance.begin());
+  return c;
+}
+
+}  // namespace
 
 PressureCalibration load_calibration(const std::string& path) {
   std::ifstream in(path);
@@ -28,6 +64,10 @@ PressureCalibration load_calibration(const std::string& path) {
   const bool law = j.contains("alpha_ohm_mm2") || j.contains("gamma");
   if (law) c.fitted_contact_law = ContactLaw{};
   for (const auto& item : j.items()) {
+    if (law && item.key() == "sheet_correction") {
+      c.sheet_correction = sheet_correction_from_json(path, item.value());
+      continue;
+    }
     if (!item.value().is_number() || !std::isfinite(item.value().get<double>()))
       throw InvalidInput(path + ": " + item.key() + ": must be a finite number");
     const double v = item.value().get<double>();
@@ -47,10 +87,14 @@ PressureCalibration load_calibration(const std::string& path) {
 
 void write_calibration(const std::string& path, const PressureCalibration& c) {
   AtomicFile file(path);
-  const nlohmann::json j = c.fitted_contact_law
-                              ? nlohmann::json{{"alpha_ohm_mm2", c.fitted_contact_law->alpha_ohm_mm2},
-                                               {"gamma", c.fitted_contact_law->gamma}}
-                              : nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
+  nlohmann::json j = c.fitted_contact_law ? nlohmann::json{{"alpha_ohm_mm2", c.fitted_contact_law->alpha_ohm_mm2},
+                                                           {"gamma", c.fitted_contact_law->gamma}}
+                                          : nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
+  if (c.fitted_contact_law && c.sheet_correction) {
+    const SheetCorrection& s = *c.sheet_correction;
+    j["sheet_correction"] = {{"box_mm", {s.lower_mm.x(), s.lower_mm.y(), s.upper_mm.x(), s.upper_mm.y()}},
+                             {"log_conductance", s.log_conductance}};
+  }
   file.stream() << j.dump(2) << '\n';
   file.commit();
 }

@@ -7,6 +7,11 @@ namespace emit {
 
 double adc_step_V(const AdcSpec& adc) { return adc.vref_V / (std::ldexp(1.0, adc.bits) - 1.0); }
 
+double reading_noise_V(const AdcSpec& adc) {
+  const double step = adc_step_V(adc);
+  return std::sqrt(adc.noise_V * adc.noise_V + step * step / 12);
+}
+
 void apply_adc(const AdcSpec& adc, Frame& frame, std::mt19937_64& rng) {
   std::normal_distribution<double> noise(0.0, adc.noise_V);
   const double step = adc_step_V(adc);

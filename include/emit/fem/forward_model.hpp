@@ -18,10 +18,6 @@
 
 namespace emit {
 
-/// One frame: N×N volts, row l = grounded electrode, column m = sensed electrode. Row-major, so
-/// data() is the ground-major order l·N + m of DESIGN §1.
-using Frame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
 class ForwardModel {
  public:
   /// Assembles the stiffness once and analyses its pattern (assemble once, solve many).

@@ -44,6 +44,10 @@ struct FitOptions {
   void validate() const;  ///< \throw InvalidInput naming the option
 };
 
+/// The options with each 0 ("default") filled in for the sensor and the fit mesh.
+/// \throw InvalidInput as FitOptions::validate, or if the sheet is too small for its mesh.
+FitOptions resolved_fit_options(FitOptions options, const Sensor& sensor, const Mesh& mesh);
+
 struct FittedContact {
   Disc disc;
   double x_std_mm = 0, y_std_mm = 0;  ///< 1σ from the fit's covariance

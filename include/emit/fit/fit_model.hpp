@@ -8,6 +8,7 @@
 #include <string>
 
 #include "emit/fit/green_function.hpp"
+#include "emit/fit/sheet_correction.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/sensor/sensor.hpp"
 
@@ -18,7 +19,12 @@ struct FitModel {
   DenseGreenFunction green;
 };
 
-/// \param progress  told each stage's name as it starts (may be empty).
-FitModel build_fit_model(const Sensor& sensor, const std::function<void(const std::string&)>& progress = {});
+/// The fit mesh alone (build_fit_model's first stage).
+Mesh fit_mesh(const Sensor& sensor);
+
+/// \param correction  the sheet's fitted resistance correction, if calibrated (else nominal)
+/// \param progress    told each stage's name as it starts (may be empty).
+FitModel build_fit_model(const Sensor& sensor, const SheetCorrection* correction = nullptr,
+                         const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace emit

@@ -10,6 +10,7 @@
 /// computed by n solves with the sparse factor in about a second. That is the price of a
 /// predicted frame in tens of microseconds.
 #include <functional>
+#include <vector>
 
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/mesh/mesh.hpp"
@@ -18,11 +19,25 @@ namespace emit {
 
 struct DenseGreenFunction {
   ElectrodeDofs dofs;
-  Matrix G0;  ///< dof_count × dof_count [Ω]
+  Matrix G0;  ///< dof_count × (dof_count, or the solved columns only) [Ω]
+  std::vector<int> column_of_dof;  ///< G0's column of each dof (−1: not solved); empty: the dof itself
+
+  auto column(int dof) const { return G0.col(column_of_dof.empty() ? dof : column_of_dof[static_cast<std::size_t>(dof)]); }
+  double at(int row_dof, int column_dof) const {
+    return G0(row_dof, column_of_dof.empty() ? column_dof : column_of_dof[static_cast<std::size_t>(column_dof)]);
+  }
 };
 
 /// \param progress  told the fraction done, now and then (may be empty).
 DenseGreenFunction dense_green_function(const Mesh& mesh, double sheet_resistance_ohm_per_sq,
+                                        const std::function<void(double)>& progress = {});
+
+/// The same for a sheet conductance per triangle [S]. If `only_dofs` is not empty, only those
+/// columns are solved and kept (column_of_dof says where): enough for frames of contacts whose
+/// patches lie in them, since a prediction reads G0 on its patch and the electrodes only
+/// (frame_predictor.hpp). Dof 0 (the ground) is always among them.
+DenseGreenFunction dense_green_function(const Mesh& mesh, const Vector& element_conductance_S,
+                                        const std::vector<int>& only_dofs = {},
                                         const std::function<void(double)>& progress = {});
 
 }  // namespace emit

@@ -5,6 +5,8 @@
 /// one: all its readings, as ground and as sense).
 #include <vector>
 
+#include "emit/types.hpp"
+
 namespace emit {
 
 struct MeasurementSet {
@@ -16,5 +18,8 @@ struct MeasurementSet {
 
 /// All l ≠ m pairs, ground-major, without the excluded electrodes.
 MeasurementSet make_measurement_set(int electrode_count, const std::vector<int>& excluded_electrodes = {});
+
+/// δV: the set's readings of `frame` less those of `reference` (both N×N, ground-major).
+Vector frame_difference(const MeasurementSet& set, const Frame& frame, const Frame& reference);
 
 }  // namespace emit

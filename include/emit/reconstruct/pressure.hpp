@@ -4,6 +4,7 @@
 /// a2 = −R0/α, a3 = 1/γ; `emit calibrate` fits them from presses of known force.
 #include <optional>
 
+#include "emit/fit/sheet_correction.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
@@ -14,6 +15,8 @@ struct PressureCalibration {
   /// For contact fitting instead of eq. 8: the contact law (eq. 2) as the fit sees it, fitted
   /// from presses of known pressure (the fitted disc's conductance against the true pressure).
   std::optional<ContactLaw> fitted_contact_law;
+  /// For contact fitting: the sheet's resistance as the presses showed it (sheet_calibration.hpp).
+  std::optional<SheetCorrection> sheet_correction;
 
   /// The uncalibrated default from the sensor: R0/α = 1, so a1 = E, a2 = −1, a3 = 1/γ. It is
   /// monotone in δφ but its scale is arbitrary until calibrated.

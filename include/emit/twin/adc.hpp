@@ -15,4 +15,7 @@ void apply_adc(const AdcSpec& adc, Frame& frame, std::mt19937_64& rng);
 /// One ADC step [V].
 double adc_step_V(const AdcSpec& adc);
 
+/// The noise of one reading [V]: the ADC's Gaussian noise and its quantisation (step²/12).
+double reading_noise_V(const AdcSpec& adc);
+
 }  // namespace emit
