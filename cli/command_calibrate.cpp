@@ -37,15 +37,18 @@ void calibrate_fitting(const CalibrateArgs& args, const Sensor& sensor, const Re
   std::vector<Vector> dV;
   std::vector<Vector2> centres;
   std::vector<double> pressures;
+  PressureCalibration calibration;
+  calibration.calibrated = true;
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    calibration.indenter_radius_mm += truth[f][0].radius_mm;
     single.push_back(frames[f]);
     dV.push_back(frame_difference(model.measurements, frames[f], reference));
     centres.emplace_back(truth[f][0].x_mm, truth[f][0].y_mm);
     pressures.push_back(truth[f][0].pressure_N_per_mm2());
   }
-  PressureCalibration calibration;
-  calibration.calibrated = true;
+  if (single.empty()) throw InvalidInput(args.truth_path + ": no single presses to calibrate on");
+  calibration.indenter_radius_mm /= static_cast<double>(single.size());
   if (args.sheet) {
     say("meshing the sheet for contact fitting");
     const Mesh mesh = fit_mesh(sensor);
@@ -63,8 +66,9 @@ void calibrate_fitting(const CalibrateArgs& args, const Sensor& sensor, const Re
   const FittedLawCalibration fitted = calibrate_fitted_contact_law(reconstructor, single, pressures, sensor.contact);
   calibration.fitted_contact_law = fitted.law;
   write_calibration(args.out_path, calibration);
-  std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g\n",
-              fitted.presses, fitted.law.alpha_ohm_mm2, fitted.law.gamma);
+  std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g; "
+              "contacts will be reported with the presses' mean indenter radius, %.2f mm\n",
+              fitted.presses, fitted.law.alpha_ohm_mm2, fitted.law.gamma, calibration.indenter_radius_mm);
   std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
               fitted.rms_N_per_mm2, fitted.max_abs_N_per_mm2, 100 * fitted.max_abs_N_per_mm2 / 0.5, args.out_path.c_str());
 }

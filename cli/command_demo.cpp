@@ -36,7 +36,7 @@ void print_found(std::size_t f, const std::vector<Press>& presses, const std::ve
   std::vector<bool> used(fitted.size(), false);
   for (std::size_t i = 0; i < presses.size(); ++i) {
     const Press& p = presses[i];
-    std::printf("  %5zu  %5.1f %5.1f %6.3f", f, p.x_mm, p.y_mm, p.pressure_N_per_mm2());
+    std::printf("  %5zu  %5.1f %5.1f %6.1f", f, p.x_mm, p.y_mm, p.force_N);
     std::size_t nearest = fitted.size();
     for (std::size_t k = 0; k < fitted.size(); ++k)
       if (!used[k] && (nearest == fitted.size() || std::hypot(fitted[k].x_mm - p.x_mm, fitted[k].y_mm - p.y_mm) <
@@ -44,7 +44,7 @@ void print_found(std::size_t f, const std::vector<Press>& presses, const std::ve
         nearest = k;
     if (nearest < fitted.size()) {
       used[nearest] = true;
-      std::printf("   %6.2f %6.2f %6.3f", fitted[nearest].x_mm, fitted[nearest].y_mm, fitted[nearest].pressure_N_per_mm2);
+      std::printf("   %6.2f %6.2f %6.1f", fitted[nearest].x_mm, fitted[nearest].y_mm, fitted[nearest].force_N);
     } else {
       std::printf("   %20s", "(not found)");
     }
@@ -53,8 +53,8 @@ void print_found(std::size_t f, const std::vector<Press>& presses, const std::ve
   }
   for (std::size_t k = 0; k < fitted.size(); ++k)
     if (!used[k])
-      std::printf("  %5zu  %19s   %6.2f %6.2f %6.3f (a false contact)\n", f, "", fitted[k].x_mm, fitted[k].y_mm,
-                  fitted[k].pressure_N_per_mm2);
+      std::printf("  %5zu  %19s   %6.2f %6.2f %6.1f (a false contact)\n", f, "", fitted[k].x_mm, fitted[k].y_mm,
+                  fitted[k].force_N);
 }
 
 void run_demo(const std::string& out_dir) {
@@ -91,19 +91,25 @@ void run_demo(const std::string& out_dir) {
   Reconstructor paper(model, PressureCalibration::uncalibrated(sensor));
   paper.set_reference(reference);
   ContactFitter uncalibrated(sensor, fit_model.mesh, fit_model.green, model.measurements);
-  Reconstructor fitting(model, PressureCalibration::uncalibrated(sensor));
-  fitting.use_fitter(&uncalibrated);
-  fitting.set_reference(reference);
+  Reconstructor calibrating(model, PressureCalibration::uncalibrated(sensor));
+  calibrating.use_fitter(&uncalibrated);
+  calibrating.set_reference(reference);
   Sensor calibrated = sensor;
   std::vector<double> calibration_pressures;
   for (const auto& presses : calibration_presses) calibration_pressures.push_back(presses[0].pressure_N_per_mm2());
-  calibrated.contact = calibrate_fitted_contact_law(fitting, calibration_frames, calibration_pressures, sensor.contact).law;
+  calibrated.contact = calibrate_fitted_contact_law(calibrating, calibration_frames, calibration_pressures, sensor.contact).law;
   std::printf("calibrated on the 20 presses: the contact law as the fit sees it, alpha = %.4g ohm mm2, gamma = %.3f\n",
               calibrated.contact.alpha_ohm_mm2, calibrated.contact.gamma);
   ContactFitter fitter(calibrated, fit_model.mesh, fit_model.green, model.measurements);
+  PressureCalibration calibration;  // contacts reported with the calibration presses' indenter
+  calibration.calibrated = true;
+  calibration.fitted_contact_law = calibrated.contact;
+  calibration.indenter_radius_mm = style.radius_mm;
+  Reconstructor fitting(model, calibration);
   fitting.use_fitter(&fitter);
+  fitting.set_reference(reference);
 
-  std::printf("\n  frame   true x     y  P N/mm2   fit x      y  P N/mm2   paper x    y\n");
+  std::printf("\n  frame   true x     y  force N   fit x      y  force N   paper x    y\n");
   AtomicFile contacts_file(out_dir + "/contacts.jsonl");
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const std::vector<Contact> found = fitting.process(frames[f]);

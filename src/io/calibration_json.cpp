@@ -76,6 +76,8 @@ PressureCalibration load_calibration(const std::string& path) {
     else if (!law && item.key() == "a3") c.a3 = v;
     else if (law && item.key() == "alpha_ohm_mm2") c.fitted_contact_law->alpha_ohm_mm2 = v;
     else if (law && item.key() == "gamma") c.fitted_contact_law->gamma = v;
+    else if (law && item.key() == "indenter_radius_mm" && v > 0) c.indenter_radius_mm = v;
+    else if (law && item.key() == "indenter_radius_mm") throw InvalidInput(path + ": indenter_radius_mm must be positive");
     else throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
   }
   for (const char* key : law ? std::vector<const char*>{"alpha_ohm_mm2", "gamma"} : std::vector<const char*>{"a1", "a2", "a3"})
@@ -90,6 +92,7 @@ void write_calibration(const std::string& path, const PressureCalibration& c) {
   nlohmann::json j = c.fitted_contact_law ? nlohmann::json{{"alpha_ohm_mm2", c.fitted_contact_law->alpha_ohm_mm2},
                                                            {"gamma", c.fitted_contact_law->gamma}}
                                           : nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
+  if (c.fitted_contact_law && c.indenter_radius_mm > 0) j["indenter_radius_mm"] = c.indenter_radius_mm;
   if (c.fitted_contact_law && c.sheet_correction) {
     const SheetCorrection& s = *c.sheet_correction;
     j["sheet_correction"] = {{"box_mm", {s.lower_mm.x(), s.lower_mm.y(), s.upper_mm.x(), s.upper_mm.y()}},

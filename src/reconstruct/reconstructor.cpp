@@ -74,14 +74,15 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
   for (const FittedContact& f : fitter_result_.contacts) {
     Contact c;
     c.x_mm = f.disc.x_mm, c.y_mm = f.disc.y_mm;
-    c.area_mm2 = std::numbers::pi * f.disc.radius_mm * f.disc.radius_mm;
+    const double radius_mm = calibration_.indenter_radius_mm > 0 ? calibration_.indenter_radius_mm : f.disc.radius_mm;
+    c.area_mm2 = std::numbers::pi * radius_mm * radius_mm;  // see PressureCalibration::indenter_radius_mm
     c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;
     c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
     c.x_std_mm = f.x_std_mm, c.y_std_mm = f.y_std_mm;
     c.pressure_std_N_per_mm2 = f.pressure_std_N_per_mm2;
     fitted_.push_back(c);
     for (Index k = 0; k < pressure_.size(); ++k)
-      if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= f.disc.radius_mm)
+      if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= radius_mm)
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
   }
   return fitted_;

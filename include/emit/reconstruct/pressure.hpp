@@ -17,6 +17,12 @@ struct PressureCalibration {
   std::optional<ContactLaw> fitted_contact_law;
   /// For contact fitting: the sheet's resistance as the presses showed it (sheet_calibration.hpp).
   std::optional<SheetCorrection> sheet_correction;
+  /// For contact fitting: the calibration presses' indenter radius [mm] (0: unknown). The frame
+  /// pins a contact's total conductance G = g·A, not its area; with eq. 2 that is
+  /// G = A P^(−γ)/α = A^(1+γ) F^(−γ)/α, so at γ ≈ −1.2 the force follows from G almost whatever
+  /// the area (F ∝ A^(1/6) at fixed G) while the pressure does not. Contacts are reported with
+  /// this indenter's area, and force = pressure × that area.
+  double indenter_radius_mm = 0;
 
   /// The uncalibrated default from the sensor: R0/α = 1, so a1 = E, a2 = −1, a3 = 1/γ. It is
   /// monotone in δφ but its scale is arbitrary until calibrated.
