@@ -120,7 +120,56 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
       predictor_(mesh, green),
       noise_V_(reading_noise_V(sensor.adc)),
       lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
-      upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {}
+      upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {
+  build_atoms();
+}
+
+/// The frames of a disc at the contact law's conductance at 0.1 N/mm² on a grid over the sheet
+/// (in units of σ), and their Gram matrix. While the contact's resistance dwarfs the sheet's, each
+/// contact draws a current of its own: a frame with several is close to a positive sum of atoms.
+void ContactFitter::build_atoms() {
+  const double spacing = 1.5 * options_.prior_radius_mm;  // finer than the plausible separation
+  const double g = sensor_.contact.conductance_S_per_mm2(0.1);
+  std::vector<Vector> columns;
+  for (double y = lower_mm_.y() + spacing / 2; y < upper_mm_.y(); y += spacing)
+    for (double x = lower_mm_.x() + spacing / 2; x < upper_mm_.x(); x += spacing) {
+      const Disc d{x, y, options_.prior_radius_mm, g};
+      if (!mesh_.contains_xy(Vector2(x, y))) continue;
+      Vector column;
+      misfit({d}, Vector::Zero(measurements_.size()), column);
+      columns.push_back(column / noise_V_);
+      atom_discs_.push_back(d);
+    }
+  atoms_.resize(measurements_.size(), static_cast<Index>(columns.size()));
+  for (std::size_t a = 0; a < columns.size(); ++a) atoms_.col(static_cast<Index>(a)) = columns[a];
+  atom_gram_ = atoms_.transpose() * atoms_;
+}
+
+/// The pair of atoms, at least the plausible separation apart, whose positive combination best
+/// explains `target` (σ units): a global search for the starts of a two-contact fit, where
+/// seeds from linear images mislead (their peaks sit by the electrodes, and one disc fitted to two
+/// presses settles between them). \return false if no pair has two positive weights.
+bool ContactFitter::best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const {
+  const Vector b = atoms_.transpose() * target;
+  const double min_separation = 3 * options_.prior_radius_mm;
+  double best = 0;
+  for (Index i = 0; i < b.size(); ++i)
+    for (Index j = i + 1; j < b.size(); ++j) {
+      const Disc &p = atom_discs_[static_cast<std::size_t>(i)], &q = atom_discs_[static_cast<std::size_t>(j)];
+      if (std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) < min_separation) continue;
+      // The 2×2 normal equations; the explained sum of squares is wᵀb.
+      const double gii = atom_gram_(i, i), gjj = atom_gram_(j, j), gij = atom_gram_(i, j);
+      const double det = gii * gjj - gij * gij;
+      if (!(det > 1e-12 * gii * gjj)) continue;
+      const double wi = (gjj * b[i] - gij * b[j]) / det, wj = (gii * b[j] - gij * b[i]) / det;
+      if (wi <= 0 || wj <= 0 || wi * b[i] + wj * b[j] <= best) continue;
+      best = wi * b[i] + wj * b[j];
+      // In the current-source regime a disc's frame scales with its conductance.
+      pair = {Disc{p.x_mm, p.y_mm, p.radius_mm, p.conductance_S_per_mm2 * wi},
+              Disc{q.x_mm, q.y_mm, q.radius_mm, q.conductance_S_per_mm2 * wj}};
+    }
+  return best > 0;
+}
 
 Frame ContactFitter::predict(const std::vector<Disc>& discs) {
   load_.clear();
@@ -226,6 +275,38 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   return 2 * summary.final_cost * noise_V_ * noise_V_;
 }
 
+/// Two starts for one more contact at `seed`: the fitted discs as they are plus the seed, and a
+/// split one, the disc nearest the seed mirrored away from it. A single disc fitted to two presses
+/// settles between them, nearer the stronger; kept there, it leads Levenberg–Marquardt into a
+/// local minimum (a strong disc between the presses, a weak one beyond), and a seed at either press
+/// sits beside it. Mirrored, the pair starts near both presses.
+void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const {
+  const Disc added = clamp_seed(seed);
+  starts.push_back(discs);
+  starts.back().push_back(added);
+  const auto distance = [&](const Disc& d) { return std::hypot(d.x_mm - added.x_mm, d.y_mm - added.y_mm); };
+  const auto nearest = std::min_element(discs.begin(), discs.end(), [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
+  // Mirrored less than the plausible separation apart, the pair would be one press anyway.
+  if (2 * distance(*nearest) < 3 * options_.prior_radius_mm) return;
+  std::vector<Disc> split = starts.back();
+  Disc& moved = split[static_cast<std::size_t>(nearest - discs.begin())];
+  moved = clamp_seed({2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
+  starts.push_back(std::move(split));
+}
+
+/// Levenberg–Marquardt from each start. \return whether one gave a plausible fit; `best` and
+/// `best_sq` then hold the lowest misfit's.
+bool ContactFitter::fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best,
+                                   double& best_sq) {
+  bool found = false;
+  for (std::vector<Disc>& start : starts) {
+    if (!plausible_addition(start)) continue;  // a seed beside a contact: not worth a fit
+    const double sq = fit_discs(dV, start);
+    if (plausible_addition(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
+  }
+  return found;
+}
+
 const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& seeds,
                                     const std::function<bool(const Vector&, Disc&)>& residual_peak) {
   if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
@@ -234,30 +315,37 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   std::vector<Disc> discs{clamp_seed(seeds[0])};
   double misfit_sq = fit_discs(dV, discs);
   std::size_t next_seed = 1;
-  bool residual_tried = false;
   Vector residual;
-  // Look for another contact only while the misfit is clearly above the readings' noise. Try the
-  // remaining seeds in turn, then one at the residual's peak.
+  // Look for another contact only while the misfit is clearly above the readings' noise.
   // A strong single press leaves ~2σ (the held radius); a missed second press, tens of σ.
   const auto unexplained = [&] { return misfit_sq > 9 * noise_V_ * noise_V_ * measurements_.size(); };
-  int failed = 0;  // each try costs a fit: give up after a few
-  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained() && failed < 3) {
-    Disc seed;
-    if (next_seed < seeds.size()) {
-      seed = seeds[next_seed++];
-    } else {
+  // The starts for one more contact. First the fit's own proposals: for a second contact the
+  // best pair of atoms (a fresh start of both), and where the linear image of what the fit leaves
+  // unexplained peaks. Then the caller's remaining seeds, one at a time.
+  bool fresh = true;
+  std::vector<std::vector<Disc>> starts;
+  const auto next_starts = [&] {
+    starts.clear();
+    if (fresh) {
+      fresh = false;
+      std::array<Disc, 2> pair;
+      if (discs.size() == 1 && best_atom_pair(dV / noise_V_, pair)) starts.push_back({clamp_seed(pair[0]), clamp_seed(pair[1])});
+      Disc seed;
       this->misfit(discs, dV, residual);
-      if (residual_tried || !residual_peak || !residual_peak(residual, seed)) break;
-      residual_tried = true;
+      if (residual_peak && residual_peak(residual, seed)) add_starts(discs, seed, starts);
+    } else if (next_seed < seeds.size()) {
+      add_starts(discs, seeds[next_seed++], starts);
     }
-    std::vector<Disc> more = discs;
-    more.push_back(clamp_seed(seed));
-    if (!plausible_addition(more)) continue;  // a seed beside a contact: not worth a fit
-    const double more_sq = fit_discs(dV, more);
-    if (plausible_addition(more) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {
+    return !starts.empty();
+  };
+  int failed = 0;  // each try costs a fit or few: give up after a few
+  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained() && failed < 3 && next_starts()) {
+    std::vector<Disc> more;
+    double more_sq = 0;
+    if (fit_best_start(dV, starts, more, more_sq) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {
       discs = std::move(more);
       misfit_sq = more_sq;
-      residual_tried = false;
+      fresh = true;
     } else {
       ++failed;
     }

@@ -85,6 +85,10 @@ class ContactFitter {
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
   bool plausible_addition(const std::vector<Disc>& discs) const;
+  void build_atoms();
+  bool best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const;
+  void add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const;
+  bool fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best, double& best_sq);
   void parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2);
 
   const Sensor& sensor_;
@@ -99,6 +103,8 @@ class ContactFitter {
   Frame frame_;
   FitResult result_;
   std::vector<double> covariance_std_;
+  Matrix atoms_, atom_gram_;       ///< build_atoms()
+  std::vector<Disc> atom_discs_;
 };
 
 }  // namespace emit
