@@ -24,9 +24,11 @@ struct Bench {
   Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 3; return o; }()};
   Frame reference = twin.frame({});
   std::vector<Frame> frames;  // single presses across the sheet
+  std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
   Bench() {
     for (double x : {12.0, 30.0, 47.0})
       for (double y : {14.0, 33.0, 50.0}) frames.push_back(twin.frame({{x, y, 5, 8}}));
+    for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
   }
 };
 
@@ -43,21 +45,31 @@ void BM_PaperFrame(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
 }
 
-void BM_FitFrame(benchmark::State& state) {
+/// Contact fitting over `frames` in turn; cold (seeded from the linear image every frame) or
+/// tracking (each frame started from the last one's contacts).
+void fit_frames(benchmark::State& state, const std::vector<Frame>& frames, bool track) {
   Bench& b = bench();
   ContactFitter fitter(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
-  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor));
+  FrameOptions options;
+  options.track_contacts = track;
+  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor), options);
   reconstructor.use_fitter(&fitter);
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   double evaluations = 0, contacts = 0;
   for (auto _ : state) {
-    contacts += static_cast<double>(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+    const std::size_t back_and_forth = f++ % (2 * frames.size());
+    const std::size_t i = back_and_forth < frames.size() ? back_and_forth : 2 * frames.size() - 1 - back_and_forth;
+    contacts += static_cast<double>(reconstructor.process(frames[i]).size());
     evaluations += reconstructor.fit_result()->evaluations;
   }
   state.counters["evaluations"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
   state.counters["contacts"] = benchmark::Counter(contacts, benchmark::Counter::kAvgIterations);
 }
+
+void BM_FitFrame(benchmark::State& state) { fit_frames(state, bench().frames, false); }
+void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench().moving, false); }
+void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench().moving, true); }
 
 /// One predicted frame for a disc of the fit's size (2.4 mm) on the fit's mesh.
 ContactLoad fit_sized_contact() {
@@ -86,6 +98,8 @@ void BM_PredictSparse(benchmark::State& state) {
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameMovingCold)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameMovingTracked)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PredictWoodbury)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PredictSparse)->Unit(benchmark::kMicrosecond);
 

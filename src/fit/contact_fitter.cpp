@@ -206,6 +206,16 @@ bool ContactFitter::plausible_addition(const std::vector<Disc>& discs) const {
   return std::all_of(discs.begin(), discs.end(), [&](const Disc& d) { return mesh_.contains_xy(Vector2(d.x_mm, d.y_mm)); });
 }
 
+/// Every disc on the sheet and none beside another.
+bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < 3 * options_.prior_radius_mm) return false;
+  }
+  return true;
+}
+
 /// 1σ of each parameter from the Gauss–Newton covariance (JᵀJ)⁻¹ at the solution (residuals are
 /// in units of σ), scaled up by the misfit per degree of freedom where the model misfits more than
 /// the noise. Computed here from the analytic Jacobian rather than by ceres::Covariance, whose
@@ -307,6 +317,45 @@ bool ContactFitter::fit_best_start(const Vector& dV, std::vector<std::vector<Dis
   return found;
 }
 
+/// The result of a fit ending at `discs`: uncertainties, pressures, strongest first.
+void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq) {
+  std::vector<std::array<double, disc_parameters>> parameters;
+  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
+  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * discs.size()), 0.0);
+  parameter_std(dV, parameters, misfit_sq / (noise_V_ * noise_V_));
+  result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    const double* s = covariance_std_.data() + disc_parameters * i;
+    // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
+    const double pressure = sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
+    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3], pressure,
+                                pressure * s[3] / std::abs(sensor_.contact.gamma)});
+  }
+  std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
+    return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >
+           b.disc.conductance_S_per_mm2 * b.disc.radius_mm * b.disc.radius_mm;
+  });
+}
+
+const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>& previous, bool& tracked) {
+  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  result_ = {};
+  tracked = false;
+  if (previous.empty()) return result_;
+  std::vector<Disc> discs = previous;
+  const double misfit_sq = fit_discs(dV, discs);
+  if (misfit_sq > 9 * noise_V_ * noise_V_ * measurements_.size() || !plausible_set(discs)) return result_;
+  // A lifted finger: its disc fades to nothing the readings can see.
+  for (const Disc& d : discs) {
+    zeros_.setZero(measurements_.size());
+    misfit({d}, zeros_, residual_);
+    if (residual_.cwiseAbs().maxCoeff() < 5 * noise_V_) return result_;
+  }
+  tracked = result_.tracked = true;
+  finish(dV, discs, misfit_sq);
+  return result_;
+}
+
 const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& seeds,
                                     const std::function<bool(const Vector&, Disc&)>& residual_peak) {
   if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
@@ -350,22 +399,7 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
       ++failed;
     }
   }
-  std::vector<std::array<double, disc_parameters>> parameters;
-  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
-  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * discs.size()), 0.0);
-  parameter_std(dV, parameters, misfit_sq / (noise_V_ * noise_V_));
-  result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
-  for (std::size_t i = 0; i < discs.size(); ++i) {
-    const double* s = covariance_std_.data() + disc_parameters * i;
-    // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
-    const double pressure = sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
-    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3], pressure,
-                                pressure * s[3] / std::abs(sensor_.contact.gamma)});
-  }
-  std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
-    return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >
-           b.disc.conductance_S_per_mm2 * b.disc.radius_mm * b.disc.radius_mm;
-  });
+  finish(dV, discs, misfit_sq);
   return result_;
 }
 

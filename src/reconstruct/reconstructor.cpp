@@ -28,6 +28,7 @@ void Reconstructor::set_reference(const Frame& reference) {
                        std::to_string(N * N));
   if (!reference.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
   for (int i = 0; i < model_.measurements.size(); ++i) reference_[i] = reference.data()[model_.measurements.frame_index[i]];
+  previous_discs_.clear();  // a new reference starts a new stream
 }
 
 const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
@@ -36,6 +37,14 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
     throw InvalidInput("frame has " + std::to_string(frame.size()) + " values, expected " + std::to_string(N * N));
   for (int i = 0; i < model_.measurements.size(); ++i)
     dV_[i] = frame.data()[model_.measurements.frame_index[i]] - reference_[i];
+  if (fitter_ && options_.track_contacts && !previous_discs_.empty()) {
+    bool tracked = false;
+    fitter_result_ = fitter_->track(dV_, previous_discs_, tracked);
+    if (tracked) {
+      dphi_.setZero();
+      return report_fitted();
+    }
+  }
   dphi_.noalias() = model_.op * dV_;  // paper eq. 7, precomputed
   const double peak = dphi_.maxCoeff();
   const double threshold = options_.threshold_fraction * peak;
@@ -69,7 +78,13 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     return true;
   };
   fitter_result_ = fitter_->fit(dV_, seeds_, residual_peak);
+  return report_fitted();
+}
+
+/// The fit's contacts as the reconstruction reports them, and the picture: each disc at its pressure.
+const std::vector<Contact>& Reconstructor::report_fitted() {
   fitted_.clear();
+  previous_discs_.clear();
   pressure_.setZero();  // the picture: each fitted disc at its pressure
   for (const FittedContact& f : fitter_result_.contacts) {
     Contact c;
@@ -81,6 +96,7 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     c.x_std_mm = f.x_std_mm, c.y_std_mm = f.y_std_mm;
     c.pressure_std_N_per_mm2 = f.pressure_std_N_per_mm2;
     fitted_.push_back(c);
+    previous_discs_.push_back(f.disc);
     for (Index k = 0; k < pressure_.size(); ++k)
       if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= radius_mm)
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);

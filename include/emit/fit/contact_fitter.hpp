@@ -61,6 +61,7 @@ struct FitResult {
   std::vector<FittedContact> contacts;  ///< strongest (largest g·area) first
   double rms_misfit_V = 0;              ///< RMS of predicted − measured over the measurements
   int evaluations = 0;                  ///< frames predicted
+  bool tracked = false;                 ///< started from the last frame's contacts (ContactFitter::track)
 };
 
 class ContactFitter {
@@ -75,6 +76,13 @@ class ContactFitter {
   const FitResult& fit(const Vector& dV, const std::vector<Disc>& seeds,
                        const std::function<bool(const Vector& misfit, Disc& seed)>& residual_peak = {});
 
+  /// Tracking: refits the previous frame's contacts from where they were, in one
+  /// Levenberg–Marquardt run without seeds. `tracked` is false (and the result empty) if that does
+  /// not explain the frame as fit() would accept (misfit above 3σ: a new touch), leaves a
+  /// contact the readings cannot see (5σ: a lifted finger), or an implausible set (two beside
+  /// each other, or one off the sheet); then call fit().
+  const FitResult& track(const Vector& dV, const std::vector<Disc>& previous, bool& tracked);
+
   /// The frame the discs give (N×N), for tests and pictures.
   Frame predict(const std::vector<Disc>& discs);
   double noise_V() const { return noise_V_; }
@@ -85,6 +93,8 @@ class ContactFitter {
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
   bool plausible_addition(const std::vector<Disc>& discs) const;
+  bool plausible_set(const std::vector<Disc>& discs) const;
+  void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);
   void build_atoms();
   bool best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const;
   void add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const;
@@ -103,6 +113,7 @@ class ContactFitter {
   Frame frame_;
   FitResult result_;
   std::vector<double> covariance_std_;
+  Vector residual_, zeros_;
   Matrix atoms_, atom_gram_;       ///< build_atoms()
   std::vector<Disc> atom_discs_;
 };

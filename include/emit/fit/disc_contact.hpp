@@ -46,11 +46,18 @@ class DiscContactIntegrator {
     Eigen::Vector3d centroid_barycentric;
     Eigen::Matrix3d integral;  ///< ∫ φ_i φ_j over the piece / the parent's area
   };
+  void bucket_triangles();
+  void add_triangle(std::size_t t, const Disc& disc, DiscLoad& out, bool derivatives) const;
   const Mesh* mesh_;
   double edge_mm_;
   std::vector<Piece> pieces_;
   std::vector<Vector2> centroid_mm_;
   std::vector<double> reach_mm_;  ///< farthest vertex from the centroid
+  // bucket_triangles(): a grid over the centroids, cell_triangles_ listed cell by cell (row-major).
+  double max_reach_mm_ = 0, cell_mm_ = 1;
+  Vector2 origin_mm_;
+  int columns_ = 1, rows_ = 1;
+  std::vector<int> cell_start_, cell_triangles_;
 };
 
 }  // namespace emit

@@ -16,6 +16,11 @@ namespace emit {
 struct FrameOptions {
   double threshold_fraction = 0.5;  ///< of the image's maximum (paper §2.4)
   double min_contact_area_mm2 = 0;  ///< smaller regions are dropped
+  /// With a fitter: start each frame from the last frame's contacts (ContactFitter::track), and
+  /// seed afresh from the linear image only when that does not explain the frame. A stream of
+  /// frames from a moving finger then costs a fraction of a cold fit; frames that are not a stream
+  /// cost one tracking attempt more. While tracking holds, the linear image is not computed.
+  bool track_contacts = true;
 };
 
 class Reconstructor {
@@ -37,7 +42,7 @@ class Reconstructor {
   /// N×N; the frame's values are not checked here (the readers check them).
   const std::vector<Contact>& process(const Frame& frame);
 
-  const Vector& image() const { return dphi_; }       ///< δφ per element [V]
+  const Vector& image() const { return dphi_; }       ///< δφ per element [V] (0 while tracking holds)
   const Vector& pressure() const { return pressure_; } ///< per element [N/mm²], 0 below threshold
   const Mesh& mesh() const { return model_.mesh; }
 
@@ -52,8 +57,10 @@ class Reconstructor {
   FitResult fitter_result_;
   std::vector<Disc> seeds_;
   std::vector<Contact> fitted_;
+  std::vector<Disc> previous_discs_;  ///< the last frame's fitted contacts, for tracking
   Vector residual_image_;
   const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
+  const std::vector<Contact>& report_fitted();
 };
 
 /// The mean of several frames (the reference is captured as an average). \throw InvalidInput
