@@ -34,8 +34,6 @@ void calibrate_fitting(const CalibrateArgs& args, const Sensor& sensor, const Re
                        Reconstructor& reconstructor, const Frame& reference, const std::vector<Frame>& frames,
                        const PressSequence& truth, const std::function<void(const std::string&)>& say) {
   std::vector<Frame> single;
-  std::vector<Vector> dV;
-  std::vector<Vector2> centres;
   std::vector<double> pressures;
   PressureCalibration calibration;
   calibration.calibrated = true;
@@ -43,24 +41,23 @@ void calibrate_fitting(const CalibrateArgs& args, const Sensor& sensor, const Re
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
     calibration.indenter_radius_mm += truth[f][0].radius_mm;
     single.push_back(frames[f]);
-    dV.push_back(frame_difference(model.measurements, frames[f], reference));
-    centres.emplace_back(truth[f][0].x_mm, truth[f][0].y_mm);
     pressures.push_back(truth[f][0].pressure_N_per_mm2());
   }
   if (single.empty()) throw InvalidInput(args.truth_path + ": no single presses to calibrate on");
   calibration.indenter_radius_mm /= static_cast<double>(single.size());
+  say("meshing the sheet for contact fitting");
+  FitModel fit_model{fit_mesh(sensor), {}};
   if (args.sheet) {
-    say("meshing the sheet for contact fitting");
-    const Mesh mesh = fit_mesh(sensor);
-    const SheetCalibration sheet = calibrate_sheet(sensor, mesh, model.measurements, dV, centres, {}, say);
+    const SheetCalibration sheet = calibrate_sheet(sensor, fit_model.mesh, model.measurements, frames, reference, truth, say);
     calibration.sheet_correction = sheet.correction;
-    const auto [low, high] = sheet.correction.factor_range(mesh);
+    const auto [low, high] = sheet.correction.factor_range(fit_model.mesh);
     std::printf("fitted the sheet's resistance on %d presses: its conductance is %.3f to %.3f times the nominal; "
                 "misfit %.3f mV -> %.3f mV rms\n",
                 sheet.presses, low, high, 1e3 * sheet.rms_misfit_nominal_V, 1e3 * sheet.rms_misfit_corrected_V);
   }
-  const FitModel fit_model =
-      build_fit_model(sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr, say);
+  say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");
+  fit_model.green =
+      fit_green_function(fit_model.mesh, sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
   ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
   reconstructor.use_fitter(&fitter);
   const FittedLawCalibration fitted = calibrate_fitted_contact_law(reconstructor, single, pressures, sensor.contact);

@@ -194,18 +194,6 @@ void evaluate_fit(const EvalCase& c, const Runs& runs, ReconstructionModel model
   std::printf("  (%.0f ms a frame, %d mesh nodes; 2 match: within 2 mm)\n", ms, static_cast<int>(fit_model.mesh.node_count()));
 }
 
-/// The sheet correction `emit calibrate` fits from a run's presses at their known centres.
-SheetCorrection self_calibrated_sheet(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
-                                      const SimulatedRun& run) {
-  std::vector<Vector> dV;
-  std::vector<Vector2> centres;
-  for (std::size_t f = 0; f < run.frames.size(); ++f) {
-    dV.push_back(frame_difference(measurements, run.frames[f], run.reference));
-    centres.emplace_back(run.presses[f].at(0).x_mm, run.presses[f].at(0).y_mm);
-  }
-  return calibrate_sheet(sensor, fit_mesh, measurements, dV, centres).correction;
-}
-
 /// The twin departs from the description; the reconstruction keeps the nominal one (and leaves
 /// out electrodes it finds dead, as `emit reconstruct` does).
 void evaluate_mismatches(const EvalCase& c, const std::string& method, double lambda2, const EvalArgs& args,
@@ -236,9 +224,10 @@ void evaluate_mismatches(const EvalCase& c, const std::string& method, double la
       reconstructor.use_fitter(&fitter);
       const ErrorStats f = localisation_errors(reconstructor, run, 0.5).strongest_contact;
       const SimulatedRun calibration = simulate_run(twin, pressure_presses(c.sensor, c.radius_mm, args.quick ? 10 : 40, args.seed + 100));
-      const SheetCorrection correction = self_calibrated_sheet(c.sensor, fit_model->mesh, model.measurements, calibration);
-      const DenseGreenFunction green = dense_green_function(
-          fit_model->mesh, correction.element_conductance_S(fit_model->mesh, c.sensor.sheet_resistance_ohm_per_sq));
+      const SheetCorrection correction =
+          calibrate_sheet(c.sensor, fit_model->mesh, model.measurements, calibration.frames, calibration.reference, calibration.presses)
+              .correction;
+      const DenseGreenFunction green = fit_green_function(fit_model->mesh, c.sensor, &correction);
       ContactFitter corrected(c.sensor, fit_model->mesh, green, model.measurements);
       reconstructor.use_fitter(&corrected);
       const ErrorStats s = localisation_errors(reconstructor, run, 0.5).strongest_contact;

@@ -98,7 +98,7 @@ TEST(Cli, CalibrateThenReconstruct) {
   EXPECT_NEAR(contacts[0].pressure_N_per_mm2, 12 / (std::numbers::pi * 25), 0.02);
   // Reported with the calibration presses' indenter (radius 5 mm): the force is the press's, to
   // the same 0.02 N/mm² over its 78.5 mm².
-  EXPECT_NEAR(contacts[0].area_mm2, std::numbers::pi * 25, 1e-3);
+  EXPECT_NEAR(contacts[0].area_mm2, std::numbers::pi * 25, 1e-3);  // contacts.jsonl keeps 6 digits
   EXPECT_NEAR(contacts[0].force_N, 12, 0.02 * std::numbers::pi * 25);
   // With its uncertainty: a 1σ between a hundredth and a few tenths of a millimetre (the fit's
   // errors on the twin are ~0.1 mm), and the frame's misfit near the 1 mV noise of the readings.

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/errors.hpp"
+#include "emit/eval/evaluation.hpp"
 #include "emit/fit/fit_model.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -19,27 +20,16 @@
 namespace emit {
 namespace {
 
-struct Presses {
-  std::vector<Vector> dV;
-  std::vector<Vector2> centres;
-};
-
 /// `count` random presses on a twin (its own finer mesh, 12-bit ADC, 1 mV noise) whose sheet
 /// resistance varies linearly along x by ± `variation`.
-Presses twin_presses(const Sensor& sensor, const MeasurementSet& measurements, double variation, int count) {
+SimulatedRun twin_presses(const Sensor& sensor, double variation, int count) {
   TwinOptions options;
   options.mesh_seed = 4;
   options.sheet_resistance_variation = variation;
   Twin twin(sensor, options);
-  const Frame reference = twin.frame({});
   PressStyle style;
   style.radius_mm = 2.5, style.margin_mm = 3.5, style.min_force_N = 0.5, style.max_force_N = 8, style.seed = 5;
-  Presses out;
-  for (const auto& presses : random_script(sensor, count, style)) {
-    out.dV.push_back(frame_difference(measurements, twin.frame(presses), reference));
-    out.centres.emplace_back(presses[0].x_mm, presses[0].y_mm);
-  }
-  return out;
+  return simulate_run(twin, random_script(sensor, count, style), 1);
 }
 
 struct Sheet30 {
@@ -48,10 +38,13 @@ struct Sheet30 {
   MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
 };
 
+SheetCalibration calibrate(const Sheet30& s, const SimulatedRun& run) {
+  return calibrate_sheet(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses);
+}
+
 TEST(SheetCalibration, RecoversTheTwinsResistanceGradient) {
   const Sheet30 s;
-  const Presses p = twin_presses(s.sensor, s.measurements, 0.2, 12);
-  const SheetCalibration c = calibrate_sheet(s.sensor, s.mesh, s.measurements, p.dV, p.centres);
+  const SheetCalibration c = calibrate(s, twin_presses(s.sensor, 0.2, 12));
   // The twin's conductance factor is 1/(1 + 0.2 u), u = 2x/30 − 1. The quadratic's closest
   // approximation of its log misses by the cubic term, 0.2³/3 ≈ 0.003; noise and the two meshes'
   // different discretisations add to that (0.005 measured). 0.01 is a twentieth of the variation.
@@ -70,8 +63,7 @@ TEST(SheetCalibration, RecoversTheTwinsResistanceGradient) {
 
 TEST(SheetCalibration, LeavesANominalSheetAlone) {
   const Sheet30 s;
-  const Presses p = twin_presses(s.sensor, s.measurements, 0.0, 10);
-  const SheetCalibration c = calibrate_sheet(s.sensor, s.mesh, s.measurements, p.dV, p.centres);
+  const SheetCalibration c = calibrate(s, twin_presses(s.sensor, 0.0, 10));
   const auto [low, high] = c.correction.factor_range(s.mesh);
   // What is left is the twin's finer mesh against the fit mesh: under a per cent (0.996 measured),
   // against the ±20 % of the gradient above.
@@ -81,13 +73,16 @@ TEST(SheetCalibration, LeavesANominalSheetAlone) {
 
 TEST(SheetCalibration, RefusesTooFewPressesOrACentreOffTheSheet) {
   const Sheet30 s;
-  const Presses p = twin_presses(s.sensor, s.measurements, 0.0, 8);
-  const std::vector<Vector> few(p.dV.begin(), p.dV.begin() + 7);
-  const std::vector<Vector2> few_centres(p.centres.begin(), p.centres.begin() + 7);
-  EXPECT_THROW(calibrate_sheet(s.sensor, s.mesh, s.measurements, few, few_centres), InvalidInput);
-  std::vector<Vector2> off = p.centres;
-  off[3] = Vector2(45, 10);
-  EXPECT_THROW(calibrate_sheet(s.sensor, s.mesh, s.measurements, p.dV, off), InvalidInput);
+  const SimulatedRun run = twin_presses(s.sensor, 0.0, 8);
+  SimulatedRun few = run;
+  few.frames.pop_back(), few.presses.pop_back();
+  EXPECT_THROW(calibrate(s, few), InvalidInput);
+  SimulatedRun two = run;  // a frame of two presses is left out: that leaves 7
+  two.presses[2].push_back(two.presses[2][0]);
+  EXPECT_THROW(calibrate(s, two), InvalidInput);
+  SimulatedRun off = run;
+  off.presses[3][0].x_mm = 45;  // the 30 mm sheet ends at 30
+  EXPECT_THROW(calibrate(s, off), InvalidInput);
 }
 
 TEST(SheetCalibration, TravelsInTheCalibrationFile) {

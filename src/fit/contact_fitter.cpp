@@ -151,7 +151,7 @@ void ContactFitter::build_atoms() {
 /// presses settles between them). \return false if no pair has two positive weights.
 bool ContactFitter::best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const {
   const Vector b = atoms_.transpose() * target;
-  const double min_separation = 3 * options_.prior_radius_mm;
+  const double min_separation = plausible_separation_mm();
   double best = 0;
   for (Index i = 0; i < b.size(); ++i)
     for (Index j = i + 1; j < b.size(); ++j) {
@@ -196,24 +196,22 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
   return seed;
 }
 
-/// A contact added to a fit is a press only if every disc stays on the sheet (one pushed off it is
-/// the optimiser using it as a fudge) and the new one is not beside another: two small discs side
-/// by side are one large press, modelled by two (the held radius is smaller than most presses).
-bool ContactFitter::plausible_addition(const std::vector<Disc>& discs) const {
-  const Disc& added = discs.back();
-  for (std::size_t i = 0; i + 1 < discs.size(); ++i)
-    if (std::hypot(discs[i].x_mm - added.x_mm, discs[i].y_mm - added.y_mm) < 3 * options_.prior_radius_mm) return false;
-  return std::all_of(discs.begin(), discs.end(), [&](const Disc& d) { return mesh_.contains_xy(Vector2(d.x_mm, d.y_mm)); });
-}
 
-/// Every disc on the sheet and none beside another.
+/// A set of discs is presses only if every disc is on the sheet (one pushed off it is the
+/// optimiser using it as a fudge) and none is beside another: two small discs side by side are
+/// one large press, modelled by two (the held radius is smaller than most presses).
 bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
     if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
-      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < 3 * options_.prior_radius_mm) return false;
+      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < plausible_separation_mm()) return false;
   }
   return true;
+}
+
+/// A strong single press leaves ~2σ RMS (the held radius); a missed second press, tens of σ.
+bool ContactFitter::explained(double misfit_sq) const {
+  return misfit_sq <= 9 * noise_V_ * noise_V_ * measurements_.size();  // 3σ RMS
 }
 
 /// 1σ of each parameter from the Gauss–Newton covariance (JᵀJ)⁻¹ at the solution (residuals are
@@ -297,7 +295,7 @@ void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed,
   const auto distance = [&](const Disc& d) { return std::hypot(d.x_mm - added.x_mm, d.y_mm - added.y_mm); };
   const auto nearest = std::min_element(discs.begin(), discs.end(), [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
   // Mirrored less than the plausible separation apart, the pair would be one press anyway.
-  if (2 * distance(*nearest) < 3 * options_.prior_radius_mm) return;
+  if (2 * distance(*nearest) < plausible_separation_mm()) return;
   std::vector<Disc> split = starts.back();
   Disc& moved = split[static_cast<std::size_t>(nearest - discs.begin())];
   moved = clamp_seed({2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
@@ -310,9 +308,9 @@ bool ContactFitter::fit_best_start(const Vector& dV, std::vector<std::vector<Dis
                                    double& best_sq) {
   bool found = false;
   for (std::vector<Disc>& start : starts) {
-    if (!plausible_addition(start)) continue;  // a seed beside a contact: not worth a fit
+    if (!plausible_set(start)) continue;  // a seed beside a contact: not worth a fit
     const double sq = fit_discs(dV, start);
-    if (plausible_addition(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
+    if (plausible_set(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
   }
   return found;
 }
@@ -337,21 +335,20 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
   });
 }
 
-const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>& previous, bool& tracked) {
+const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>& previous) {
   if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
   result_ = {};
-  tracked = false;
   if (previous.empty()) return result_;
   std::vector<Disc> discs = previous;
   const double misfit_sq = fit_discs(dV, discs);
-  if (misfit_sq > 9 * noise_V_ * noise_V_ * measurements_.size() || !plausible_set(discs)) return result_;
+  if (!explained(misfit_sq) || !plausible_set(discs)) return result_;
   // A lifted finger: its disc fades to nothing the readings can see.
   for (const Disc& d : discs) {
     zeros_.setZero(measurements_.size());
     misfit({d}, zeros_, residual_);
     if (residual_.cwiseAbs().maxCoeff() < 5 * noise_V_) return result_;
   }
-  tracked = result_.tracked = true;
+  result_.tracked = true;
   finish(dV, discs, misfit_sq);
   return result_;
 }
@@ -366,8 +363,6 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   std::size_t next_seed = 1;
   Vector residual;
   // Look for another contact only while the misfit is clearly above the readings' noise.
-  // A strong single press leaves ~2σ (the held radius); a missed second press, tens of σ.
-  const auto unexplained = [&] { return misfit_sq > 9 * noise_V_ * noise_V_ * measurements_.size(); };
   // The starts for one more contact. First the fit's own proposals: for a second contact the
   // best pair of atoms (a fresh start of both), and where the linear image of what the fit leaves
   // unexplained peaks. Then the caller's remaining seeds, one at a time.
@@ -388,7 +383,7 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     return !starts.empty();
   };
   int failed = 0;  // each try costs a fit or few: give up after a few
-  while (static_cast<int>(discs.size()) < options_.max_contacts && unexplained() && failed < 3 && next_starts()) {
+  while (static_cast<int>(discs.size()) < options_.max_contacts && !explained(misfit_sq) && failed < 3 && next_starts()) {
     std::vector<Disc> more;
     double more_sq = 0;
     if (fit_best_start(dV, starts, more, more_sq) && more_sq <= (1 - options_.new_contact_gain) * misfit_sq) {

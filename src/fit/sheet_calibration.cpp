@@ -39,7 +39,6 @@ class PressesMisfit {
   }
 
   int residual_count() const { return measurements_.size() * static_cast<int>(dV_.size()); }
-  int evaluations() const { return evaluations_; }
 
   SheetCorrection correction(const double* theta) const {
     SheetCorrection c = box_;
@@ -49,7 +48,6 @@ class PressesMisfit {
 
   /// For ceres::DynamicNumericDiffCostFunction.
   bool operator()(double const* const* theta, double* residuals) const {
-    ++evaluations_;
     const SheetCorrection c = correction(theta[0]);
     const DenseGreenFunction green =
         dense_green_function(mesh_, c.element_conductance_S(mesh_, sensor_.sheet_resistance_ohm_per_sq), columns_);
@@ -97,7 +95,6 @@ class PressesMisfit {
   mutable std::vector<double> log_g_;
   mutable std::vector<Eigen::Matrix3d> scaled_;
   mutable Frame frame_, d_frame_;
-  mutable int evaluations_ = 0;
 };
 
 /// θ_k / σ_θ: a weak prior, so that a term the presses cannot see stays at 0.
@@ -186,8 +183,21 @@ SheetCalibration calibrate_sheet(const Sensor& sensor, const Mesh& fit_mesh, con
   result.correction = misfit->correction(theta.data());
   if (!(*misfit)(values, residuals.data())) throw SolverError("sheet calibration: the corrected sheet's fit failed");
   result.rms_misfit_corrected_V = rms_V(residuals, noise_V);
-  result.evaluations = misfit->evaluations();
   return result;
+}
+
+SheetCalibration calibrate_sheet(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
+                                 const std::vector<Frame>& frames, const Frame& reference, const PressSequence& presses,
+                                 const std::function<void(const std::string&)>& progress) {
+  if (frames.size() != presses.size()) throw InvalidInput("sheet calibration: one set of presses per frame is needed");
+  std::vector<Vector> dV;
+  std::vector<Vector2> centres;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (presses[f].size() != 1) continue;  // a single press's centre is known; two mix
+    dV.push_back(frame_difference(measurements, frames[f], reference));
+    centres.emplace_back(presses[f][0].x_mm, presses[f][0].y_mm);
+  }
+  return calibrate_sheet(sensor, fit_mesh, measurements, dV, centres, {}, progress);
 }
 
 }  // namespace emit

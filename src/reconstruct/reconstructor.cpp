@@ -38,9 +38,8 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
   for (int i = 0; i < model_.measurements.size(); ++i)
     dV_[i] = frame.data()[model_.measurements.frame_index[i]] - reference_[i];
   if (fitter_ && options_.track_contacts && !previous_discs_.empty()) {
-    bool tracked = false;
-    fitter_result_ = fitter_->track(dV_, previous_discs_, tracked);
-    if (tracked) {
+    fitter_result_ = fitter_->track(dV_, previous_discs_);
+    if (fitter_result_.tracked) {
       dphi_.setZero();
       return report_fitted();
     }

@@ -77,11 +77,11 @@ class ContactFitter {
                        const std::function<bool(const Vector& misfit, Disc& seed)>& residual_peak = {});
 
   /// Tracking: refits the previous frame's contacts from where they were, in one
-  /// Levenberg–Marquardt run without seeds. `tracked` is false (and the result empty) if that does
+  /// Levenberg–Marquardt run without seeds. The result is empty, not `tracked`, if that does
   /// not explain the frame as fit() would accept (misfit above 3σ: a new touch), leaves a
   /// contact the readings cannot see (5σ: a lifted finger), or an implausible set (two beside
   /// each other, or one off the sheet); then call fit().
-  const FitResult& track(const Vector& dV, const std::vector<Disc>& previous, bool& tracked);
+  const FitResult& track(const Vector& dV, const std::vector<Disc>& previous);
 
   /// The frame the discs give (N×N), for tests and pictures.
   Frame predict(const std::vector<Disc>& discs);
@@ -92,8 +92,10 @@ class ContactFitter {
   double fit_discs(const Vector& dV, std::vector<Disc>& discs);
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
-  bool plausible_addition(const std::vector<Disc>& discs) const;
   bool plausible_set(const std::vector<Disc>& discs) const;
+  bool explained(double misfit_sq) const;
+  /// Two contacts closer than this are one press (three held radii).
+  double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
   void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);
   void build_atoms();
   bool best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const;

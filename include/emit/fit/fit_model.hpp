@@ -22,6 +22,10 @@ struct FitModel {
 /// The fit mesh alone (build_fit_model's first stage).
 Mesh fit_mesh(const Sensor& sensor);
 
+/// Its Green's function (the second stage), on the nominal sheet or, given a correction, the
+/// calibrated one.
+DenseGreenFunction fit_green_function(const Mesh& fit_mesh, const Sensor& sensor, const SheetCorrection* correction);
+
 /// \param correction  the sheet's fitted resistance correction, if calibrated (else nominal)
 /// \param progress    told each stage's name as it starts (may be empty).
 FitModel build_fit_model(const Sensor& sensor, const SheetCorrection* correction = nullptr,

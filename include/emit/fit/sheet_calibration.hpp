@@ -14,6 +14,7 @@
 
 #include "emit/fit/contact_fitter.hpp"
 #include "emit/fit/sheet_correction.hpp"
+#include "emit/twin/press.hpp"
 
 namespace emit {
 
@@ -22,7 +23,7 @@ struct SheetCalibration {
   /// RMS of predicted − measured over the presses' readings [V], with the press at its true
   /// centre and its conductance fitted, on the nominal sheet and on the corrected one.
   double rms_misfit_nominal_V = 0, rms_misfit_corrected_V = 0;
-  int presses = 0, evaluations = 0;
+  int presses = 0;
 };
 
 /// \param dV          per press, one value per measurement (frame − no-contact reference)
@@ -33,6 +34,12 @@ struct SheetCalibration {
 SheetCalibration calibrate_sheet(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
                                  const std::vector<Vector>& dV, const std::vector<Vector2>& centres_mm,
                                  const FitOptions& options = {},
+                                 const std::function<void(const std::string&)>& progress = {});
+
+/// The same from calibration frames and their presses (`emit calibrate`'s inputs): the
+/// single-press frames, less the no-contact reference, at their presses' centres.
+SheetCalibration calibrate_sheet(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
+                                 const std::vector<Frame>& frames, const Frame& reference, const PressSequence& presses,
                                  const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace emit
