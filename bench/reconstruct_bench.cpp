@@ -1,7 +1,8 @@
 // The online path per frame on the default sensor: the paper method (one matrix-vector product,
-// threshold, contacts) and contact fitting (seeded by it); and the fit's inner step, a predicted
-// frame, by Woodbury on the contact's patch against the sparse forward model on the same mesh
-// (the baseline it replaces), in the same run.
+// threshold, contacts; and the product alone, compact against the dense baseline) and contact
+// fitting (seeded by it); and the fit's inner step, a predicted frame, by Woodbury on the
+// contact's patch against the sparse forward model on the same mesh (the baseline it replaces),
+// in the same run.
 #include <benchmark/benchmark.h>
 
 #include "emit/fem/forward_model.hpp"
@@ -10,6 +11,7 @@
 #include "emit/reconstruct/reconstruction_model.hpp"
 #include "emit/reconstruct/reconstructor.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/threads.hpp"
 #include "emit/twin/press_contact.hpp"
 #include "emit/twin/twin.hpp"
 
@@ -26,6 +28,7 @@ struct Bench {
   std::vector<Frame> frames;  // single presses across the sheet
   std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
   Bench() {
+    set_thread_count(1);
     for (double x : {12.0, 30.0, 47.0})
       for (double y : {14.0, 33.0, 50.0}) frames.push_back(twin.frame({{x, y, 5, 8}}));
     for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
@@ -43,6 +46,35 @@ void BM_PaperFrame(benchmark::State& state) {
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+/// The paper method's image alone, δφ = R·δV: the compact operator the per-frame path applies
+/// (truncated, single precision, BLAS), against the full dense product it replaces (the baseline).
+Vector bench_difference() {
+  Bench& b = bench();
+  return frame_difference(b.model.measurements, b.frames[0], b.reference);
+}
+
+void BM_PaperImageCompact(benchmark::State& state) {
+  Bench& b = bench();
+  const Vector dV = bench_difference();
+  Vector image(b.model.op().rows());
+  CompactOperatorScratch scratch = b.model.compact_op().scratch();
+  for (auto _ : state) {
+    b.model.compact_op().apply(dV, image, scratch);
+    benchmark::DoNotOptimize(image.data());
+  }
+  state.counters["rank"] = static_cast<double>(b.model.compact_op().rank());
+}
+
+void BM_PaperImageDense(benchmark::State& state) {
+  Bench& b = bench();
+  const Vector dV = bench_difference();
+  Vector image(b.model.op().rows());
+  for (auto _ : state) {
+    image.noalias() = b.model.op() * dV;
+    benchmark::DoNotOptimize(image.data());
+  }
 }
 
 /// Contact fitting over `frames` in turn; cold (seeded from the linear image every frame) or
@@ -97,6 +129,8 @@ void BM_PredictSparse(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingTracked)->Unit(benchmark::kMillisecond);

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "emit/errors.hpp"
+#include "emit/threads.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
@@ -13,6 +14,11 @@ int main(int argc, char** argv) {
   app.name("emit");
   app.set_version_flag("--version", "emit 0.1.0");
   app.require_subcommand(1);
+  int threads = 1;
+  emit::set_thread_count(threads);
+  app.add_option("--threads", threads, "threads for the linear algebra (default 1)")
+      ->check(CLI::PositiveNumber)
+      ->each([](const std::string& count) { emit::set_thread_count(std::stoi(count)); });
   emit::cli::add_mesh_command(app);
   emit::cli::add_simulate_command(app);
   emit::cli::add_reconstruct_command(app);

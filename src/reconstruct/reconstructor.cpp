@@ -16,7 +16,8 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, PressureCalibrati
       dV_(model.measurements.size()),
       dphi_(model.mesh.triangle_count()),
       pressure_(model.mesh.triangle_count()),
-      selected_(static_cast<std::size_t>(model.mesh.triangle_count())) {
+      selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
+      operator_scratch_(model.compact_op().scratch()) {
   if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
     throw InvalidInput("threshold must be a fraction between 0 and 1, got " + std::to_string(options.threshold_fraction));
 }
@@ -44,14 +45,10 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
       return report_fitted();
     }
   }
-  dphi_.noalias() = model_.op * dV_;  // paper eq. 7, precomputed
+  model_.compact_op().apply(dV_, dphi_, operator_scratch_);  // paper eq. 7, precomputed
   const double peak = dphi_.maxCoeff();
   const double threshold = options_.threshold_fraction * peak;
-  for (Index k = 0; k < dphi_.size(); ++k) {
-    const bool on = peak > 0 && dphi_[k] >= threshold;
-    selected_[static_cast<std::size_t>(k)] = on;
-    pressure_[k] = on ? calibration_.pressure_N_per_mm2(dphi_[k]) : 0.0;  // paper eq. 8
-  }
+  calibration_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
   const std::vector<Contact>& linear = finder_.find(selected_, pressure_, dphi_, options_.min_contact_area_mm2);
   return fitter_ ? fit_contacts(linear) : linear;
 }
@@ -70,7 +67,8 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
   }
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
   const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
-    residual_image_.noalias() = model_.op * (-misfit);
+    negated_misfit_ = -misfit;
+    model_.compact_op().apply(negated_misfit_, residual_image_, operator_scratch_);
     Index peak;
     if (residual_image_.maxCoeff(&peak) <= 0) return false;
     seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};

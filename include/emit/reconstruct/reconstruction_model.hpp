@@ -7,18 +7,28 @@
 #include <vector>
 
 #include "emit/mesh/mesh.hpp"
+#include "emit/reconstruct/compact_operator.hpp"
 #include "emit/reconstruct/measurements.hpp"
 #include "emit/reconstruct/reconstruction_operator.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
-struct ReconstructionModel {
+class ReconstructionModel {
+ public:
   Mesh mesh;
   MeasurementSet measurements;
   OperatorOptions options;
-  Matrix op;  ///< #F by M
   bool loaded_from_cache = false;
+
+  const Matrix& op() const { return op_; }                       ///< R, #F by M
+  const CompactOperator& compact_op() const { return compact_; }  ///< R as the per-frame path applies it
+  /// Sets R and builds its compact form (options.rank_cutoff).
+  void set_operator(Matrix op);
+
+ private:
+  Matrix op_;
+  CompactOperator compact_;
 };
 
 /// \param cache_dir  where to look for and store the operator; empty: no cache.

@@ -24,6 +24,9 @@ struct OperatorOptions {
   /// 30 mm sheets (~6–8k triangles), so that is the default.
   double lambda2 = 1.0e4;
   double noser_exponent = 0.5;   ///< p for the NOSER prior
+  /// Per frame, R is applied truncated to its singular values above this fraction of the
+  /// largest (compact_operator.hpp); 0 keeps them all.
+  double rank_cutoff = 1.0 / 4096;
 };
 
 /// "paper" (Q = I, λ² = 10⁴), "noser" (λ² = 1.5·10³), "laplacian" (λ² = 6·10⁵): each at the

@@ -1,0 +1,77 @@
+// The per-frame form of the reconstruction operator: truncated and in single precision, it must
+// stay within the bound it documents of the full operator, on real frames.
+#include "emit/reconstruct/compact_operator.hpp"
+
+#include <gtest/gtest.h>
+
+#include "emit/errors.hpp"
+#include "emit/reconstruct/reconstruction_model.hpp"
+#include "emit/reconstruct/reconstructor.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/twin.hpp"
+
+namespace emit {
+namespace {
+
+// Single precision adds to the truncation bound a rounding of about k·2⁻²⁴ ≈ 1e-5 (k ≤ 240
+// products of float values, relative to s₁‖δV‖); 3e-5 leaves room for its accumulation.
+constexpr double float_rounding = 3e-5;
+
+struct Frames {
+  Sensor sensor = default_sensor();
+  ReconstructionModel model;
+  std::vector<Vector> differences;
+  Frames() {
+    sensor.mesh.element_size_mm = 3.0;
+    model = build_reconstruction_model(sensor, method_options("paper"), "");
+    Twin twin(sensor);
+    const Frame reference = twin.frame({});
+    for (const auto& presses : std::vector<std::vector<Press>>{
+             {{30, 30, 5, 10}}, {{8, 50, 4, 20}}, {{15, 15, 5, 5}, {45, 40, 5, 30}}, {{55, 30, 3, 2}}})
+      differences.push_back(frame_difference(model.measurements, twin.frame(presses), reference));
+  }
+};
+
+/// ‖compact·δV − R·δV‖ / (s₁‖δV‖), the worst over the frames.
+double worst_relative_change(const Frames& f, const CompactOperator& compact) {
+  CompactOperatorScratch scratch;
+  Vector image;
+  double worst = 0;
+  for (const Vector& dV : f.differences) {
+    compact.apply(dV, image, scratch);
+    const Vector full = f.model.op() * dV;
+    worst = std::max(worst, (image - full).norm() / (compact.largest_singular_value() * dV.norm()));
+  }
+  return worst;
+}
+
+TEST(CompactOperator, StaysWithinItsBoundOfTheFullOperator) {
+  const Frames f;
+  const CompactOperator& compact = f.model.compact_op();
+  // The point of it: far fewer than M = 240 singular values matter (~106 on the default mesh).
+  EXPECT_LT(compact.rank(), f.model.op().cols() / 2);
+  EXPECT_LE(compact.truncation_bound(), 1.0 / 4096);
+  const double change = worst_relative_change(f, compact);
+  std::printf("rank %lld of %lld, bound %.2e, worst change on frames %.2e\n", static_cast<long long>(compact.rank()),
+              static_cast<long long>(compact.cols()), compact.truncation_bound(), change);
+  EXPECT_LE(change, compact.truncation_bound() + float_rounding);
+}
+
+TEST(CompactOperator, KeepsEverySingularValueWithoutACutoff) {
+  const Frames f;
+  const CompactOperator untruncated(f.model.op(), 0.0);
+  EXPECT_EQ(untruncated.truncation_bound(), 0.0);
+  EXPECT_LE(worst_relative_change(f, untruncated), float_rounding);
+}
+
+TEST(CompactOperator, RejectsABadCutoffAndAFrameOfTheWrongSize) {
+  const Frames f;
+  EXPECT_THROW(CompactOperator(f.model.op(), 1.0), InvalidInput);
+  EXPECT_THROW(CompactOperator(f.model.op(), -0.1), InvalidInput);
+  CompactOperatorScratch scratch;
+  Vector image;
+  EXPECT_THROW(f.model.compact_op().apply(Vector::Zero(7), image, scratch), InvalidInput);
+}
+
+}  // namespace
+}  // namespace emit
