@@ -53,7 +53,8 @@ class ContactFinder {
   std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
   std::vector<double> areas_mm2_;
   std::vector<Vector2> centroids_mm_;
-  std::vector<int> label_, stack_;  ///< scratch
+  std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
+  std::vector<int> stack_;             ///< scratch
   std::vector<Contact> contacts_;   ///< output, capacity #F
   std::vector<int> peak_elements_;
   std::vector<Vector2> peaks_;
