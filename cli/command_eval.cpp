@@ -120,10 +120,10 @@ double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel&
   double best_lambda2 = 0;
   for (double lambda2 : sweep) {
     model.options.lambda2 = lambda2;
-    model.set_operator(family.operator_for(lambda2));
+    model.op = family.compact_operator_for(lambda2, model.options.rank_cutoff);
     Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));
     const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
-    const LCurvePoint l = l_curve_point(J, model.op(), model.measurements, runs.grid);
+    const LCurvePoint l = l_curve_point(J, model.op, model.measurements, runs.grid);
     curve.lambda2.push_back(lambda2);
     curve.mean_error_mm.push_back(r.image_centroid.mean);
     curve.residual_norm_V.push_back(l.residual_norm_V);
@@ -138,7 +138,7 @@ double evaluate_method(const EvalCase& c, const Runs& runs, ReconstructionModel&
               e.median, e.p95, best.strongest_contact.mean);
   if (c.pressure_and_two_press) {
     model.options.lambda2 = best_lambda2;
-    model.set_operator(family.operator_for(best_lambda2));
+    model.op = family.compact_operator_for(best_lambda2, model.options.rank_cutoff);
     Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));
     const PressureResult p = pressure_errors(reconstructor, runs.calibration, runs.test, 0.5);
     const TwoPressResult two = two_press_rates(reconstructor, runs.two_press, 0.4 * c.radius_mm * 4);
@@ -175,7 +175,7 @@ double fit_pressure_error(Reconstructor& reconstructor, const EvalCase& c, const
 /// Model-based contact fitting, seeded by the paper method's image.
 void evaluate_fit(const EvalCase& c, const Runs& runs, ReconstructionModel model, const Matrix& J) {
   model.options = method_options("paper");
-  model.set_operator(build_reconstruction_operator(J, model.mesh, model.options));
+  model.op = build_compact_operator(J, model.mesh, model.options);
   const FitModel fit_model = build_fit_model(c.sensor);
   ContactFitter fitter(c.sensor, fit_model.mesh, fit_model.green, model.measurements);
   Reconstructor reconstructor(model, PressureCalibration::uncalibrated(c.sensor));

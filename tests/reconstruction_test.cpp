@@ -47,7 +47,9 @@ TEST(Reconstruction, OperatorCacheLoadsAndRebuildsWhenTheSensorChanges) {
   EXPECT_FALSE(first.loaded_from_cache);
   const ReconstructionModel second = build_reconstruction_model(sensor, method_options("paper"), cache);
   EXPECT_TRUE(second.loaded_from_cache);
-  EXPECT_EQ((second.op() - first.op()).cwiseAbs().maxCoeff(), 0.0);  // bit-exact from disk
+  EXPECT_EQ((second.op.left() - first.op.left()).cwiseAbs().maxCoeff(), 0.0);  // bit-exact from disk
+  EXPECT_EQ((second.op.right() - first.op.right()).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(second.op.truncation_bound(), first.op.truncation_bound());
   OperatorOptions other_lambda = method_options("paper");
   other_lambda.lambda2 = 123;
   EXPECT_FALSE(build_reconstruction_model(sensor, other_lambda, cache).loaded_from_cache);

@@ -87,12 +87,14 @@ TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun&
   return result;
 }
 
-LCurvePoint l_curve_point(const Matrix& J, const Matrix& op, const MeasurementSet& measurements,
+LCurvePoint l_curve_point(const Matrix& J, const CompactOperator& op, const MeasurementSet& measurements,
                           const SimulatedRun& run) {
   LCurvePoint point;
+  CompactOperatorScratch scratch = op.scratch();
+  Vector dphi;
   for (const Frame& frame : run.frames) {
     const Vector dV = frame_difference(measurements, frame, run.reference);
-    const Vector dphi = op * dV;
+    op.apply(dV, dphi, scratch);
     point.residual_norm_V += (J * dphi - dV).norm();
     point.solution_norm_V += dphi.norm();
   }

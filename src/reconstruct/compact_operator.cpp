@@ -24,6 +24,17 @@ CompactOperator::CompactOperator(const Matrix& op, double relative_cutoff) {
   right_ = V.leftCols(k).transpose().cast<float>();
 }
 
+CompactOperator::CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound,
+                                 double largest_singular_value)
+    : left_(std::move(left)),
+      right_(std::move(right)),
+      truncation_bound_(truncation_bound),
+      largest_singular_value_(largest_singular_value) {
+  if (left_.cols() != right_.rows())
+    throw InvalidInput("compact operator: factors of " + std::to_string(left_.cols()) + " and " +
+                       std::to_string(right_.rows()) + " singular values");
+}
+
 CompactOperatorScratch CompactOperator::scratch() const {
   return {Eigen::VectorXf(cols()), Eigen::VectorXf(rank()), Eigen::VectorXf(rows())};
 }

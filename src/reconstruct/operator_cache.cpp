@@ -17,7 +17,7 @@ namespace emit {
 
 namespace {
 
-constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '1'};
+constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '2'};  // 2: compact factors in float
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 1469598103934665603ull) {
   const auto* bytes = static_cast<const unsigned char*>(data);
@@ -55,47 +55,72 @@ std::string operator_cache_key(const Sensor& sensor, const Mesh& mesh, const Mea
                                const OperatorOptions& options) {
   std::ostringstream key;
   key.precision(17);
-  key << "emit-operator-v1|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
+  key << "emit-operator-v2|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
       << "|triangles:" << mesh.triangle_count() << "|measurements:";
   for (int i : measurements.frame_index) key << i << ',';
   key << "|prior:" << prior_name(options.prior) << "|lambda2:" << options.lambda2
-      << "|noser_exponent:" << options.noser_exponent;
+      << "|noser_exponent:" << options.noser_exponent << "|rank_cutoff:" << options.rank_cutoff;
   return key.str();
 }
 
-std::optional<Matrix> load_cached_operator(const std::string& cache_dir, const std::string& key) {
+namespace {
+
+template <class T>
+bool read_value(std::istream& in, T& value) {
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(&value), sizeof value));
+}
+
+template <class T>
+void write_value(std::ostream& out, const T& value) {
+  out.write(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+bool read_floats(std::istream& in, Eigen::MatrixXf& m) {
+  return static_cast<bool>(in.read(reinterpret_cast<char*>(m.data()), static_cast<std::streamsize>(sizeof(float) * m.size())));
+}
+
+void write_floats(std::ostream& out, const Eigen::MatrixXf& m) {
+  out.write(reinterpret_cast<const char*>(m.data()), static_cast<std::streamsize>(sizeof(float) * m.size()));
+}
+
+}  // namespace
+
+std::optional<CompactOperator> load_cached_operator(const std::string& cache_dir, const std::string& key) {
   std::ifstream in(path_for(cache_dir, key), std::ios::binary);
   if (!in) return std::nullopt;
   char file_magic[8];
   std::uint64_t key_size = 0;
   if (!in.read(file_magic, 8) || std::string(file_magic, 8) != std::string(magic, 8)) return std::nullopt;
-  if (!in.read(reinterpret_cast<char*>(&key_size), sizeof key_size) || key_size != key.size()) return std::nullopt;
+  if (!read_value(in, key_size) || key_size != key.size()) return std::nullopt;
   std::string file_key(key_size, '\0');
   if (!in.read(file_key.data(), static_cast<std::streamsize>(key_size)) || file_key != key) return std::nullopt;
-  std::int64_t rows = 0, cols = 0;
-  if (!in.read(reinterpret_cast<char*>(&rows), sizeof rows) || !in.read(reinterpret_cast<char*>(&cols), sizeof cols) ||
-      rows <= 0 || cols <= 0 || rows > (1 << 26) || cols > (1 << 20))
+  std::int64_t rows = 0, cols = 0, rank = 0;
+  double bound = 0, largest = 0;
+  if (!read_value(in, rows) || !read_value(in, cols) || !read_value(in, rank) || !read_value(in, bound) ||
+      !read_value(in, largest) || rows <= 0 || cols <= 0 || rank < 0 || rank > cols || rows > (1 << 26) ||
+      cols > (1 << 20))
     return std::nullopt;
-  Matrix op(rows, cols);
-  if (!in.read(reinterpret_cast<char*>(op.data()), static_cast<std::streamsize>(sizeof(double) * op.size())))
-    return std::nullopt;
-  return op;
+  Eigen::MatrixXf left(rows, rank), right(rank, cols);
+  if (!read_floats(in, left) || !read_floats(in, right)) return std::nullopt;
+  return CompactOperator(std::move(left), std::move(right), bound, largest);
 }
 
-void store_cached_operator(const std::string& cache_dir, const std::string& key, const Matrix& op) {
+void store_cached_operator(const std::string& cache_dir, const std::string& key, const CompactOperator& op) {
   std::error_code error;
   std::filesystem::create_directories(cache_dir, error);
   if (error) throw IoError(cache_dir + ": cannot create cache folder (" + error.message() + ")");
   AtomicFile file(path_for(cache_dir, key));
   auto& out = file.stream();
-  const std::uint64_t key_size = key.size();
-  const std::int64_t rows = op.rows(), cols = op.cols();
   out.write(magic, 8);
-  out.write(reinterpret_cast<const char*>(&key_size), sizeof key_size);
+  write_value(out, static_cast<std::uint64_t>(key.size()));
   out.write(key.data(), static_cast<std::streamsize>(key.size()));
-  out.write(reinterpret_cast<const char*>(&rows), sizeof rows);
-  out.write(reinterpret_cast<const char*>(&cols), sizeof cols);
-  out.write(reinterpret_cast<const char*>(op.data()), static_cast<std::streamsize>(sizeof(double) * op.size()));
+  write_value(out, static_cast<std::int64_t>(op.rows()));
+  write_value(out, static_cast<std::int64_t>(op.cols()));
+  write_value(out, static_cast<std::int64_t>(op.rank()));
+  write_value(out, op.truncation_bound());
+  write_value(out, op.largest_singular_value());
+  write_floats(out, op.left());
+  write_floats(out, op.right());
   file.commit();
 }
 

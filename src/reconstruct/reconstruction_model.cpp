@@ -6,11 +6,6 @@
 
 namespace emit {
 
-void ReconstructionModel::set_operator(Matrix op) {
-  compact_ = CompactOperator(op, options.rank_cutoff);
-  op_ = std::move(op);
-}
-
 ReconstructionModel build_reconstruction_model(const Sensor& sensor, const OperatorOptions& options,
                                                const std::string& cache_dir, const std::vector<int>& excluded,
                                                const std::function<void(const std::string&)>& progress) {
@@ -26,17 +21,17 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   if (!cache_dir.empty()) {
     if (auto cached = load_cached_operator(cache_dir, key);
         cached && cached->rows() == model.mesh.triangle_count() && cached->cols() == model.measurements.size()) {
-      model.set_operator(std::move(*cached));
+      model.op = std::move(*cached);
       model.loaded_from_cache = true;
       say("loaded the operator from the cache");
       return model;
     }
   }
   say("computing the Jacobian");
-  const Matrix J = compute_jacobian(model.mesh, model.measurements);
+  Matrix J = compute_jacobian(model.mesh, model.measurements);
   say("building the operator");
-  model.set_operator(build_reconstruction_operator(J, model.mesh, options));
-  if (!cache_dir.empty()) store_cached_operator(cache_dir, key, model.op());
+  model.op = build_compact_operator(std::move(J), model.mesh, options);
+  if (!cache_dir.empty()) store_cached_operator(cache_dir, key, model.op);
   return model;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include <Eigen/Dense>
 
@@ -59,13 +60,13 @@ SparseMatrix element_laplacian(const Mesh& mesh) {
 
 namespace {
 
-/// Q⁻¹Jᵀ (#F by M) for the chosen prior.
-Matrix prior_inverse_times_jt(const Matrix& J, const Mesh& mesh, const OperatorOptions& options) {
-  switch (options.prior) {
+/// Q⁻¹Jᵀ (#F by M) for a prior other than the identity (for Q = I it is Jᵀ, never formed).
+Matrix prior_inverse_times_jt(const Matrix& J, const Mesh& mesh, Prior prior, double noser_exponent) {
+  switch (prior) {
     case Prior::identity: return J.transpose();
     case Prior::noser: {
       // diag(JᵀJ)^p; columns that see nothing (all zero) get the mean so Q stays invertible.
-      Vector q = J.colwise().squaredNorm().transpose().array().pow(options.noser_exponent);
+      Vector q = J.colwise().squaredNorm().transpose().array().pow(noser_exponent);
       const double mean = q.mean();
       for (Index k = 0; k < q.size(); ++k)
         if (!(q[k] > 0)) q[k] = mean;
@@ -86,29 +87,81 @@ Matrix prior_inverse_times_jt(const Matrix& J, const Mesh& mesh, const OperatorO
   throw std::logic_error("unknown prior");
 }
 
+void check_lambda2(double lambda2) {
+  if (!(lambda2 > 0) || !std::isfinite(lambda2))
+    throw InvalidInput("lambda2 must be positive, got " + std::to_string(lambda2));
+}
+
 }  // namespace
 
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options) {
   return OperatorFamily(J, mesh, options.prior, options.noser_exponent).operator_for(options.lambda2);
 }
 
-OperatorFamily::OperatorFamily(const Matrix& J, const Mesh& mesh, Prior prior, double noser_exponent) {
-  OperatorOptions options;
-  options.prior = prior;
-  options.noser_exponent = noser_exponent;
-  const Matrix QiJt = prior_inverse_times_jt(J, mesh, options);  // #F × M
-  const Matrix H = J * QiJt;                                     // M × M, symmetric positive semi-definite
+CompactOperator build_compact_operator(Matrix J, const Mesh& mesh, const OperatorOptions& options) {
+  return OperatorFamily(std::move(J), mesh, options.prior, options.noser_exponent)
+      .compact_operator_for(options.lambda2, options.rank_cutoff);
+}
+
+OperatorFamily::OperatorFamily(Matrix J, const Mesh& mesh, Prior prior, double noser_exponent) : prior_(prior) {
+  Matrix H;  // J Q⁻¹ Jᵀ, M × M, symmetric positive semi-definite
+  if (prior == Prior::identity) {
+    H = J * J.transpose();
+    J_ = std::move(J);
+  } else {
+    QiJt_ = prior_inverse_times_jt(J, mesh, prior, noser_exponent);
+    H = J * QiJt_;
+  }
   const Eigen::SelfAdjointEigenSolver<Matrix> eigen(0.5 * (H + H.transpose()));
   U_ = eigen.eigenvectors();
   sigma_ = eigen.eigenvalues().cwiseMax(0.0);  // round-off can make the smallest slightly negative
-  basis_ = QiJt * U_;
+  if (prior != Prior::identity) {
+    const Matrix basis = QiJt_ * U_;
+    basis_gram_ = basis.transpose() * basis;
+  }
+}
+
+Matrix OperatorFamily::prior_inverse_jt_times(const Matrix& X) const {
+  return prior_ == Prior::identity ? Matrix(J_.transpose() * X) : Matrix(QiJt_ * X);
 }
 
 Matrix OperatorFamily::operator_for(double lambda2) const {
-  if (!(lambda2 > 0) || !std::isfinite(lambda2))
-    throw InvalidInput("lambda2 must be positive, got " + std::to_string(lambda2));
+  check_lambda2(lambda2);
   const Vector filter = (sigma_.array() + lambda2).inverse();
-  return basis_ * filter.asDiagonal() * U_.transpose();
+  return prior_inverse_jt_times(U_ * filter.asDiagonal() * U_.transpose());
+}
+
+CompactOperator OperatorFamily::compact_operator_for(double lambda2, double relative_cutoff) const {
+  check_lambda2(lambda2);
+  if (!(relative_cutoff >= 0 && relative_cutoff < 1))
+    throw InvalidInput("the operator's rank cutoff must be in [0, 1), got " + std::to_string(relative_cutoff));
+  // R = W Uᵀ with W = Q⁻¹JᵀU·diag(f), f = 1/(σ + λ²), and U orthogonal, so R's singular values
+  // and left vectors are W's. W = P S Vᵀ from W's Gram diag(f)·G·diag(f) = V S² Vᵀ; then
+  // R ≈ (W V_k)(U V_k)ᵀ. For Q = I the Gram is diag(σ f²): V only sorts.
+  const Vector f = (sigma_.array() + lambda2).inverse();
+  const Index M = sigma_.size();
+  Vector s2;
+  Matrix V;
+  if (prior_ == Prior::identity) {
+    s2 = sigma_.cwiseProduct(f).cwiseProduct(f);
+    V = Matrix::Identity(M, M);
+  } else {
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(f.asDiagonal() * basis_gram_ * f.asDiagonal());
+    s2 = eigen.eigenvalues();
+    V = eigen.eigenvectors();
+  }
+  std::vector<Index> order(static_cast<std::size_t>(M));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return s2[a] > s2[b]; });
+  const double s1 = M > 0 ? std::sqrt(std::max(0.0, s2[order[0]])) : 0.0;
+  Index k = 0;
+  while (k < M && std::sqrt(std::max(0.0, s2[order[static_cast<std::size_t>(k)]])) > relative_cutoff * s1) ++k;
+  Matrix V_k(M, k);
+  for (Index j = 0; j < k; ++j) V_k.col(j) = V.col(order[static_cast<std::size_t>(j)]);
+  const double bound = k < M && s1 > 0 ? std::sqrt(std::max(0.0, s2[order[static_cast<std::size_t>(k)]])) / s1 : 0.0;
+  const Matrix left = prior_inverse_jt_times(U_ * f.asDiagonal() * V_k);
+  const Matrix right = (U_ * V_k).transpose();
+  return CompactOperator(left.cast<float>(), right.cast<float>(), bound, s1);
 }
 
 }  // namespace emit

@@ -17,7 +17,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, PressureCalibrati
       dphi_(model.mesh.triangle_count()),
       pressure_(model.mesh.triangle_count()),
       selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
-      operator_scratch_(model.compact_op().scratch()) {
+      operator_scratch_(model.op.scratch()) {
   if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
     throw InvalidInput("threshold must be a fraction between 0 and 1, got " + std::to_string(options.threshold_fraction));
 }
@@ -45,7 +45,7 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
       return report_fitted();
     }
   }
-  model_.compact_op().apply(dV_, dphi_, operator_scratch_);  // paper eq. 7, precomputed
+  model_.op.apply(dV_, dphi_, operator_scratch_);  // paper eq. 7, precomputed
   const double peak = dphi_.maxCoeff();
   const double threshold = options_.threshold_fraction * peak;
   calibration_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
@@ -68,7 +68,7 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
   const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
     negated_misfit_ = -misfit;
-    model_.compact_op().apply(negated_misfit_, residual_image_, operator_scratch_);
+    model_.op.apply(negated_misfit_, residual_image_, operator_scratch_);
     Index peak;
     if (residual_image_.maxCoeff(&peak) <= 0) return false;
     seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};

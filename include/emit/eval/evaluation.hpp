@@ -55,7 +55,7 @@ TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun&
 struct LCurvePoint {
   double residual_norm_V = 0, solution_norm_V = 0;
 };
-LCurvePoint l_curve_point(const Matrix& J, const Matrix& op, const MeasurementSet& measurements,
+LCurvePoint l_curve_point(const Matrix& J, const CompactOperator& op, const MeasurementSet& measurements,
                           const SimulatedRun& run);
 
 }  // namespace emit

@@ -26,6 +26,9 @@ class CompactOperator {
   ///   The default, 2⁻¹², bounds what the truncation changes, ‖(R − A·B) δV‖ ≤ 2⁻¹² s₁ ‖δV‖,
   ///   at the resolution of a 12-bit ADC (DESIGN §1), so it is below what a reading can show.
   explicit CompactOperator(const Matrix& op, double relative_cutoff = 1.0 / 4096);
+  /// From factors already computed (OperatorFamily builds them without forming R, the cache
+  /// stores them). \throw InvalidInput if their sizes do not match.
+  CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound, double largest_singular_value);
 
   /// Scratch already sized for this operator.
   CompactOperatorScratch scratch() const;
@@ -39,6 +42,8 @@ class CompactOperator {
   double truncation_bound() const { return truncation_bound_; }
   /// s₁, R's largest singular value.
   double largest_singular_value() const { return largest_singular_value_; }
+  const Eigen::MatrixXf& left() const { return left_; }    ///< A, #F by k
+  const Eigen::MatrixXf& right() const { return right_; }  ///< B, k by M
 
  private:
   Eigen::MatrixXf left_;   ///< A = U_k S_k, column-major #F by k

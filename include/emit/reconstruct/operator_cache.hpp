@@ -1,6 +1,6 @@
 #pragma once
 /// \file operator_cache.hpp
-/// The reconstruction operator cached on disk, keyed by everything it depends on: the sensor
+/// The reconstruction operator (its compact form) cached on disk, keyed by everything it depends on: the sensor
 /// description, the mesh itself (a hash of its nodes, triangles and electrodes), the measurement
 /// set and the operator options. A second start with the same inputs loads it; a changed sensor
 /// file changes the key and rebuilds it.
@@ -21,9 +21,9 @@ std::string operator_cache_key(const Sensor& sensor, const Mesh& mesh, const Mea
                                const OperatorOptions& options);
 
 /// The cached operator for this key, or nothing (absent, for another key, or unreadable).
-std::optional<Matrix> load_cached_operator(const std::string& cache_dir, const std::string& key);
+std::optional<CompactOperator> load_cached_operator(const std::string& cache_dir, const std::string& key);
 
 /// Store it (atomically; creates the folder). \throw IoError.
-void store_cached_operator(const std::string& cache_dir, const std::string& key, const Matrix& op);
+void store_cached_operator(const std::string& cache_dir, const std::string& key, const CompactOperator& op);
 
 }  // namespace emit

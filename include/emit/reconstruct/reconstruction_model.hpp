@@ -14,21 +14,12 @@
 
 namespace emit {
 
-class ReconstructionModel {
- public:
+struct ReconstructionModel {
   Mesh mesh;
   MeasurementSet measurements;
   OperatorOptions options;
+  CompactOperator op;  ///< R (paper eq. 7) as the per-frame path applies it
   bool loaded_from_cache = false;
-
-  const Matrix& op() const { return op_; }                       ///< R, #F by M
-  const CompactOperator& compact_op() const { return compact_; }  ///< R as the per-frame path applies it
-  /// Sets R and builds its compact form (options.rank_cutoff).
-  void set_operator(Matrix op);
-
- private:
-  Matrix op_;
-  CompactOperator compact_;
 };
 
 /// \param cache_dir  where to look for and store the operator; empty: no cache.

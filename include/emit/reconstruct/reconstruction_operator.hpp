@@ -7,6 +7,7 @@
 #include <string>
 
 #include "emit/mesh/mesh.hpp"
+#include "emit/reconstruct/compact_operator.hpp"
 #include "emit/types.hpp"
 
 namespace emit {
@@ -34,24 +35,38 @@ struct OperatorOptions {
 OperatorOptions method_options(const std::string& method);
 std::string prior_name(Prior prior);
 
-/// \param J  M by #F Jacobian (jacobian.hpp). \return #F by M operator R.
-/// \throw InvalidInput for a non-positive λ².
+/// The dense operator R. \param J  M by #F Jacobian (jacobian.hpp). \return #F by M.
+/// \throw InvalidInput for a non-positive λ². For tests and baselines: the per-frame path uses
+/// build_compact_operator, which never forms R.
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options);
 
+/// R truncated at options.rank_cutoff (compact_operator.hpp), built from the eigendecomposition
+/// without forming R. Takes J by value so that a caller that moves it in holds one #F·M matrix.
+CompactOperator build_compact_operator(Matrix J, const Mesh& mesh, const OperatorOptions& options);
+
 /// The operators of one Jacobian and prior for every λ: the λ-independent work (Q⁻¹Jᵀ and the
-/// eigendecomposition J Q⁻¹ Jᵀ = U Σ Uᵀ) is done once, so R(λ) = (Q⁻¹Jᵀ U) diag(1/(σ + λ²)) Uᵀ
+/// eigendecomposition J Q⁻¹ Jᵀ = U Σ Uᵀ) is done once, so R(λ) = Q⁻¹Jᵀ U diag(1/(σ + λ²)) Uᵀ
 /// costs one product. For λ sweeps and L-curves.
 class OperatorFamily {
  public:
-  OperatorFamily(const Matrix& J, const Mesh& mesh, Prior prior, double noser_exponent = 0.5);
+  OperatorFamily(Matrix J, const Mesh& mesh, Prior prior, double noser_exponent = 0.5);
+  /// R(λ), dense, #F by M.
   Matrix operator_for(double lambda2) const;
+  /// R(λ) truncated to its singular values above `relative_cutoff` of the largest.
+  CompactOperator compact_operator_for(double lambda2, double relative_cutoff) const;
   /// The eigenvalues σ of J Q⁻¹ Jᵀ, ascending (the data's singular values squared).
   const Vector& eigenvalues() const { return sigma_; }
 
  private:
-  Matrix basis_;  ///< Q⁻¹Jᵀ U, #F by M
-  Matrix U_;      ///< M by M
+  /// Q⁻¹Jᵀ·X (#F by columns of X).
+  Matrix prior_inverse_jt_times(const Matrix& X) const;
+
+  Prior prior_;
+  Matrix J_;           ///< M by #F, kept for Q = I (where Q⁻¹Jᵀ = Jᵀ)
+  Matrix QiJt_;        ///< Q⁻¹Jᵀ, #F by M, for the other priors
+  Matrix U_;           ///< M by M
   Vector sigma_;
+  Matrix basis_gram_;  ///< (Q⁻¹JᵀU)ᵀ(Q⁻¹JᵀU) for the other priors (diag(σ) for Q = I)
 };
 
 /// #F by #F graph Laplacian of the triangles (two are neighbours when they share an edge).
