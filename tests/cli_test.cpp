@@ -197,6 +197,33 @@ TEST(Cli, MeshWritesAFileAndReportsQuality) {
   EXPECT_EQ(read_msh(dir + "/c.msh").electrode_count(), 16);
 }
 
+// `emit bench` times each stage in a process of its own: one row per case, the mesh sized as
+// asked, the operator's rank that of a truncated R (below M), the stages adding up to the frame.
+TEST(Cli, BenchPrintsARowPerCase) {
+  const auto r = run_emit("bench --sizes 3k --electrodes 16 --no-baselines");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string row = last_line_of(r.out);
+  long triangles = 0;
+  int electrodes = 0, rank = 0;
+  double mesh_s, assembly_s, factor_s, jacobian_s, operator_s, offline_s, load_ms, product_us, pressure_us, contacts_us,
+      frame_us, peak_MiB;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%ld %d %d | %lf %lf %lf %lf %lf %lf %lf | %lf %lf %lf %lf | %lf", &triangles,
+                        &electrodes, &rank, &mesh_s, &assembly_s, &factor_s, &jacobian_s, &operator_s, &offline_s,
+                        &load_ms, &product_us, &pressure_us, &contacts_us, &frame_us, &peak_MiB),
+            15)
+      << row;
+  EXPECT_NEAR(static_cast<double>(triangles), 3000.0, 0.15 * 3000);  // the size correction's 15 %
+  EXPECT_EQ(electrodes, 16);
+  EXPECT_GT(rank, 0);
+  EXPECT_LT(rank, 240);
+  EXPECT_NEAR(offline_s, mesh_s + jacobian_s + operator_s, 0.002);  // rounding of three printed figures
+  // Each part's best batch cannot exceed the whole frame's plus the frame's own noise (the whole
+  // also gathers δV and finds the maximum, so it is the larger).
+  EXPECT_LE(product_us, frame_us);
+  // A 3k-triangle case holds a few MB of matrices; the process's peak includes Gmsh and the libraries.
+  EXPECT_LT(peak_MiB, 300.0);
+}
+
 // A sensor whose shape is a mesh file written by `emit mesh` simulates like the original.
 TEST(Cli, MeshFileSensor) {
   const std::string dir = test::temp_folder("cli_mesh_sensor");
@@ -296,7 +323,9 @@ INSTANTIATE_TEST_SUITE_P(
                "reconstruct --reference DIR/ref8.csv --frames DIR/ref.csv --contacts OUT --no-cache",
                "ref8.csv:1: 64 values, expected 256"},
         BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
-               "needs --reference, --frames, --truth and --out"}),
+               "needs --reference, --frames, --truth and --out"},
+        BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
+        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -1,0 +1,189 @@
+#include "emit/eval/pipeline_timing.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Cholesky>
+
+#include "emit/errors.hpp"
+#include "emit/fem/electrode_dofs.hpp"
+#include "emit/fem/sparse_cholesky.hpp"
+#include "emit/fem/stiffness.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/reconstruct/jacobian.hpp"
+#include "emit/reconstruct/operator_cache.hpp"
+#include "emit/reconstruct/reconstructor.hpp"
+
+namespace emit {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class Work>
+double seconds(Work&& work) {
+  const auto start = Clock::now();
+  work();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Microseconds a call: the best mean of three batches of about `batch_s` each (the best, not
+/// the mean: what the machine can do, not what its other tenants left).
+template <class Work>
+double microseconds_per_call(double batch_s, Work&& work) {
+  work();  // warm-up (first-touch of scratch)
+  double best = std::numeric_limits<double>::infinity();
+  for (int batch = 0; batch < 3; ++batch) {
+    long calls = 0;
+    const auto start = Clock::now();
+    double elapsed = 0;
+    do {
+      work();
+      ++calls;
+      elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    } while (elapsed < batch_s);
+    best = std::min(best, 1e6 * elapsed / static_cast<double>(calls));
+  }
+  return best;
+}
+
+/// Meshed to about `target` triangles. The count goes about as 1/h², less so on coarse meshes
+/// (the electrodes' ends keep their nodes), so the size is corrected until within 15 %.
+Mesh mesh_of_size(Sensor& sensor, const PipelineTimingOptions& options, double& mesh_s) {
+  if (options.element_size_mm > 0) {
+    sensor.mesh.element_size_mm = options.element_size_mm;
+  } else {
+    for (int step = 0; step < 3; ++step) {
+      const Mesh trial = generate_mesh(sensor, reconstruction_mesh_options(sensor));
+      const double ratio = static_cast<double>(trial.triangle_count()) / options.target_triangles;
+      if (std::abs(ratio - 1) < 0.15) break;
+      sensor.mesh.element_size_mm *= std::sqrt(ratio);
+    }
+  }
+  Mesh mesh;
+  mesh_s = seconds([&] { mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  return mesh;
+}
+
+/// δV of a disc of potential 1 V (radius 5 mm) at `centre`, as the Jacobian predicts it.
+Vector disc_frame(const Mesh& mesh, const Matrix& J, const Vector2& centre_mm) {
+  Vector dphi = Vector::Zero(mesh.triangle_count());
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    if ((mesh.triangle_centroid_mm(t).head<2>() - centre_mm).norm() <= 5.0) dphi[t] = 1.0;
+  return J * dphi;
+}
+
+Frame as_frame(const MeasurementSet& measurements, const Vector& dV) {
+  Frame frame = Frame::Zero(measurements.electrode_count, measurements.electrode_count);
+  for (int i = 0; i < measurements.size(); ++i) frame.data()[measurements.frame_index[i]] = dV[i];
+  return frame;
+}
+
+void time_per_frame(const ReconstructionModel& model, const Sensor& sensor, const std::vector<Vector>& frames,
+                    double batch_s, PipelineTiming& timing) {
+  const PressureCalibration calibration = PressureCalibration::uncalibrated(sensor);
+  Reconstructor reconstructor(model, calibration);
+  const int N = model.measurements.electrode_count;
+  reconstructor.set_reference(Frame::Zero(N, N));
+  std::vector<Frame> full_frames;
+  for (const Vector& dV : frames) full_frames.push_back(as_frame(model.measurements, dV));
+  CompactOperatorScratch scratch = model.op.scratch();
+  const auto count = frames.size();
+  std::vector<Vector> images(count), pressures(count, Vector(model.op.rows()));
+  std::vector<std::vector<std::uint8_t>> selections(count, std::vector<std::uint8_t>(static_cast<std::size_t>(model.op.rows())));
+  for (std::size_t i = 0; i < count; ++i) {
+    model.op.apply(frames[i], images[i], scratch);
+    calibration.pressure_map(images[i], 0.5 * images[i].maxCoeff(), pressures[i], selections[i]);
+  }
+  ContactFinder finder(model.mesh);
+  Vector image(model.op.rows());
+  std::size_t f = 0;
+  const auto next = [&] { return f++ % count; };
+  // Each stage over the same frames in turn, so the stages add up to the whole frame.
+  timing.product_us = microseconds_per_call(batch_s, [&] { model.op.apply(frames[next()], image, scratch); });
+  timing.pressure_us = microseconds_per_call(batch_s, [&] {
+    const std::size_t i = next();
+    calibration.pressure_map(images[i], 0.5 * images[i].maxCoeff(), pressures[i], selections[i]);
+  });
+  timing.contacts_us = microseconds_per_call(batch_s, [&] {
+    const std::size_t i = next();
+    finder.find(selections[i], pressures[i], images[i]);
+  });
+  timing.frame_us = microseconds_per_call(batch_s, [&] { reconstructor.process(full_frames[next()]); });
+}
+
+double normal_equations_seconds(const Matrix& J, double lambda2) {
+  return seconds([&] {
+    Matrix A = J.transpose() * J;
+    A.diagonal().array() += lambda2;
+    const Matrix R = A.llt().solve(J.transpose());
+    if (!R.allFinite()) throw SolverError("normal equations baseline: not finite");
+  });
+}
+
+}  // namespace
+
+PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
+  if (options.target_triangles < 100 || options.target_triangles > 2'000'000)
+    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " + std::to_string(options.target_triangles));
+  Sensor sensor = sensor_in;
+  PipelineTiming timing;
+  const Mesh mesh = mesh_of_size(sensor, options, timing.mesh_s);
+  timing.element_size_mm = sensor.mesh.element_size_mm;
+  timing.triangles = static_cast<long>(mesh.triangle_count());
+  timing.electrodes = mesh.electrode_count();
+  const MeasurementSet measurements = make_measurement_set(mesh.electrode_count());
+  timing.measurements = measurements.size();
+
+  SparseMatrix stiffness;
+  const ElectrodeDofs dofs = number_electrode_dofs(mesh);
+  timing.assembly_s = seconds([&] { stiffness = to_dof_space(assemble_stiffness(mesh, 1.0), dofs); });
+  timing.factorisation_s = seconds([&] {
+    SparseCholesky cholesky;
+    const Index n = stiffness.rows();
+    cholesky.factorize(stiffness.bottomRightCorner(n - 1, n - 1));  // electrode 0 grounded
+  });
+
+  Matrix J;
+  timing.jacobian_s = seconds([&] { J = compute_jacobian(mesh, measurements); });
+  const OperatorOptions operator_options = method_options("paper");
+
+  std::vector<Vector> frames;
+  const Vector2 low = mesh.nodes_mm.colwise().minCoeff().head<2>().transpose();
+  const Vector2 high = mesh.nodes_mm.colwise().maxCoeff().head<2>().transpose();
+  for (const Vector2& fraction : {Vector2(0.3, 0.4), Vector2(0.5, 0.5), Vector2(0.75, 0.2)})
+    frames.push_back(disc_frame(mesh, J, low + fraction.cwiseProduct(high - low)));
+
+  ReconstructionModel model;
+  model.mesh = mesh;
+  model.measurements = measurements;
+  model.options = operator_options;
+  timing.operator_s = seconds([&] { model.op = build_compact_operator(std::move(J), mesh, operator_options); });
+  timing.rank = static_cast<int>(model.op.rank());
+  if (!options.cache_dir.empty()) {
+    timing.store_s = seconds([&] { store_cached_operator(options.cache_dir, "bench", model.op); });
+    timing.load_s = seconds([&] {
+      if (!load_cached_operator(options.cache_dir, "bench")) throw IoError(options.cache_dir + ": cached operator did not load back");
+    });
+  }
+  time_per_frame(model, sensor, frames, options.seconds_per_figure, timing);
+  return timing;
+}
+
+BaselineTiming time_baselines(const Sensor& sensor_in, const PipelineTimingOptions& options, bool normal_equations,
+                              bool brute_force_jacobian) {
+  Sensor sensor = sensor_in;
+  double mesh_s = 0;
+  const Mesh mesh = mesh_of_size(sensor, options, mesh_s);
+  const MeasurementSet measurements = make_measurement_set(mesh.electrode_count());
+  BaselineTiming timing;
+  if (normal_equations)
+    timing.normal_equations_s = normal_equations_seconds(compute_jacobian(mesh, measurements), method_options("paper").lambda2);
+  if (brute_force_jacobian)
+    timing.brute_force_jacobian_s = seconds([&] { compute_jacobian_brute_force(mesh, measurements); });
+  return timing;
+}
+
+}  // namespace emit
