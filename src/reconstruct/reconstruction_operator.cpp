@@ -10,6 +10,7 @@
 
 #include "emit/errors.hpp"
 #include "emit/fem/sparse_cholesky.hpp"
+#include "emit/reconstruct/symmetric_eigen.hpp"
 
 namespace emit {
 
@@ -104,17 +105,19 @@ CompactOperator build_compact_operator(Matrix J, const Mesh& mesh, const Operato
 }
 
 OperatorFamily::OperatorFamily(Matrix J, const Mesh& mesh, Prior prior, double noser_exponent) : prior_(prior) {
-  Matrix H;  // J Q⁻¹ Jᵀ, M × M, symmetric positive semi-definite
+  Matrix H;  // J Q⁻¹ Jᵀ, M × M, symmetric positive semi-definite; its lower triangle is what counts
   if (prior == Prior::identity) {
-    H = J * J.transpose();
+    H = Matrix::Zero(J.rows(), J.rows());
+    H.selfadjointView<Eigen::Lower>().rankUpdate(J);  // half the work of J Jᵀ (BLAS syrk)
     J_ = std::move(J);
   } else {
     QiJt_ = prior_inverse_times_jt(J, mesh, prior, noser_exponent);
     H = J * QiJt_;
+    H = 0.5 * (H + H.transpose()).eval();
   }
-  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(0.5 * (H + H.transpose()));
-  U_ = eigen.eigenvectors();
-  sigma_ = eigen.eigenvalues().cwiseMax(0.0);  // round-off can make the smallest slightly negative
+  SymmetricEigen eigen = symmetric_eigen(std::move(H));
+  U_ = std::move(eigen.vectors);
+  sigma_ = eigen.values.cwiseMax(0.0);  // round-off can make the smallest slightly negative
   if (prior != Prior::identity) {
     const Matrix basis = QiJt_ * U_;
     basis_gram_ = basis.transpose() * basis;
@@ -146,9 +149,9 @@ CompactOperator OperatorFamily::compact_operator_for(double lambda2, double rela
     s2 = sigma_.cwiseProduct(f).cwiseProduct(f);
     V = Matrix::Identity(M, M);
   } else {
-    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(f.asDiagonal() * basis_gram_ * f.asDiagonal());
-    s2 = eigen.eigenvalues();
-    V = eigen.eigenvectors();
+    SymmetricEigen eigen = symmetric_eigen(f.asDiagonal() * basis_gram_ * f.asDiagonal());
+    s2 = std::move(eigen.values);
+    V = std::move(eigen.vectors);
   }
   std::vector<Index> order(static_cast<std::size_t>(M));
   std::iota(order.begin(), order.end(), Index{0});
