@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
+#include "emit/reconstruct/batch.hpp"
 #include "emit/errors.hpp"
 #include "emit/eval/evaluation.hpp"
 #include "emit/reconstruct/operator_cache.hpp"
@@ -95,6 +96,30 @@ TEST(Reconstruction, ProcessAllocatesNothing) {
   const auto& contacts = reconstructor.process(frame);
   EXPECT_EQ(counter.count(), 0);
   EXPECT_GE(contacts.size(), 1u);
+}
+
+// A batch split across threads gives each frame the contacts one Reconstructor gives it.
+TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
+  SmallModel s;
+  Twin twin(s.sensor);
+  const Frame reference = twin.frame({});
+  std::vector<Frame> frames;
+  for (double x : {10.0, 20.0, 30.0, 40.0, 50.0}) frames.push_back(twin.frame({{x, 60 - x, 4, 10}}));
+  frames.push_back(twin.frame({{15, 15, 4, 10}, {45, 45, 4, 20}}));
+  const PressureCalibration calibration = PressureCalibration::uncalibrated(s.sensor);
+  Reconstructor one(s.model, calibration);
+  one.set_reference(reference);
+  const auto batch = reconstruct_batch(s.model, calibration, {}, reference, frames, 3);
+  ASSERT_EQ(batch.size(), frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const auto& expected = one.process(frames[f]);
+    ASSERT_EQ(batch[f].size(), expected.size()) << "frame " << f;
+    for (std::size_t c = 0; c < expected.size(); ++c) {
+      EXPECT_EQ(batch[f][c].x_mm, expected[c].x_mm);  // the same arithmetic, bit for bit
+      EXPECT_EQ(batch[f][c].force_N, expected[c].force_N);
+    }
+  }
+  EXPECT_THROW(reconstruct_batch(s.model, calibration, {}, reference, frames, 0), InvalidInput);
 }
 
 }  // namespace

@@ -8,5 +8,17 @@ namespace emit {
 
 /// \throw InvalidInput unless count ≥ 1.
 void set_thread_count(int count);
+/// The count last set (1 until set).
+int thread_count();
+
+/// While alive, BLAS uses one thread a call (for code that runs threads of its own, so the two
+/// do not oversubscribe the cores); the count set before comes back after.
+class SingleThreadedBlas {
+ public:
+  SingleThreadedBlas();
+  ~SingleThreadedBlas();
+  SingleThreadedBlas(const SingleThreadedBlas&) = delete;
+  SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
+};
 
 }  // namespace emit
