@@ -40,6 +40,15 @@ struct FitOptions {
   bool fit_radius = false;
   /// A further contact is kept only if it cuts the misfit (sum of squares) by this fraction.
   double new_contact_gain = 0.5;
+  /// When the contacts explain a frame, so that no further contact is tried (and tracking holds):
+  /// while the misfit is within the readings' noise, or while what it has beyond the noise is
+  /// model error, small against the frame itself. A fixed multiple of the noise cannot tell them
+  /// apart: one disc leaves a strong single press on the 60 mm sheet up to χ²/M ≈ 13 (its shape,
+  /// not a held disc's), and two presses 6–10 mm apart on the 30 mm sheet as little as 2.4.
+  /// Relative to the frame they part: over 5 seeds of the twin, singles at up to 0.5 N/mm² left
+  /// at most 2.5e-3 of the frame's RMS beyond the noise, every pair at least 3.5e-3.
+  double noise_chi2_per_measurement = 2;  ///< the noise alone: χ²/M = 1 ± 0.09 (M = 240); 2 is 11 of its σ beyond
+  double model_error_rms_fraction = 3e-3;  ///< between the two above
   int max_iterations = 50;
   void validate() const;  ///< \throw InvalidInput naming the option
 };
@@ -78,9 +87,11 @@ class ContactFitter {
 
   /// Tracking: refits the previous frame's contacts from where they were, in one
   /// Levenberg–Marquardt run without seeds. The result is empty, not `tracked`, if that does
-  /// not explain the frame as fit() would accept (misfit above 3σ: a new touch), leaves a
-  /// contact the readings cannot see (5σ: a lifted finger), or an implausible set (two beside
-  /// each other, or one off the sheet); then call fit().
+  /// not explain the frame as fit() would accept (a misfit beyond the noise and the model's error,
+  /// FitOptions: a new touch), moves one of several discs further than two presses' plausible
+  /// separation (pulled elsewhere, or into a local minimum), leaves a contact the readings cannot
+  /// see (5σ: a lifted finger), or an implausible set (two beside each other, or one off the
+  /// sheet); then call fit().
   const FitResult& track(const Vector& dV, const std::vector<Disc>& previous);
 
   /// The frame the discs give (N×N), for tests and pictures.
@@ -93,7 +104,8 @@ class ContactFitter {
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
   Disc clamp_seed(Disc seed) const;
   bool plausible_set(const std::vector<Disc>& discs) const;
-  bool explained(double misfit_sq) const;
+  bool explained(double misfit_sq, const Vector& dV) const;
+  bool jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const;
   /// Two contacts closer than this are one press (three held radii).
   double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
   void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);
