@@ -89,15 +89,15 @@ void run_reconstruct(const ReconstructArgs& args) {
   FrameOptions frame_options;
   frame_options.threshold_fraction = args.threshold;
   frame_options.min_contact_area_mm2 = args.min_area_mm2;
-  Reconstructor reconstructor(model, calibration, frame_options);
-  if (fitter) reconstructor.use_fitter(&*fitter);
-  reconstructor.set_reference(reference);
   const auto online_start = std::chrono::steady_clock::now();
-  if (!fit && args.images_dir.empty() && thread_count() > 1) {
-    // Frames of the linear methods are independent: split the batch across the threads.
+  if (!fit && args.images_dir.empty()) {
+    // The linear methods' frames are independent: a batch, split across --threads.
     const auto contacts = reconstruct_batch(model, calibration, frame_options, reference, frames, thread_count());
     for (std::size_t f = 0; f < frames.size(); ++f) write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts[f], -1);
   } else {
+    Reconstructor reconstructor(model, calibration, frame_options);
+    if (fitter) reconstructor.use_fitter(&*fitter);
+    reconstructor.set_reference(reference);
     Progress progress("reconstructing frame", static_cast<int>(frames.size()));
     for (std::size_t f = 0; f < frames.size(); ++f) {
       const auto& contacts = reconstructor.process(frames[f]);

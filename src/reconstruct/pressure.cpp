@@ -13,10 +13,19 @@ PressureCalibration PressureCalibration::uncalibrated(const Sensor& sensor) {
   return c;
 }
 
+namespace {
+
+/// Eq. 8 for δφ > 0, in the precision of `Scalar`. The base a1/δφ + a2 is kept positive (δφ
+/// beyond the model's range reads as the largest pressure it can express).
+template <class Scalar>
+Scalar equation_8(Scalar dphi_V, Scalar a1, Scalar a2, Scalar a3) {
+  return std::pow(std::max(a1 / dphi_V + a2, Scalar(1e-9)), a3);
+}
+
+}  // namespace
+
 double PressureCalibration::pressure_N_per_mm2(double dphi_V) const {
-  if (!(dphi_V > 0)) return 0.0;
-  const double base = std::max(a1 / dphi_V + a2, 1e-9);
-  return std::pow(base, a3);
+  return dphi_V > 0 ? equation_8(dphi_V, a1, a2, a3) : 0.0;
 }
 
 void PressureCalibration::pressure_map(const Vector& dphi_V, double min_dphi_V, Vector& pressure,
@@ -28,8 +37,7 @@ void PressureCalibration::pressure_map(const Vector& dphi_V, double min_dphi_V, 
   for (Index k = 0; k < dphi_V.size(); ++k) {
     const bool on = any && dphi_V[k] >= min_dphi_V;
     selected[static_cast<std::size_t>(k)] = on;
-    const auto dphi = static_cast<float>(dphi_V[k]);
-    pressure[k] = on ? std::pow(std::max(a1f / dphi + a2f, 1e-9f), a3f) : 0.0f;
+    pressure[k] = on ? equation_8(static_cast<float>(dphi_V[k]), a1f, a2f, a3f) : 0.0f;
   }
 }
 

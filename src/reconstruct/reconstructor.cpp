@@ -67,10 +67,9 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
   }
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
   const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
-    negated_misfit_ = -misfit;
-    model_.op.apply(negated_misfit_, residual_image_, operator_scratch_);
+    model_.op.apply(misfit, residual_image_, operator_scratch_);  // the image of −misfit is its negative
     Index peak;
-    if (residual_image_.maxCoeff(&peak) <= 0) return false;
+    if (residual_image_.minCoeff(&peak) >= 0) return false;
     seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};
     return true;
   };

@@ -3,6 +3,8 @@
 /// How long each stage of the reconstruction takes on one sheet (`emit bench`): offline, from
 /// meshing to a cached operator, and per frame, from δV to contacts; with naive baselines
 /// measured in the same run where they finish in reasonable time.
+#include <string>
+
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {

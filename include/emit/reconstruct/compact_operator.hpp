@@ -21,13 +21,8 @@ struct CompactOperatorScratch {
 class CompactOperator {
  public:
   CompactOperator() = default;
-  /// \param op               the full operator R (#F by M).
-  /// \param relative_cutoff  singular values below this fraction of the largest are dropped.
-  ///   The default, 2⁻¹², bounds what the truncation changes, ‖(R − A·B) δV‖ ≤ 2⁻¹² s₁ ‖δV‖,
-  ///   at the resolution of a 12-bit ADC (DESIGN §1), so it is below what a reading can show.
-  explicit CompactOperator(const Matrix& op, double relative_cutoff = 1.0 / 4096);
-  /// From factors already computed (OperatorFamily builds them without forming R, the cache
-  /// stores them). \throw InvalidInput if their sizes do not match.
+  /// From its factors, as OperatorFamily::compact_operator_for builds them (without forming R)
+  /// and the cache stores them. \throw InvalidInput if their sizes do not match.
   CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound, double largest_singular_value);
 
   /// Scratch already sized for this operator.

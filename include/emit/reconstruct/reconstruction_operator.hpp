@@ -52,7 +52,10 @@ class OperatorFamily {
   OperatorFamily(Matrix J, const Mesh& mesh, Prior prior, double noser_exponent = 0.5);
   /// R(λ), dense, #F by M.
   Matrix operator_for(double lambda2) const;
-  /// R(λ) truncated to its singular values above `relative_cutoff` of the largest.
+  /// R(λ) truncated to its singular values above `relative_cutoff` of the largest. The
+  /// default cutoff (OperatorOptions::rank_cutoff), 2⁻¹², bounds what the truncation changes,
+  /// ‖(R − A·B) δV‖ ≤ 2⁻¹² s₁ ‖δV‖, at the resolution of a 12-bit ADC (DESIGN §1).
+  /// \throw InvalidInput for a non-positive λ² or a cutoff outside [0, 1).
   CompactOperator compact_operator_for(double lambda2, double relative_cutoff) const;
   /// The eigenvalues σ of J Q⁻¹ Jᵀ, ascending (the data's singular values squared).
   const Vector& eigenvalues() const { return sigma_; }

@@ -58,7 +58,7 @@ class Reconstructor {
   std::vector<Disc> seeds_;
   std::vector<Contact> fitted_;
   std::vector<Disc> previous_discs_;  ///< the last frame's fitted contacts, for tracking
-  Vector residual_image_, negated_misfit_;
+  Vector residual_image_;
   CompactOperatorScratch operator_scratch_;
   const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
   const std::vector<Contact>& report_fitted();
