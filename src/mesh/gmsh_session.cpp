@@ -8,6 +8,7 @@
 #include <gmsh.h>
 
 #include "emit/errors.hpp"
+#include "emit/mesh/sort_for_locality.hpp"
 
 namespace emit::detail {
 
@@ -123,7 +124,7 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
       throw InvalidInput(context + ": \"electrode " + std::to_string(e) + "\" has fewer than 2 mesh nodes");
     mesh.electrode_nodes.push_back(electrodes[e]);
   }
-  return mesh;
+  return sort_for_locality(mesh);
 }
 
 }  // namespace emit::detail

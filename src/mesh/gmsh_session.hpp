@@ -30,7 +30,7 @@ class GmshSession {
 
   /// The current Gmsh model's triangles, nodes and "electrode <i>" curve groups as a Mesh.
   /// Unreferenced nodes (e.g. a circle's centre point) are dropped; flat meshes are oriented
-  /// counter-clockwise. \throw InvalidInput (prefixed with `context`).
+  /// counter-clockwise; numbered for locality (sort_for_locality.hpp). \throw InvalidInput (prefixed with `context`).
   Mesh extract_mesh(const std::string& context);
 
  private:

@@ -24,7 +24,8 @@ MeshOptions reconstruction_mesh_options(const Sensor& sensor);
 /// The twin's finer, edge-graded mesh (DESIGN §2: finer than the reconstruction's).
 MeshOptions twin_mesh_options(const Sensor& sensor, int seed = 1);
 
-/// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead.
+/// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead. Either way the mesh comes
+/// out numbered for locality (sort_for_locality.hpp).
 /// \throw InvalidInput if the sheet cannot be meshed as asked; IoError for an unreadable mesh file.
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options);
 

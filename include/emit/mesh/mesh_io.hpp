@@ -8,7 +8,7 @@
 namespace emit {
 
 /// Read a .msh file (any version Gmsh reads). Electrodes come from physical curves named
-/// "electrode 0" … "electrode N-1".
+/// "electrode 0" … "electrode N-1". The mesh comes out numbered for locality (sort_for_locality.hpp).
 /// \throw IoError if the file is missing; InvalidInput if it is malformed, has no triangles, or
 /// lacks electrode groups.
 Mesh read_msh(const std::string& path);
