@@ -25,6 +25,9 @@ struct PipelineTiming {
   double mesh_s = 0, assembly_s = 0, factorisation_s = 0, jacobian_s = 0, operator_s = 0;
   double store_s = 0, load_s = 0;
   double product_us = 0, pressure_us = 0, contacts_us = 0, frame_us = 0;
+  /// Reading the operator's bytes once (BLAS sasum over them, at the memory's full speed): the
+  /// floor under product_us, which must stream the whole operator every frame.
+  double operator_read_us = 0;
   double offline_s() const { return mesh_s + jacobian_s + operator_s; }  ///< mesh to operator
 };
 
