@@ -212,7 +212,9 @@ TEST(Cli, BenchPrintsARowPerCase) {
                         &load_ms, &product_us, &pressure_us, &contacts_us, &frame_us, &read_us, &peak_MiB),
             16)
       << row;
-  EXPECT_NEAR(static_cast<double>(triangles), 3000.0, 0.15 * 3000);  // the size correction's 15 %
+  // The correction aims at 5 %, but counts come in steps (the frontal mesher's layers: 2840, then
+  // 3228 on the default sensor near 3k), so the closest can be a step away: 8 % holds both.
+  EXPECT_NEAR(static_cast<double>(triangles), 3000.0, 0.08 * 3000);
   EXPECT_EQ(electrodes, 16);
   EXPECT_GT(rank, 0);
   EXPECT_LT(rank, 240);

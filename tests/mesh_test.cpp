@@ -31,6 +31,21 @@ TEST(GenerateMesh, DefaultSensorHasThePapersSize) {
   EXPECT_NEAR(q.total_area_mm2, 3600.0, 1e-9 * 3600);  // straight borders are exact
 }
 
+// The reconstruction's mesh skips Gmsh's smoothing pass (generate_mesh.hpp says why): the same
+// triangles, moved nodes only, and still well shaped. Measured on the default sensor: smallest
+// angle 32.8° without, 38.2° with; 30° leaves a margin and is where quality begins to matter.
+TEST(GenerateMesh, ReconstructionMeshIsWellShapedWithoutSmoothing) {
+  const Sensor sensor = default_sensor();
+  MeshOptions options = reconstruction_mesh_options(sensor);
+  EXPECT_EQ(options.smoothing_steps, 0);
+  const MeshQuality unsmoothed = measure_mesh_quality(generate_mesh(sensor, options));
+  options.smoothing_steps = 1;
+  const MeshQuality smoothed = measure_mesh_quality(generate_mesh(sensor, options));
+  EXPECT_EQ(unsmoothed.triangle_count, smoothed.triangle_count);
+  EXPECT_GT(unsmoothed.min_angle_deg, 30.0);
+  EXPECT_NEAR(unsmoothed.mean_edge_mm, smoothed.mean_edge_mm, 0.01 * smoothed.mean_edge_mm);
+}
+
 // Each electrode is an exact set of border nodes: its extreme nodes sit at its two ends.
 TEST(GenerateMesh, ElectrodesEndOnMeshNodes) {
   const Sensor sensor = default_sensor();

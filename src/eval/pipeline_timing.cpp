@@ -51,17 +51,24 @@ double microseconds_per_call(double batch_s, Work&& work) {
 }
 
 /// Meshed to about `target` triangles. The count goes about as 1/h², less so on coarse meshes
-/// (the electrodes' ends keep their nodes), so the size is corrected until within 15 %.
+/// (the electrodes' ends keep their nodes), and in steps (the frontal mesher's layers), so the
+/// size is corrected by that law until it brackets the target, then bisected, until within 5 %
+/// or the closest of a dozen tries. Untimed.
 Mesh mesh_of_size(Sensor& sensor, const PipelineTimingOptions& options, double& mesh_s) {
   if (options.element_size_mm > 0) {
     sensor.mesh.element_size_mm = options.element_size_mm;
   } else {
-    for (int step = 0; step < 3; ++step) {
+    double& h = sensor.mesh.element_size_mm;
+    double best_h = h, best_error = std::numeric_limits<double>::infinity();
+    double too_fine = 0, too_coarse = std::numeric_limits<double>::infinity();  // the bracket on h
+    for (int step = 0; step < 12 && best_error >= 0.05; ++step) {
       const Mesh trial = generate_mesh(sensor, reconstruction_mesh_options(sensor));
       const double ratio = static_cast<double>(trial.triangle_count()) / options.target_triangles;
-      if (std::abs(ratio - 1) < 0.15) break;
-      sensor.mesh.element_size_mm *= std::sqrt(ratio);
+      if (std::abs(ratio - 1) < best_error) best_error = std::abs(ratio - 1), best_h = h;
+      (ratio > 1 ? too_fine : too_coarse) = h;
+      h = too_fine > 0 && std::isfinite(too_coarse) ? std::sqrt(too_fine * too_coarse) : h * std::sqrt(ratio);
     }
+    h = best_h;
   }
   Mesh mesh;
   mesh_s = seconds([&] { mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor)); });

@@ -7,6 +7,7 @@ namespace emit {
 Mesh fit_mesh(const Sensor& sensor) {
   MeshOptions options = reconstruction_mesh_options(sensor);
   options.electrode_edge_size_factor = 0.25;
+  options.smoothing_steps = 1;  // graded like the twin's mesh, so smoothed like it
   return generate_mesh(sensor, options);
 }
 

@@ -127,6 +127,7 @@ void grade_into_electrode_ends(const std::vector<int>& end_points, const MeshOpt
 MeshOptions reconstruction_mesh_options(const Sensor& sensor) {
   MeshOptions options;
   options.element_size_mm = sensor.mesh.element_size_mm;
+  options.smoothing_steps = 0;  // homogeneous Frontal-Delaunay needs none (MeshOptions says why)
   return options;
 }
 
@@ -143,11 +144,13 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   if (sensor.shape.kind == ShapeKind::mesh_file) return read_msh(sensor.shape.mesh_path);
   if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
     throw InvalidInput("mesh: element size and edge size factor must be positive");
+  if (options.smoothing_steps < 0) throw InvalidInput("mesh: smoothing steps must be 0 or more");
   detail::GmshSession gmsh_session;
   const std::string context = "meshing " + (sensor.name.empty() ? std::string("the sensor") : sensor.name);
   gmsh_session.run<InvalidInput>(context, [&] {
     gmsh::model::add("sheet");
     gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay: near-equilateral triangles
+    gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
     gmsh::option::setNumber("Mesh.MeshSizeMax", options.element_size_mm);

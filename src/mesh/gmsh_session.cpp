@@ -72,23 +72,33 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
   std::vector<double> coords, parametric;
   gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, /*includeBoundary=*/true,
                               /*returnParametricCoord=*/false);
-  std::map<std::size_t, Index> coord_row;
+  // Gmsh numbers nodes about 1..count, so tables indexed by tag replace ordered maps (which
+  // were a tenth of the meshing time at 23k triangles).
+  constexpr Index none = -1;
+  const std::size_t max_tag = node_tags.empty() ? 0 : *std::max_element(node_tags.begin(), node_tags.end());
+  std::vector<Index> coord_row(max_tag + 1, none);
   for (std::size_t i = 0; i < node_tags.size(); ++i) coord_row[node_tags[i]] = static_cast<Index>(i);
 
   // Number the nodes the triangles use, in order of first use.
-  std::map<std::size_t, int> index_of;
+  std::vector<int> index_of(max_tag + 1, -1);
+  std::vector<std::size_t> tag_of_index;
   Mesh mesh;
   mesh.triangles.resize(static_cast<Index>(element_tags.size()), 3);
   for (std::size_t t = 0; t < element_tags.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const std::size_t tag = triangle_node_tags[3 * t + k];
-      if (!coord_row.count(tag)) throw InvalidInput(context + ": triangle refers to missing node " + std::to_string(tag));
-      auto [it, added] = index_of.emplace(tag, static_cast<int>(index_of.size()));
-      mesh.triangles(static_cast<Index>(t), k) = it->second;
+      if (tag > max_tag || coord_row[tag] == none)
+        throw InvalidInput(context + ": triangle refers to missing node " + std::to_string(tag));
+      if (index_of[tag] < 0) {
+        index_of[tag] = static_cast<int>(tag_of_index.size());
+        tag_of_index.push_back(tag);
+      }
+      mesh.triangles(static_cast<Index>(t), k) = index_of[tag];
     }
-  mesh.nodes_mm.resize(static_cast<Index>(index_of.size()), 3);
-  for (const auto& [tag, index] : index_of)
-    for (int c = 0; c < 3; ++c) mesh.nodes_mm(index, c) = coords[3 * coord_row[tag] + c];
+  mesh.nodes_mm.resize(static_cast<Index>(tag_of_index.size()), 3);
+  for (std::size_t index = 0; index < tag_of_index.size(); ++index)
+    for (int c = 0; c < 3; ++c)
+      mesh.nodes_mm(static_cast<Index>(index), c) = coords[3 * static_cast<std::size_t>(coord_row[tag_of_index[index]]) + c];
 
   // A flat sheet's triangles all face +z.
   if (mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() == 0.0)
@@ -111,7 +121,7 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
     gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, tags, group_coords);
     std::vector<int>& nodes = electrodes[*number];
     for (std::size_t t : tags)
-      if (index_of.count(t)) nodes.push_back(index_of[t]);
+      if (t < index_of.size() && index_of[t] >= 0) nodes.push_back(index_of[t]);
     std::sort(nodes.begin(), nodes.end());
   }
   if (electrodes.empty())

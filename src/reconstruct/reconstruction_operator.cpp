@@ -10,6 +10,7 @@
 
 #include "emit/errors.hpp"
 #include "emit/fem/sparse_cholesky.hpp"
+#include "emit/large_matrix.hpp"
 #include "emit/reconstruct/symmetric_eigen.hpp"
 
 namespace emit {
@@ -128,6 +129,24 @@ Matrix OperatorFamily::prior_inverse_jt_times(const Matrix& X) const {
   return prior_ == Prior::identity ? Matrix(J_.transpose() * X) : Matrix(QiJt_ * X);
 }
 
+Eigen::MatrixXf OperatorFamily::prior_inverse_jt_times_in_float(const Matrix& X) const {
+  // Row blocks of a few MiB in double, each rounded into the float result: no #F × k double
+  // matrix is held (at 24k triangles its first touch alone took ~0.1 s; large_matrix.hpp).
+  const Index rows = prior_ == Prior::identity ? J_.cols() : QiJt_.rows();
+  constexpr Index block_rows = 2048;
+  Eigen::MatrixXf result = large_matrix<Eigen::MatrixXf>(rows, X.cols());
+  Matrix block(std::min(block_rows, rows), X.cols());
+  for (Index start = 0; start < rows; start += block_rows) {
+    const Index n = std::min(block_rows, rows - start);
+    if (prior_ == Prior::identity)
+      block.topRows(n).noalias() = J_.middleCols(start, n).transpose() * X;
+    else
+      block.topRows(n).noalias() = QiJt_.middleRows(start, n) * X;
+    result.middleRows(start, n) = block.topRows(n).cast<float>();
+  }
+  return result;
+}
+
 Matrix OperatorFamily::operator_for(double lambda2) const {
   check_lambda2(lambda2);
   const Vector filter = (sigma_.array() + lambda2).inverse();
@@ -162,9 +181,8 @@ CompactOperator OperatorFamily::compact_operator_for(double lambda2, double rela
   Matrix V_k(M, k);
   for (Index j = 0; j < k; ++j) V_k.col(j) = V.col(order[static_cast<std::size_t>(j)]);
   const double bound = k < M && s1 > 0 ? std::sqrt(std::max(0.0, s2[order[static_cast<std::size_t>(k)]])) / s1 : 0.0;
-  const Matrix left = prior_inverse_jt_times(U_ * f.asDiagonal() * V_k);
   const Matrix right = (U_ * V_k).transpose();
-  return CompactOperator(left.cast<float>(), right.cast<float>(), bound, s1);
+  return CompactOperator(prior_inverse_jt_times_in_float(U_ * f.asDiagonal() * V_k), right.cast<float>(), bound, s1);
 }
 
 }  // namespace emit

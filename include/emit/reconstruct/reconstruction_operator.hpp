@@ -63,6 +63,8 @@ class OperatorFamily {
  private:
   /// Q⁻¹Jᵀ·X (#F by columns of X).
   Matrix prior_inverse_jt_times(const Matrix& X) const;
+  /// The same rounded to single precision (the compact operator's factor), computed in double.
+  Eigen::MatrixXf prior_inverse_jt_times_in_float(const Matrix& X) const;
 
   Prior prior_;
   Matrix J_;           ///< M by #F, kept for Q = I (where Q⁻¹Jᵀ = Jᵀ)
