@@ -12,6 +12,8 @@ packages=(
   libceres-dev                          # nonlinear least squares (calibration)
   libopenblas-dev                       # BLAS for the per-frame products
   libgtest-dev libbenchmark-dev         # tests, benchmarks
+  zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC
+  clang libclang-rt-14-dev              # libFuzzer (clang++ -fsanitize=fuzzer) for the decoder's fuzz test
 )
 
 missing=()
