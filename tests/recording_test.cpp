@@ -14,6 +14,7 @@
 #include "emit/errors.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/adc.hpp"
+#include "allocation_counter.hpp"
 #include "fake_board.hpp"
 #include "test_support.hpp"
 
@@ -115,6 +116,28 @@ TEST(Recording, ReplaysAtTheRecordedPace) {
   EXPECT_LT(elapsed_s, span_s + 0.25);
   for (std::size_t k = 1; k < handed_out.size(); ++k)
     EXPECT_GE(std::chrono::duration<double>(handed_out[k] - handed_out[0]).count(), 0.02 * static_cast<double>(k) - 1e-5);
+}
+
+// Recording and replaying frames allocate nothing per frame (after the first replayed frame sized
+// the caller's buffer).
+TEST(Recording, AllocatesNothingPerFrame) {
+  const Sensor sensor = default_sensor();
+  const std::vector<SourceFrame> frames = sim_like_frames(sensor, 20);
+  const std::string path = test::temp_folder("recording_alloc") + "/rec.bin";
+  Recorder recorder(path, sensor);
+  recorder.record(frames[0]);
+  {
+    test::AllocationCounter counter;
+    for (std::size_t k = 1; k < frames.size(); ++k) recorder.record(frames[k]);
+    EXPECT_EQ(counter.count(), 0);
+  }
+  recorder.close();
+  FileSource source(path, sensor, true);
+  SourceFrame frame;
+  ASSERT_TRUE(source.next(frame, milliseconds(0)));
+  test::AllocationCounter counter;
+  for (std::size_t k = 1; k < frames.size(); ++k) ASSERT_TRUE(source.next(frame, milliseconds(0)));
+  EXPECT_EQ(counter.count(), 0);
 }
 
 TEST(Recording, RecordsADecodedPacketByteForByte) {

@@ -23,6 +23,7 @@
 #include "emit/fit/fit_model.hpp"
 #include "emit/reconstruct/reconstructor.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "allocation_counter.hpp"
 #include "fake_board.hpp"
 #include "pseudo_terminal.hpp"
 #include "test_support.hpp"
@@ -258,6 +259,28 @@ TEST(SerialEndToEnd, ReconnectsWhenTheDeviceComesBack) {
   EXPECT_EQ(stats.reconnects, 1u);
   EXPECT_EQ(stats.decoder.frames, 6u);
   EXPECT_EQ(stats.decoder.dropped + stats.decoder.corrupt, 0u);
+}
+
+// The per-frame serial path (read, decode, counts to volts, hand out) allocates nothing once the
+// caller's frame has its size.
+TEST(SerialEndToEnd, AllocatesNothingPerFrameOnceWarmedUp) {
+  const std::vector<std::vector<std::uint8_t>> packets = fake_packets(100);
+  test::PseudoTerminal pty;
+  const std::unique_ptr<FrameSource> source = open_device_source("serial:" + pty.slave_path(), default_sensor(), {});
+  std::thread writer([&] {
+    for (const auto& p : packets) fd_sink(pty.master())(p.data(), p.size());
+  });
+  SourceFrame frame;
+  std::size_t received = receive(*source, 2, std::chrono::seconds(10)).size();  // warm-up
+  long allocations = 0;
+  {
+    test::AllocationCounter counter;
+    while (received < packets.size() && source->next(frame, milliseconds(2000))) ++received;
+    allocations = counter.count();
+  }
+  writer.join();
+  EXPECT_EQ(received, packets.size());
+  EXPECT_EQ(allocations, 0);
 }
 
 TEST(DeviceSource, ParsesSpecsAndNamesWhatIsWrong) {

@@ -118,7 +118,11 @@ void SerialSource::push(const RawFrame& raw, Clock::time_point received) {
 bool SerialSource::pop(SourceFrame& frame) {
   if (queue_size_ == 0) return false;
   SourceFrame& slot = queue_[queue_head_];
-  frame.volts.swap(slot.volts);  // no copy, no allocation: the caller's old buffer becomes the slot's
+  // No copy: the caller's old buffer becomes the slot's. Sized first (once, on the caller's first
+  // frame), so every slot stays N×N and to_volts never reallocates.
+  if (frame.volts.rows() != electrode_count_ || frame.volts.cols() != electrode_count_)
+    frame.volts.resize(electrode_count_, electrode_count_);
+  frame.volts.swap(slot.volts);
   frame.sequence = slot.sequence;
   frame.board_time_s = slot.board_time_s;
   frame.received = slot.received;
