@@ -8,7 +8,7 @@
 /// every retry interval; meanwhile next() returns false and status() says "disconnected,
 /// retrying". When the device is back, frames resume.
 ///
-/// Once warmed up (the first frame of each of the queue's slots) the path allocates nothing: the
+/// Once the caller's frame has its N×N size (its first next()) the path allocates nothing: the
 /// read buffer, the decoder and a queue of frames are sized at construction, and next() swaps the
 /// frame's volts with a queue slot's.
 ///
