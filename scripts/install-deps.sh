@@ -11,7 +11,10 @@ packages=(
   libpng-dev                            # images
   libceres-dev                          # nonlinear least squares (calibration)
   libopenblas-dev                       # BLAS for the per-frame products
+  libboost-dev                          # Boost.Asio: the serial port
   libgtest-dev libbenchmark-dev         # tests, benchmarks
+  zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC
+  clang libclang-rt-14-dev              # libFuzzer (clang++ -fsanitize=fuzzer) for the decoder's fuzz test
 )
 
 missing=()

@@ -1,0 +1,65 @@
+#pragma once
+/// \file recorder.hpp
+/// Writes a recording (recording.hpp) frame by frame, as frames arrive (`emit live --record`).
+///
+/// Output goes to PATH.partial and is renamed to PATH by close() (or the destructor), so a crash
+/// never leaves a half file over a good one; PATH.partial after a crash holds whole packets up to
+/// the last flush and perhaps a cut one at its end.
+///
+/// Example:
+///
+///     emit::Recorder recorder("rec.bin", sensor);
+///     while (source.next(frame, timeout)) recorder.record(frame);
+///     recorder.close();   // rec.bin.partial → rec.bin
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/frame_packet.hpp"
+#include "emit/acquire/frame_source.hpp"
+#include "emit/acquire/packet_decoder.hpp"
+
+namespace emit {
+
+class Recorder {
+ public:
+  /// Creates PATH.partial with the header: the sensor's electrode count and ADC (bits, vref).
+  /// \throw IoError naming the file if it cannot be created.
+  Recorder(std::string path, const Sensor& sensor);
+  /// close(), errors swallowed (a destructor must not throw): call close() to see them.
+  ~Recorder();
+  Recorder(const Recorder&) = delete;
+  Recorder& operator=(const Recorder&) = delete;
+
+  /// A frame in volts: counts = round(v / vref · (2^bits − 1)) clipped to the ADC's range (exact
+  /// for a frame that came from counts with the same ADC), sequence modulo 2^32, timestamp
+  /// round(board_time_s · 10⁶) modulo 2^32 µs, oversampling 1. Allocates nothing.
+  /// \throw InvalidInput if the frame is not N×N; IoError if the write fails.
+  void record(const SourceFrame& frame);
+  /// A decoded packet, re-encoded byte for byte as the board sent it.
+  /// \throw InvalidInput if its N is not the recording's; IoError if the write fails.
+  void record(const RawFrame& frame);
+
+  /// Flush, close and rename PATH.partial to PATH. Later calls do nothing. \throw IoError.
+  void close();
+
+  std::uint64_t frames() const { return frames_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  void write_packet(const firmware::PacketHeader& header, const std::uint16_t* counts);
+
+  std::string path_, partial_path_;
+  std::ofstream stream_;
+  int electrode_count_;
+  int adc_bits_;
+  double vref_V_;
+  std::vector<std::uint16_t> counts_;
+  std::vector<std::uint8_t> packet_;
+  std::uint64_t frames_ = 0;
+  bool closed_ = false;
+};
+
+}  // namespace emit

@@ -1,0 +1,98 @@
+#include "emit/acquire/file_source.hpp"
+
+#include <array>
+#include <filesystem>
+#include <thread>
+
+#include "core/frame_packet.hpp"
+#include "emit/errors.hpp"
+
+namespace emit {
+namespace fw = emit::firmware;
+using Clock = std::chrono::steady_clock;
+
+FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_possible)
+    : path_(std::move(path)), as_fast_as_possible_(as_fast_as_possible) {
+  stream_.open(path_, std::ios::binary);
+  if (!stream_) throw IoError(path_ + ": cannot open the recording");
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path_, ec);
+  if (ec) throw IoError(path_ + ": cannot read the recording's size: " + ec.message());
+  std::array<std::uint8_t, recording_header_size> bytes{};
+  if (size < bytes.size())
+    throw InvalidInput(path_ + ": not an emit recording (" + std::to_string(size) + " bytes, shorter than its header)");
+  stream_.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!stream_) throw IoError(path_ + ": cannot read the recording's header");
+  header_ = decode_recording_header(bytes.data(), path_);
+  if (header_.electrode_count != sensor.electrode_count())
+    throw InvalidInput(path_ + ": recorded with " + std::to_string(header_.electrode_count) +
+                       " electrodes, but the sensor has " + std::to_string(sensor.electrode_count()));
+  const std::size_t packet_bytes = fw::packet_size(header_.electrode_count);
+  const std::uintmax_t body = size - bytes.size();
+  if (body % packet_bytes != 0)
+    throw InvalidInput(path_ + ": truncated: its last packet has " + std::to_string(body % packet_bytes) + " of its " +
+                       std::to_string(packet_bytes) + " bytes");
+  frame_count_ = body / packet_bytes;
+  packet_.resize(packet_bytes);
+  pending_.volts.resize(header_.electrode_count, header_.electrode_count);
+}
+
+std::string FileSource::description() const {
+  return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames, " +
+         (as_fast_as_possible_ ? "as fast as possible)" : "at the recorded pace)");
+}
+
+bool FileSource::read_pending() {
+  if (frames_read_ == frame_count_) return false;
+  const std::uint64_t index = frames_read_++;
+  stream_.read(reinterpret_cast<char*>(packet_.data()), static_cast<std::streamsize>(packet_.size()));
+  if (!stream_) throw IoError(path_ + ": read failed at frame " + std::to_string(index));
+  decoder_.restart_stream();  // each packet on its own: a bad one must not swallow the next
+  bool decoded = false;
+  decoder_.feed(packet_, [&](const RawFrame& raw) {
+    to_volts(raw, header_.vref_V, pending_.volts);
+    pending_.sequence = raw.sequence;
+    pending_.board_time_s = clock_.seconds(raw.timestamp_us);
+    decoded = raw.electrode_count == header_.electrode_count;
+  });
+  if (!decoded)
+    throw IoError(path_ + ": frame " + std::to_string(index) + " (byte " +
+                  std::to_string(recording_header_size + index * packet_.size()) +
+                  ") is not a valid packet (sync, header or CRC)");
+  return true;
+}
+
+bool FileSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
+  if (finished_) throw IoError(path_ + ": end of recording");
+  if (!have_pending_) {
+    if (!read_pending()) {
+      finished_ = true;
+      throw IoError(path_ + ": end of recording");
+    }
+    have_pending_ = true;
+  }
+  if (!as_fast_as_possible_ && started_) {
+    const auto due = start_ + std::chrono::duration_cast<Clock::duration>(
+                                  std::chrono::duration<double>(pending_.board_time_s - t0_s_));
+    if (due > Clock::now() + timeout) {
+      std::this_thread::sleep_for(timeout);
+      return false;
+    }
+    std::this_thread::sleep_until(due);
+  }
+  if (!started_) {
+    started_ = true;
+    start_ = Clock::now();
+    t0_s_ = pending_.board_time_s;
+  }
+  frame.volts.swap(pending_.volts);
+  if (pending_.volts.rows() != header_.electrode_count)  // the caller's frame was empty
+    pending_.volts.resize(header_.electrode_count, header_.electrode_count);
+  frame.sequence = pending_.sequence;
+  frame.board_time_s = pending_.board_time_s;
+  frame.received = Clock::now();
+  have_pending_ = false;
+  return true;
+}
+
+}  // namespace emit

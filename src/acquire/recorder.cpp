@@ -1,0 +1,94 @@
+#include "emit/acquire/recorder.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "emit/acquire/recording.hpp"
+#include "emit/errors.hpp"
+
+namespace emit {
+namespace fw = emit::firmware;
+
+Recorder::Recorder(std::string path, const Sensor& sensor)
+    : path_(std::move(path)),
+      partial_path_(path_ + ".partial"),
+      electrode_count_(sensor.electrode_count()),
+      adc_bits_(sensor.adc.bits),
+      vref_V_(sensor.adc.vref_V),
+      counts_(static_cast<std::size_t>(electrode_count_ * electrode_count_)),
+      packet_(fw::packet_size(electrode_count_)) {
+  stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
+  if (!stream_) throw IoError(partial_path_ + ": cannot create the recording");
+  RecordingHeader header;
+  header.electrode_count = electrode_count_;
+  header.adc_bits = adc_bits_;
+  header.vref_V = vref_V_;
+  header.start_unix_us = static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+  std::array<std::uint8_t, recording_header_size> bytes{};
+  encode_recording_header(header, bytes.data());
+  stream_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!stream_) throw IoError(partial_path_ + ": cannot write the recording's header");
+}
+
+Recorder::~Recorder() {
+  try {
+    close();
+  } catch (const std::exception&) {  // PATH.partial stays for the user to look at
+  }
+}
+
+void Recorder::record(const SourceFrame& frame) {
+  const Index n = electrode_count_;
+  if (frame.volts.rows() != n || frame.volts.cols() != n)
+    throw InvalidInput(path_ + ": cannot record a " + std::to_string(frame.volts.rows()) + "x" +
+                       std::to_string(frame.volts.cols()) + " frame; the sensor has " + std::to_string(n) + " electrodes");
+  const double full_scale = std::ldexp(1.0, adc_bits_) - 1;
+  for (Index k = 0; k < n * n; ++k) {
+    const double counts = std::round(frame.volts.data()[k] / vref_V_ * full_scale);
+    counts_[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(std::clamp(counts, 0.0, full_scale));
+  }
+  fw::PacketHeader header;
+  header.electrode_count = static_cast<std::uint8_t>(n);
+  header.adc_bits = static_cast<std::uint8_t>(adc_bits_);
+  header.oversampling = 1;
+  header.sequence = static_cast<std::uint32_t>(frame.sequence);
+  header.timestamp_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));
+  write_packet(header, counts_.data());
+}
+
+void Recorder::record(const RawFrame& frame) {
+  if (frame.electrode_count != electrode_count_)
+    throw InvalidInput(path_ + ": cannot record a frame of " + std::to_string(frame.electrode_count) +
+                       " electrodes; the recording has " + std::to_string(electrode_count_));
+  fw::PacketHeader header;
+  header.electrode_count = static_cast<std::uint8_t>(frame.electrode_count);
+  header.adc_bits = static_cast<std::uint8_t>(frame.adc_bits);
+  header.oversampling = static_cast<std::uint8_t>(frame.oversampling);
+  header.sequence = frame.sequence;
+  header.timestamp_us = frame.timestamp_us;
+  write_packet(header, frame.counts.data());
+}
+
+void Recorder::write_packet(const fw::PacketHeader& header, const std::uint16_t* counts) {
+  if (closed_) throw IoError(path_ + ": the recording is closed");
+  const std::size_t size = fw::encode_packet(header, counts, packet_.data(), packet_.size());
+  if (size != packet_.size()) throw InvalidInput(path_ + ": a frame with an impossible packet header");
+  stream_.write(reinterpret_cast<const char*>(packet_.data()), static_cast<std::streamsize>(size));
+  if (!stream_) throw IoError(partial_path_ + ": write failed (disk full?)");
+  ++frames_;
+}
+
+void Recorder::close() {
+  if (closed_) return;
+  closed_ = true;
+  stream_.close();
+  if (!stream_) throw IoError(partial_path_ + ": could not finish writing the recording");
+  std::error_code ec;
+  std::filesystem::rename(partial_path_, path_, ec);
+  if (ec) throw IoError(partial_path_ + ": cannot rename to " + path_ + ": " + ec.message());
+}
+
+}  // namespace emit
