@@ -12,7 +12,12 @@ packages=(
   libceres-dev                          # nonlinear least squares (calibration)
   libopenblas-dev                       # BLAS for the per-frame products
   libgtest-dev libbenchmark-dev         # tests, benchmarks
+  libboost-dev                          # the live viewer's server (Boost.Beast, header-only)
+  chromium                              # the live viewer's browser test (headless)
 )
+# node and npm drive the browser test (playwright-core); any install of them will do.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for package in "${packages[@]}"; do

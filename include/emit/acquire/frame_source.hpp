@@ -1,0 +1,54 @@
+#pragma once
+/// \file frame_source.hpp
+/// Where live frames come from (issue 6): the digital twin with a scripted or random finger now;
+/// a recorded file and a serial port later. Every source hands out the same SourceFrame, so the
+/// live loop (live/live_loop.hpp) does not care which one it reads.
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "emit/sensor/sensor.hpp"
+#include "emit/types.hpp"
+
+namespace emit {
+
+/// One frame as a source delivers it.
+struct SourceFrame {
+  Frame volts;                    ///< N×N [V], row = grounded electrode, column = sensed electrode
+  std::uint64_t sequence = 0;     ///< as the source numbers frames (0, 1, 2, … for the simulator)
+  double board_time_s = 0;        ///< when the board (or simulator) took it, on the board's clock
+  /// When it reached the host: end-to-end latency is measured from here.
+  std::chrono::steady_clock::time_point received;
+};
+
+struct SourceOptions {
+  /// Pace of the simulator (and of a file replayed at its own pace) [frames/s]; 0: as fast as possible.
+  double frames_per_s = 50;
+  /// The simulator's ADC (quantisation and noise, as the sensor's ADC spec says); off: exact frames.
+  bool adc_noise = true;
+  std::uint64_t seed = 1;  ///< the simulator's noise and random presses
+  /// The simulator's first frames have no press, so the baseline (live/baseline.hpp) captures an
+  /// untouched sheet; the scripts start after them.
+  int untouched_frames = 15;
+};
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  /// Waits up to `timeout` for the next frame. true: `frame` filled. false: none yet (the caller
+  /// serves commands and asks again).
+  /// \throw IoError when the source has failed for good or ended (finished() is then true).
+  virtual bool next(SourceFrame& frame, std::chrono::milliseconds timeout) = 0;
+  virtual bool finished() const = 0;
+  /// One line for people, e.g. "sim: scripted finger on default 60 mm", "serial:/dev/ttyUSB0 at 921600".
+  virtual std::string description() const = 0;
+};
+
+/// A source from its spec: "sim" (a finger moving over the sheet in a figure-eight, lifted now and
+/// then), "sim:random" (presses at random places), "sim:fixed:X,Y[,F]" (one press held at X, Y mm
+/// with F N, default 10); later "file:PATH" and "serial:PATH".
+/// \throw InvalidInput naming the spec.
+std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options);
+
+}  // namespace emit
