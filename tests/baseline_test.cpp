@@ -1,6 +1,8 @@
 // The live baseline: an exact mean at capture, slow drift followed while untouched, frozen while touched.
 #include "emit/live/baseline.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "emit/errors.hpp"

@@ -1,6 +1,7 @@
 #include "emit/acquire/sim_source.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -72,7 +73,6 @@ SimSource::SimSource(const Sensor& sensor, const SimScript& script, const Source
   center_mm_ = (low + high) / 2;
   half_extent_mm_ = (high - low) / 2;
   if (script_.kind == SimScript::Kind::fixed) validate_press(sensor_, script_.fixed, "source sim:fixed");
-  thread_ = std::thread([this] { produce(); });
 }
 
 SimSource::~SimSource() {
@@ -81,7 +81,7 @@ SimSource::~SimSource() {
     stop_ = true;
   }
   ready_.notify_all();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
 }
 
 double SimSource::script_time_s(std::uint64_t sequence) const {
@@ -150,6 +150,9 @@ void SimSource::produce() {
 }
 
 bool SimSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
+  // The twin starts on the first call, not at construction: frames made while the reader is
+  // still building its models would only pile up (and the baseline must see the untouched ones).
+  if (!thread_.joinable()) thread_ = std::thread([this] { produce(); });
   std::unique_lock lock(mutex_);
   ready_.wait_for(lock, timeout, [this] { return !queue_.empty() || failure_; });
   if (!queue_.empty()) {

@@ -63,7 +63,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   /// Queue a message, replacing one still waiting (the client is slower than the frames).
   void offer(MessagePtr message) {
     pending_ = std::move(message);
-    if (!writing_) write_next();
+    write_next();
   }
 
  private:
@@ -72,6 +72,11 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
       if (ec) return self->forget();
       const std::string command = beast::buffers_to_string(self->input_.data());
       self->input_.consume(self->input_.size());
+      if (command == "ack") {  // the client has the last frame: the next may go
+        self->awaiting_ack_ = false;
+        self->write_next();
+        return self->read();
+      }
       ++self->state_.commands;
       try {
         if (self->state_.on_command) self->state_.on_command(command);
@@ -83,10 +88,11 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   }
 
   void write_next() {
-    if (!pending_ || closed_) return;
+    if (!pending_ || closed_ || writing_ || awaiting_ack_) return;
     current_ = std::move(pending_);
     pending_.reset();
     writing_ = true;
+    awaiting_ack_ = current_->binary;  // frames are acknowledged; the mesh is not
     ws_.binary(current_->binary);
     ws_.async_write(net::buffer(current_->bytes), [self = shared_from_this()](beast::error_code ec, std::size_t) {
       self->writing_ = false;
@@ -108,6 +114,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   beast::flat_buffer input_;
   MessagePtr pending_, current_;
   bool writing_ = false, closed_ = false;
+  bool awaiting_ack_ = false;  ///< a frame is out and the client has not said "ack" yet
 };
 
 /// One HTTP connection: the page at /, the WebSocket at /ws, 404 elsewhere.

@@ -2,7 +2,7 @@
 /// \file sim_source.hpp
 /// The digital twin as a live source: a scripted finger presses the sheet, the twin computes each
 /// frame (with the ADC's noise) on a thread of its own, paced at SourceOptions::frames_per_s, and
-/// the frames queue up for next(). Which presses made frame `sequence` is a pure function of the
+/// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame `sequence` is a pure function of the
 /// script (presses_of), so tests can compare contacts with the truth.
 #include <condition_variable>
 #include <deque>
@@ -34,7 +34,7 @@ SimScript parse_sim_script(const std::string& spec);
 
 class SimSource : public FrameSource {
  public:
-  /// Builds the twin (meshing takes a second) and starts the frame thread.
+  /// Builds the twin (meshing takes a second); the frame thread starts at the first next().
   /// \throw InvalidInput for a bad script (e.g. a fixed press off the sheet) or sensor.
   SimSource(const Sensor& sensor, const SimScript& script, const SourceOptions& options);
   ~SimSource() override;

@@ -4,9 +4,10 @@
 /// the viewer page; a WebSocket at /ws receives, on connecting, the mesh once (a JSON text
 /// message, viewer_messages.hpp), then every frame the loop publishes (a binary message: a JSON
 /// header and the pressure per triangle as float32). A client's text messages are commands
-/// ("recapture"), handed to the callback. A slow client never holds the loop up: each client has
-/// at most one frame waiting, replaced by newer ones (the older is dropped); a client that goes
-/// away is forgotten.
+/// ("recapture"), handed to the callback; "ack" is the client saying it has the last frame. A
+/// slow client never holds the loop up: each client has one frame in flight until it says "ack"
+/// (so frames cannot pile up in the sockets' buffers) and at most one waiting, replaced by newer
+/// ones (the older is dropped); a client that goes away is forgotten.
 #include <atomic>
 #include <cstdint>
 #include <functional>

@@ -11,6 +11,8 @@
 ///    "frames_per_s", "latency_ms", "max_pressure_N_per_mm2",
 ///    "contacts": [{"x_mm", "y_mm", "area_mm2", "pressure_N_per_mm2", "force_N"}]}
 /// padded with spaces to a multiple of 4 bytes, then one float32 per triangle: the pressure [N/mm²].
+/// The client answers each frame with the text "ack" (the next frame is sent only then), and may
+/// send the command "recapture" (the baseline).
 #include <cstdint>
 #include <string>
 
