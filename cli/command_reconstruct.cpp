@@ -6,7 +6,6 @@
 
 #include "commands.hpp"
 #include "emit/errors.hpp"
-#include "emit/fit/fit_model.hpp"
 #include "emit/io/atomic_file.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
@@ -15,6 +14,7 @@
 #include "emit/reconstruct/batch.hpp"
 #include "emit/reconstruct/electrode_health.hpp"
 #include "emit/reconstruct/operator_cache.hpp"
+#include "emit/reconstruct/reconstruction_setup.hpp"
 #include "emit/reconstruct/reconstructor.hpp"
 #include "emit/render/field_image.hpp"
 #include "emit/threads.hpp"
@@ -46,41 +46,32 @@ void write_pressure_image(const Reconstructor& reconstructor, const std::vector<
 
 void run_reconstruct(const ReconstructArgs& args) {
   const Sensor sensor = sensor_from_option(args.sensor_path);
-  const bool fit = args.method == "fit";  // fitting is seeded by the paper method's image
-  OperatorOptions options = method_options(fit ? "paper" : args.method);
-  if (args.lambda2 > 0) options.lambda2 = args.lambda2;
+  const bool fit = args.method == "fit";
   const PressureCalibration calibration =
       args.calibration_path.empty() ? PressureCalibration::uncalibrated(sensor) : load_calibration(args.calibration_path);
-  if (calibration.calibrated && fit != calibration.fitted_contact_law.has_value())
-    throw InvalidInput(args.calibration_path + ": a calibration for " + (fit ? "the linear methods" : "contact fitting") +
-                       "; run 'emit calibrate --method " + args.method + "'");
+  check_calibration_for_method(calibration, args.method, args.calibration_path);
   if (!args.images_dir.empty()) std::filesystem::create_directories(args.images_dir);
   AtomicFile contacts_file(args.contacts_path);  // fails now, not after the work, if unwritable
 
-  const auto start = std::chrono::steady_clock::now();
-  const std::string cache = args.no_cache ? "" : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
-  const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
-  ReconstructionModel model = build_reconstruction_model(sensor, options, cache, {}, say);
-  const int N = model.mesh.electrode_count();
-  // Read the frames before anything is written: a bad value stops the run with nothing lost.
+  // Read the frames before anything is built or written: a bad value stops the run with nothing lost.
+  const int N = electrode_count_of(sensor);
   const Frame reference = average_frames(read_frames_csv(args.reference_path, N));
   const std::vector<Frame> frames = read_frames_csv(args.frames_path, N);
-  std::vector<int> dead;
+  SetupOptions setup_options;
+  setup_options.method = args.method;
+  setup_options.lambda2 = args.lambda2;
+  setup_options.cache_dir = args.no_cache ? "" : (args.cache_dir.empty() ? default_cache_dir() : args.cache_dir);
   for (const DeadElectrode& d : find_dead_electrodes(frames, sensor.adc)) {
     std::fprintf(stderr, "emit: warning: electrode %d %s: leaving out its %d measurements\n", d.electrode,
                  d.reason.c_str(), 2 * (N - 1));
-    dead.push_back(d.electrode);
+    setup_options.excluded.push_back(d.electrode);
   }
-  check_no_stuck_rows(frames, sensor.adc, dead, args.frames_path);
-  if (!dead.empty()) model = build_reconstruction_model(sensor, options, cache, dead, say);
-  std::optional<FitModel> fit_model;
-  std::optional<ContactFitter> fitter;
-  Sensor fit_sensor = sensor;  // with the calibrated contact law, if there is one
-  if (fit) {
-    if (calibration.fitted_contact_law) fit_sensor.contact = *calibration.fitted_contact_law;
-    fit_model = build_fit_model(sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr, say);
-    fitter.emplace(fit_sensor, fit_model->mesh, fit_model->green, model.measurements);
-  }
+  check_no_stuck_rows(frames, sensor.adc, setup_options.excluded, args.frames_path);
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto say = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
+  ReconstructionSetup setup(sensor, calibration, setup_options, say);
+  const ReconstructionModel& model = setup.model();
   std::fprintf(stderr, "model ready in %.2f s (%lld triangles, %d measurements%s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                static_cast<long long>(model.mesh.triangle_count()), model.measurements.size(),
@@ -95,8 +86,7 @@ void run_reconstruct(const ReconstructArgs& args) {
     const auto contacts = reconstruct_batch(model, calibration, frame_options, reference, frames, thread_count());
     for (std::size_t f = 0; f < frames.size(); ++f) write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts[f], -1);
   } else {
-    Reconstructor reconstructor(model, calibration, frame_options);
-    if (fitter) reconstructor.use_fitter(&*fitter);
+    Reconstructor reconstructor = setup.reconstructor(frame_options);
     reconstructor.set_reference(reference);
     Progress progress("reconstructing frame", static_cast<int>(frames.size()));
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -113,7 +103,7 @@ void run_reconstruct(const ReconstructArgs& args) {
   contacts_file.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - online_start).count();
   char lambda[48] = "";
-  if (!fit) std::snprintf(lambda, sizeof lambda, " (lambda2 = %g)", options.lambda2);
+  if (!fit) std::snprintf(lambda, sizeof lambda, " (lambda2 = %g)", setup.operator_options().lambda2);
   std::printf("reconstructed %zu frames (%.0f frames/s%s) with the %s method%s; contacts in %s\n", frames.size(),
               frames.size() / std::max(seconds, 1e-9), args.images_dir.empty() ? "" : ", with images",
               args.method.c_str(), lambda, args.contacts_path.c_str());

@@ -19,6 +19,7 @@ void add_reconstruct_command(CLI::App& app);
 void add_eval_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_live_command(CLI::App& app);
 
 /// The sensor file given with --sensor, or the built-in default sensor when empty.
 Sensor sensor_from_option(const std::string& path);

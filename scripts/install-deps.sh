@@ -11,11 +11,15 @@ packages=(
   libpng-dev                            # images
   libceres-dev                          # nonlinear least squares (calibration)
   libopenblas-dev                       # BLAS for the per-frame products
-  libboost-dev                          # Boost.Asio: the serial port
   libgtest-dev libbenchmark-dev         # tests, benchmarks
   zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC
   clang libclang-rt-14-dev              # libFuzzer (clang++ -fsanitize=fuzzer) for the decoder's fuzz test
+  libboost-dev                          # the serial port and the live viewer's server (Boost.Asio, Beast)
+  chromium                              # the live viewer's browser test (headless)
 )
+# node and npm drive the browser test (playwright-core); any install of them will do.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for package in "${packages[@]}"; do

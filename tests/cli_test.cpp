@@ -258,6 +258,31 @@ TEST(Cli, DemoWritesFramesAndPictures) {
   }
 }
 
+// emit live on the simulator holding one press: one JSON line per reconstructed frame (the
+// baseline's 10 capture frames write none), numbered by the source; no contact while the script
+// leaves the sheet untouched (its first 15 frames), then one within live_loop_test's 0.5 mm.
+TEST(Cli, LiveWritesTheScriptedPressAsJsonLines) {
+  const std::string d = test::temp_folder("cli_live");
+  const auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --contacts " + d + "/c.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("latency mean"), std::string::npos) << r.out;
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  std::string line;
+  long count = 0, frame = -1;
+  for (; std::getline(lines, line); ++count) {
+    const auto contacts = parse_contacts_line(line, &frame);
+    EXPECT_EQ(frame, 10 + count);
+    if (frame < 15) {
+      EXPECT_TRUE(contacts.empty()) << line;
+    } else {
+      ASSERT_EQ(contacts.size(), 1u) << line;
+      EXPECT_LT(std::hypot(contacts[0].x_mm - 20, contacts[0].y_mm - 40), 0.5) << line;
+    }
+  }
+  EXPECT_EQ(count, 20);
+}
+
 // Bad input: one line on stderr that starts with "emit: ", a non-zero exit, and the output
 // file — here one that already holds good data — left exactly as it was.
 struct BadRun {
@@ -326,7 +351,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
                "needs --reference, --frames, --truth and --out"},
         BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
-        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads"}),
+        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads"},
+        BadRun{"unknown live source", "live --source zigzag --frames 1", "source \"zigzag\": unknown"},
+        BadRun{"live serve address without a port", "live --serve 127.0.0.1 --frames 1 --cache DIR/cache",
+               "is not HOST:PORT"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -1,0 +1,104 @@
+#pragma once
+/// \file live_loop.hpp
+/// The live path (issue 6): source → baseline → Reconstructor → contacts (JSON Lines) and
+/// publishers (the viewer's server). One thread runs it; commands (re-capture the baseline) may
+/// come from any thread and are applied between frames. It measures frames/s and end-to-end
+/// latency: from SourceFrame::received to the frame's contacts written and published.
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "emit/acquire/frame_source.hpp"
+#include "emit/live/baseline.hpp"
+#include "emit/live/latency_stats.hpp"
+#include "emit/reconstruct/reconstruction_setup.hpp"
+
+namespace emit {
+
+/// One frame as the loop publishes it; the pointers are valid during publish() only.
+struct LiveFrame {
+  std::uint64_t index = 0;         ///< frames the loop has handled before this one (capture included)
+  std::uint64_t sequence = 0;      ///< the source's number
+  bool capturing_baseline = false; ///< no reference yet, or a re-capture under way: no contacts
+  std::uint64_t baseline_captures = 0;
+  const std::vector<Contact>* contacts = nullptr;
+  const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
+  double frames_per_s = 0;         ///< recent rate (over about the last second)
+  double latency_s = 0;            ///< the previous frame's end-to-end latency
+};
+
+/// Receives every frame the loop handles (the viewer's server). Called on the loop's thread; it
+/// must not block on clients.
+class FramePublisher {
+ public:
+  virtual ~FramePublisher() = default;
+  virtual void publish(const LiveFrame& frame) = 0;
+};
+
+struct LiveOptions {
+  BaselineOptions baseline;
+  FrameOptions frame;
+  /// Stop after this many reconstructed frames (the baseline capture's frames do not count); 0: run until stopped.
+  std::uint64_t max_frames = 0;
+  /// How long next() waits before the loop looks at commands and the stop flag again.
+  std::chrono::milliseconds poll{50};
+};
+
+struct LiveStats {
+  std::uint64_t frames = 0;        ///< reconstructed (and written, and published)
+  std::uint64_t capture_frames = 0;
+  double seconds = 0;              ///< from the first reconstructed frame to the last
+  double frames_per_s = 0;
+  LatencyStats latency;            ///< end to end, per reconstructed frame
+};
+
+class LiveLoop {
+ public:
+  /// `source` and `setup` must outlive the loop. \throw InvalidInput for a bad option.
+  LiveLoop(FrameSource& source, ReconstructionSetup& setup, const LiveOptions& options = {});
+
+  /// Contacts as JSON Lines (contacts_jsonl.hpp), "frame" = the source's sequence number, one line
+  /// per reconstructed frame, flushed each frame. Null: none.
+  void write_contacts_to(std::ostream* out) { contacts_out_ = out; }
+  /// Must outlive run(). Several may be added.
+  void add_publisher(FramePublisher* publisher) { publishers_.push_back(publisher); }
+  /// Told each reconstructed frame with its contacts (for tests and tools).
+  void on_frame(std::function<void(const SourceFrame&, const std::vector<Contact>&)> observer) {
+    observer_ = std::move(observer);
+  }
+
+  /// A command from any thread, applied before the next frame: "recapture" (the baseline).
+  /// \return false for an unknown command (ignored).
+  bool command(const std::string& name);
+
+  /// Runs until `stop` is set, max_frames are reconstructed, or the source ends (its IoError
+  /// propagates). Returns what it measured.
+  LiveStats run(const std::atomic<bool>& stop);
+
+ private:
+  void handle(const SourceFrame& frame);
+  void publish(LiveFrame& frame);
+
+  FrameSource& source_;
+  ReconstructionSetup& setup_;
+  LiveOptions options_;
+  Reconstructor reconstructor_;
+  Baseline baseline_;
+  std::ostream* contacts_out_ = nullptr;
+  std::vector<FramePublisher*> publishers_;
+  std::function<void(const SourceFrame&, const std::vector<Contact>&)> observer_;
+  std::atomic<bool> recapture_requested_{false};
+  SourceFrame frame_;
+  Vector no_pressure_;
+  const std::vector<Contact> no_contacts_;
+  LiveStats stats_;
+  std::uint64_t handled_ = 0;
+  std::chrono::steady_clock::time_point first_, last_, previous_publish_;
+  double mean_interval_s_ = 0, last_latency_s_ = 0;
+};
+
+}  // namespace emit

@@ -1,0 +1,92 @@
+#include "emit/live/live_loop.hpp"
+
+#include "emit/errors.hpp"
+#include "emit/io/contacts_jsonl.hpp"
+
+namespace emit {
+
+namespace {
+
+double seconds_between(std::chrono::steady_clock::time_point from, std::chrono::steady_clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in the displayed rate
+
+}  // namespace
+
+LiveLoop::LiveLoop(FrameSource& source, ReconstructionSetup& setup, const LiveOptions& options)
+    : source_(source),
+      setup_(setup),
+      options_(options),
+      reconstructor_(setup.reconstructor(options.frame)),
+      baseline_(options.baseline),
+      no_pressure_(Vector::Zero(setup.model().mesh.triangle_count())) {
+  if (options.poll.count() <= 0) throw InvalidInput("live: the poll interval must be positive");
+}
+
+bool LiveLoop::command(const std::string& name) {
+  if (name != "recapture") return false;
+  recapture_requested_ = true;
+  return true;
+}
+
+LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
+  while (!stop && (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
+    if (recapture_requested_.exchange(false)) baseline_.recapture();
+    if (source_.next(frame_, options_.poll)) handle(frame_);
+  }
+  stats_.seconds = stats_.frames > 1 ? seconds_between(first_, last_) : 0;
+  stats_.frames_per_s = stats_.seconds > 0 ? static_cast<double>(stats_.frames - 1) / stats_.seconds : 0;
+  return stats_;
+}
+
+void LiveLoop::handle(const SourceFrame& frame) {
+  LiveFrame out;
+  out.index = handled_++;
+  out.sequence = frame.sequence;
+  if (baseline_.capturing()) {
+    if (baseline_.capture(frame.volts)) reconstructor_.set_reference(baseline_.reference());
+    ++stats_.capture_frames;
+    out.capturing_baseline = true;
+    out.contacts = &no_contacts_;
+    out.pressure_N_per_mm2 = &no_pressure_;
+    publish(out);
+    return;
+  }
+  const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
+  if (baseline_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(baseline_.reference());
+  if (contacts_out_) {
+    const FitResult* fitted = reconstructor_.fit_result();
+    write_contacts_line(*contacts_out_, static_cast<long>(frame.sequence), contacts,
+                        fitted ? 1e3 * fitted->rms_misfit_V : -1);
+    contacts_out_->flush();
+    if (!*contacts_out_) throw IoError("live: could not write the contacts");
+  }
+  out.contacts = &contacts;
+  out.pressure_N_per_mm2 = &reconstructor_.pressure();
+  publish(out);
+  if (observer_) observer_(frame, contacts);
+
+  const auto now = std::chrono::steady_clock::now();
+  last_latency_s_ = seconds_between(frame.received, now);
+  stats_.latency.add(last_latency_s_);
+  if (stats_.frames == 0) first_ = now;
+  last_ = now;
+  ++stats_.frames;
+}
+
+void LiveLoop::publish(LiveFrame& frame) {
+  const auto now = std::chrono::steady_clock::now();
+  if (handled_ > 1) {
+    const double interval_s = seconds_between(previous_publish_, now);
+    mean_interval_s_ = mean_interval_s_ > 0 ? mean_interval_s_ + rate_smoothing * (interval_s - mean_interval_s_) : interval_s;
+  }
+  previous_publish_ = now;
+  frame.frames_per_s = mean_interval_s_ > 0 ? 1 / mean_interval_s_ : 0;
+  frame.latency_s = last_latency_s_;
+  frame.baseline_captures = baseline_.captures();
+  for (FramePublisher* publisher : publishers_) publisher->publish(frame);
+}
+
+}  // namespace emit

@@ -1,0 +1,76 @@
+#include "emit/live/viewer_messages.hpp"
+
+#include <bit>
+#include <cstring>
+
+#include <nlohmann/json.hpp>
+
+namespace emit {
+
+namespace {
+
+using json = nlohmann::json;
+
+void append_segment(json& out, const Mesh& mesh, const std::array<int, 2>& edge) {
+  for (int node : edge) {
+    out.push_back(mesh.nodes_mm(node, 0));
+    out.push_back(mesh.nodes_mm(node, 1));
+  }
+}
+
+}  // namespace
+
+std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
+  json nodes = json::array(), triangles = json::array(), outline = json::array(), electrodes = json::array();
+  for (Index v = 0; v < mesh.node_count(); ++v) {
+    nodes.push_back(mesh.nodes_mm(v, 0));
+    nodes.push_back(mesh.nodes_mm(v, 1));
+  }
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) triangles.push_back(mesh.triangles(t, k));
+  for (const auto& edge : mesh.border_edges()) append_segment(outline, mesh, edge);
+  for (int e = 0; e < mesh.electrode_count(); ++e) {
+    json segments = json::array();
+    for (const auto& edge : mesh.electrode_edges(e)) append_segment(segments, mesh, edge);
+    Vector2 center(0, 0);
+    for (int node : mesh.electrode_nodes[e]) center += mesh.nodes_mm.row(node).head<2>().transpose();
+    center /= std::max<double>(1.0, static_cast<double>(mesh.electrode_nodes[e].size()));
+    electrodes.push_back({{"segments_mm", segments}, {"x_mm", center.x()}, {"y_mm", center.y()}});
+  }
+  return json{{"type", "mesh"},       {"name", sheet_name},     {"nodes_mm", nodes},
+              {"triangles", triangles}, {"outline_mm", outline}, {"electrodes", electrodes}}
+      .dump();
+}
+
+std::string frame_message(const LiveFrame& frame, std::uint64_t commands) {
+  static_assert(std::endian::native == std::endian::little, "the frame message is little-endian");
+  json contacts = json::array();
+  for (const Contact& c : *frame.contacts)
+    contacts.push_back({{"x_mm", c.x_mm}, {"y_mm", c.y_mm}, {"area_mm2", c.area_mm2},
+                        {"pressure_N_per_mm2", c.pressure_N_per_mm2}, {"force_N", c.force_N}});
+  const Vector& pressure = *frame.pressure_N_per_mm2;
+  std::string header = json{{"type", "frame"},
+                            {"index", frame.index},
+                            {"sequence", frame.sequence},
+                            {"capturing_baseline", frame.capturing_baseline},
+                            {"baseline_captures", frame.baseline_captures},
+                            {"commands", commands},
+                            {"frames_per_s", frame.frames_per_s},
+                            {"latency_ms", 1e3 * frame.latency_s},
+                            {"max_pressure_N_per_mm2", pressure.size() ? pressure.maxCoeff() : 0.0},
+                            {"contacts", contacts}}
+                           .dump();
+  header.append((4 - header.size() % 4) % 4, ' ');
+  const auto header_bytes = static_cast<std::uint32_t>(header.size());
+  std::string message(4 + header.size() + 4 * static_cast<std::size_t>(pressure.size()), '\0');
+  std::memcpy(message.data(), &header_bytes, 4);
+  std::memcpy(message.data() + 4, header.data(), header.size());
+  char* values = message.data() + 4 + header.size();
+  for (Index t = 0; t < pressure.size(); ++t) {
+    const auto value = static_cast<float>(pressure[t]);
+    std::memcpy(values + 4 * t, &value, 4);
+  }
+  return message;
+}
+
+}  // namespace emit
