@@ -2,6 +2,8 @@
 // 60 x 60 mm sheet stands in for a real one: it records a reference frame and presses of known
 // force (the calibration), then a few presses; emit calibrates, reconstructs them by contact
 // fitting and by the paper's method, prints what it found beside the truth, and draws each frame.
+// Then it goes live: `emit live --source sim` with that calibration, a finger moving over the
+// sheet, and the viewer served in the browser.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +12,7 @@
 #include "commands.hpp"
 #include "emit/fit/fit_model.hpp"
 #include "emit/io/atomic_file.hpp"
+#include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
@@ -57,7 +60,14 @@ void print_found(std::size_t f, const std::vector<Press>& presses, const std::ve
                   fitted[k].force_N);
 }
 
-void run_demo(const std::string& out_dir) {
+struct DemoArgs {
+  std::string out_dir = "emit-demo", serve = "127.0.0.1:8080";
+  double live_seconds = 60;
+};
+
+/// Calibrates on the twin and reconstructs a few presses; writes the calibration to
+/// `calibration_path` for the live part.
+void calibrate_and_reconstruct(const std::string& out_dir, const std::string& calibration_path) {
   const Sensor sensor = default_sensor();
   const PressSequence sequence = {
       {{30, 30, 5, 10}},                    // centre, 5 mm indenter, 10 N
@@ -65,7 +75,6 @@ void run_demo(const std::string& out_dir) {
       {{20, 20, 4, 8}, {42, 40, 6, 15}},    // two fingers
       {{45, 15, 3, 2}},                     // a small, light press
   };
-  std::filesystem::create_directories(out_dir);
   std::printf("emit demo: %s (%d electrodes, %.1f V drive, %.0f ohm/sq); its digital twin stands in for the sheet\n",
               sensor.name.c_str(), sensor.electrode_count(), sensor.drive_voltage_V, sensor.sheet_resistance_ohm_per_sq);
   auto start = std::chrono::steady_clock::now();
@@ -128,18 +137,42 @@ void run_demo(const std::string& out_dir) {
   contacts_file.commit();
   write_frames_csv(out_dir + "/frames.csv", frames);
   write_presses_csv(out_dir + "/presses.csv", sequence);
-  std::printf("\nwrote %s/frames.csv, presses.csv, contacts.jsonl and %zu pressure maps frame_*.png\n", out_dir.c_str(),
-              sequence.size());
-  std::printf("next: emit eval (accuracy against the paper), emit reconstruct --help (your own frames)\n");
+  write_calibration(calibration_path, calibration);
+  std::printf("\nwrote %s/frames.csv, presses.csv, contacts.jsonl, calibration.json and %zu pressure maps frame_*.png\n",
+              out_dir.c_str(), sequence.size());
+}
+
+void run_demo(const DemoArgs& args) {
+  std::filesystem::create_directories(args.out_dir);
+  const std::string calibration_path = args.out_dir + "/calibration.json";
+  calibrate_and_reconstruct(args.out_dir, calibration_path);
+  std::printf("\nlive: the twin streams a finger moving over the sheet; watch it in a browser at the address below\n");
+  LiveArgs live;
+  live.source = "sim";
+  live.serve = args.serve;
+  live.calibration_path = calibration_path;
+  live.contacts_path = args.out_dir + "/live_contacts.jsonl";
+  live.record_path = args.out_dir + "/live.emitrec";
+  live.seconds = args.live_seconds;
+  run_live(live);
+  std::printf("next: emit live --source serial:/dev/ttyUSB0 --serve %s (your board), emit eval (accuracy against the\n"
+              "paper), emit reconstruct --help (your own frames)\n", args.serve.c_str());
 }
 
 }  // namespace
 
 void add_demo_command(CLI::App& app) {
-  auto out_dir = std::make_shared<std::string>("emit-demo");
-  CLI::App* cmd = app.add_subcommand("demo", "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw them");
-  cmd->add_option("--out", *out_dir, "Folder for the frames, presses, contacts and images")->capture_default_str();
-  cmd->callback([out_dir] { run_demo(*out_dir); });
+  auto a = std::make_shared<DemoArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "demo", "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw them, then go live in the browser");
+  cmd->add_option("--out", a->out_dir, "Folder for the frames, presses, contacts, images and the live recording")
+      ->capture_default_str();
+  cmd->add_option("--serve", a->serve, "Where the live viewer is served (HOST:PORT; port 0 picks a free one)")
+      ->capture_default_str();
+  cmd->add_option("--seconds", a->live_seconds, "How long the live part runs (Ctrl-C stops sooner)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->callback([a] { run_demo(*a); });
 }
 
 }  // namespace emit::cli

@@ -19,13 +19,6 @@ namespace emit::cli {
 
 namespace {
 
-struct LiveArgs {
-  std::string source = "sim", serve, contacts_path, method = "fit", sensor_path, calibration_path, cache_dir;
-  std::uint64_t frames = 0;
-  double frames_per_s = 50;
-  bool no_cache = false;
-};
-
 std::atomic<bool> stop_requested{false};  // set by SIGINT/SIGTERM: the loop finishes its frame and returns
 extern "C" void request_stop(int) { stop_requested = true; }
 
@@ -47,6 +40,8 @@ class StopOnSignals {
  private:
   struct sigaction old_int_ {}, old_term_ {};
 };
+
+}  // namespace
 
 void run_live(const LiveArgs& args) {
   const Sensor sensor = sensor_from_option(args.sensor_path);
@@ -74,8 +69,11 @@ void run_live(const LiveArgs& args) {
                             [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); });
   LiveOptions live_options;
   live_options.max_frames = args.frames;
+  live_options.max_seconds = args.seconds;
   LiveLoop loop(*source, setup, live_options);
   loop.write_contacts_to(contacts);
+  std::optional<Recorder> recorder;
+  if (!args.record_path.empty()) loop.record_to(&recorder.emplace(args.record_path, sensor));
   std::optional<LiveServer> server;
   if (!args.serve.empty()) {
     server.emplace(args.serve, setup.model().mesh, sensor.name, [&loop](const std::string& command) { loop.command(command); });
@@ -83,8 +81,10 @@ void run_live(const LiveArgs& args) {
   }
   std::fprintf(say, "source: %s\n", source->description().c_str());
   if (server) std::fprintf(say, "viewer: %s\n", server->url().c_str());
-  std::fprintf(say, "reconstructing with the %s method; %s\n", args.method.c_str(),
-               args.frames ? ("stopping after " + std::to_string(args.frames) + " frames").c_str() : "Ctrl-C stops");
+  const std::string stopping = args.frames    ? "stopping after " + std::to_string(args.frames) + " frames"
+                               : args.seconds ? "stopping after " + std::to_string(static_cast<int>(args.seconds)) + " s (Ctrl-C stops sooner)"
+                                              : std::string("Ctrl-C stops");
+  std::fprintf(say, "reconstructing with the %s method; %s\n", args.method.c_str(), stopping.c_str());
   std::fflush(say);
 
   stop_requested = false;
@@ -94,18 +94,26 @@ void run_live(const LiveArgs& args) {
                     "(from a frame's arrival to its contacts written and published)\n",
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
                1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s());
+  if (recorder) {
+    recorder->close();
+    std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
+                 static_cast<unsigned long long>(recorder->frames()), recorder->path().c_str(), recorder->path().c_str());
+  }
   if (!calibration.calibrated) std::fprintf(say, "note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }
-
-}  // namespace
 
 void add_live_command(CLI::App& app) {
   auto a = std::make_shared<LiveArgs>();
   CLI::App* cmd = app.add_subcommand("live", "Reconstruct frames as they come from a source; serve a live viewer");
   cmd->footer("Examples:\n  emit live --source sim --serve 127.0.0.1:8080\n"
+              "  emit live --source serial:/dev/ttyUSB0 --serve 127.0.0.1:8080 --record session.emitrec\n"
+              "  emit live --source file:session.emitrec --contacts - --fps 0\n"
               "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
-  cmd->add_option("--source", a->source, "sim (a finger moving in a figure-eight), sim:random, or sim:fixed:X,Y[,F]")
+  cmd->add_option("--source", a->source,
+                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], file:REC (a recording), "
+                  "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
       ->capture_default_str();
+  cmd->add_option("--record", a->record_path, "Record every frame the source gives to this file (replay with file:)");
   cmd->add_option("--serve", a->serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--contacts", a->contacts_path, "Contacts out as JSON Lines: a file, or - for stdout");
   cmd->add_option("--method", a->method, "fit (model-based contact fitting) or paper (Tikhonov, Q = I)")
@@ -117,7 +125,9 @@ void add_live_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--frames", a->frames, "Stop after this many reconstructed frames (default: run until Ctrl-C)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--fps", a->frames_per_s, "The simulator's frame rate (0: as fast as it goes)")
+  cmd->add_option("--seconds", a->seconds, "Stop after this many seconds (default: run until Ctrl-C)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--fps", a->frames_per_s, "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--cache", a->cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");

@@ -1,6 +1,7 @@
 #pragma once
 // The emit command-line tool: one file per subcommand. The CLI parses, prints and calls the
 // library; it holds no maths.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,18 @@ void add_eval_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_live_command(CLI::App& app);
+
+/// What `emit live` is asked to do (command_live.cpp); `emit demo` runs it too.
+struct LiveArgs {
+  std::string source = "sim", serve, contacts_path, record_path, method = "fit", sensor_path, calibration_path, cache_dir;
+  std::uint64_t frames = 0;
+  double seconds = 0;  ///< stop after this long (0: no limit)
+  double frames_per_s = 50;
+  bool no_cache = false;
+};
+/// Reconstructs frames from args.source until Ctrl-C, args.frames or args.seconds; prints the
+/// viewer's address, and frames/s and latency at the end.
+void run_live(const LiveArgs& args);
 
 /// The sensor file given with --sensor, or the built-in default sensor when empty.
 Sensor sensor_from_option(const std::string& path);

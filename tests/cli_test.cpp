@@ -235,10 +235,15 @@ TEST(Cli, MeshFileSensor) {
   EXPECT_EQ(read_frames_csv(dir + "/f.csv", 16).size(), 1u);
 }
 
-TEST(Cli, DemoWritesFramesAndPictures) {
+TEST(Cli, DemoWritesFramesAndPicturesThenGoesLive) {
   const std::string dir = test::temp_folder("cli_demo");
-  const auto r = run_emit("demo --out " + dir + "/demo");
+  const auto r = run_emit("demo --out " + dir + "/demo --serve 127.0.0.1:0 --seconds 4");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The live part: the viewer's address, and the frames it reconstructed, written and recorded.
+  EXPECT_NE(r.out.find("viewer: http://127.0.0.1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("latency mean"), std::string::npos) << r.out;
+  EXPECT_FALSE(test::read_text(dir + "/demo/live_contacts.jsonl").empty());
+  EXPECT_TRUE(std::filesystem::exists(dir + "/demo/live.emitrec"));
   EXPECT_EQ(read_frames_csv(dir + "/demo/frames.csv", 16).size(), 4u);
   for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/demo/frame_" + std::to_string(f) + ".png").height(), 100);
   // It found every press, two fingers included, where issue 4 wants it (p95 0.6 mm).
@@ -256,6 +261,28 @@ TEST(Cli, DemoWritesFramesAndPictures) {
       EXPECT_LT(nearest, 0.6) << "frame " << f << ", press at " << p.x_mm << ", " << p.y_mm;
     }
   }
+}
+
+// A live session recorded, then replayed from the file as fast as it goes: the baseline's 10
+// capture frames and the 20 reconstructed ones are all in the recording, and the replay finds the
+// press where the simulator held it (live_loop_test's 0.5 mm), ending by itself at the file's end.
+TEST(Cli, LiveRecordsAndReplaysAFile) {
+  const std::string d = test::temp_folder("cli_live_record");
+  auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --record " + d + "/r.emitrec --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("recorded 30 frames"), std::string::npos) << r.out;
+  r = run_emit("live --source file:" + d + "/r.emitrec --fps 0 --contacts " + d + "/c.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  std::string line;
+  int pressed = 0;
+  while (std::getline(lines, line))
+    for (const Contact& c : parse_contacts_line(line)) {
+      EXPECT_LT(std::hypot(c.x_mm - 20, c.y_mm - 40), 0.5) << line;
+      ++pressed;
+    }
+  EXPECT_GE(pressed, 10);  // the script holds the press from its 16th frame on (frames 15..29)
 }
 
 // emit live on the simulator holding one press: one JSON line per reconstructed frame (the

@@ -92,6 +92,7 @@ bool FileSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
   frame.board_time_s = pending_.board_time_s;
   frame.received = Clock::now();
   have_pending_ = false;
+  finished_ = frames_read_ >= frame_count_;  // the last frame is out: a reader can stop without asking again
   return true;
 }
 

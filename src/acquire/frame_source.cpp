@@ -1,5 +1,6 @@
 #include "emit/acquire/frame_source.hpp"
 
+#include "emit/acquire/device_source.hpp"
 #include "emit/acquire/sim_source.hpp"
 #include "emit/errors.hpp"
 
@@ -8,8 +9,9 @@ namespace emit {
 std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options) {
   if (spec == "sim" || spec.rfind("sim:", 0) == 0)
     return std::make_unique<SimSource>(sensor, parse_sim_script(spec), options);
-  // file:PATH and serial:PATH join here.
-  throw InvalidInput("source \"" + spec + "\": unknown; expected sim, sim:random or sim:fixed:X,Y[,F]");
+  if (auto device = open_device_source(spec, sensor, options)) return device;
+  throw InvalidInput("source \"" + spec +
+                     "\": unknown; expected sim, sim:random, sim:fixed:X,Y[,F], file:PATH or serial:PATH[@BAUD]");
 }
 
 }  // namespace emit

@@ -134,7 +134,10 @@ void SimSource::produce() {
       if (ready_.wait_until(lock, due, [this] { return stop_; })) return;
       frame.received = std::chrono::steady_clock::now();
       frame.board_time_s = options_.frames_per_s > 0 ? due_s : std::chrono::duration<double>(frame.received - start).count();
-      if (queue_.size() >= queue_limit) {
+      if (options_.frames_per_s == 0) {  // unpaced: the twin waits for the reader, so every frame is read
+        ready_.wait(lock, [this] { return stop_ || queue_.size() < queue_limit; });
+        if (stop_) return;
+      } else if (queue_.size() >= queue_limit) {  // paced like a board: its frames come whether read or not
         queue_.pop_front();
         ++dropped_;
       }
@@ -158,6 +161,8 @@ bool SimSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
   if (!queue_.empty()) {
     frame = std::move(queue_.front());
     queue_.pop_front();
+    lock.unlock();
+    ready_.notify_all();  // an unpaced twin may be waiting for room
     return true;
   }
   if (failure_) std::rethrow_exception(failure_);

@@ -23,6 +23,7 @@ LiveLoop::LiveLoop(FrameSource& source, ReconstructionSetup& setup, const LiveOp
       baseline_(options.baseline),
       no_pressure_(Vector::Zero(setup.model().mesh.triangle_count())) {
   if (options.poll.count() <= 0) throw InvalidInput("live: the poll interval must be positive");
+  if (!(options.max_seconds >= 0)) throw InvalidInput("live: the time limit must be 0 (none) or positive");
 }
 
 bool LiveLoop::command(const std::string& name) {
@@ -32,7 +33,12 @@ bool LiveLoop::command(const std::string& name) {
 }
 
 LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
-  while (!stop && (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto out_of_time = [&] {
+    return options_.max_seconds > 0 && seconds_between(start, std::chrono::steady_clock::now()) >= options_.max_seconds;
+  };
+  while (!stop && !source_.finished() && !out_of_time() &&
+         (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
     if (recapture_requested_.exchange(false)) baseline_.recapture();
     if (source_.next(frame_, options_.poll)) handle(frame_);
   }
@@ -45,6 +51,7 @@ void LiveLoop::handle(const SourceFrame& frame) {
   LiveFrame out;
   out.index = handled_++;
   out.sequence = frame.sequence;
+  if (recorder_) recorder_->record(frame);
   if (baseline_.capturing()) {
     if (baseline_.capture(frame.volts)) reconstructor_.set_reference(baseline_.reference());
     ++stats_.capture_frames;

@@ -35,8 +35,9 @@ class FileSource : public FrameSource {
   ///   is truncated, or was recorded with another electrode count than the sensor's.
   FileSource(std::string path, const Sensor& sensor, bool as_fast_as_possible);
 
-  /// received: when the frame was handed out. \throw IoError "PATH: end of recording" after the
-  /// last frame (finished() is then true), or naming the packet if one is corrupt.
+  /// received: when the frame was handed out. finished() turns true as the last frame is handed
+  /// out. \throw IoError "PATH: end of recording" when asked for more, or naming the packet if one
+  /// is corrupt.
   bool next(SourceFrame& frame, std::chrono::milliseconds timeout) override;
   bool finished() const override { return finished_; }
   std::string description() const override;

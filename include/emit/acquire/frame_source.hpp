@@ -47,7 +47,8 @@ class FrameSource {
 
 /// A source from its spec: "sim" (a finger moving over the sheet in a figure-eight, lifted now and
 /// then), "sim:random" (presses at random places), "sim:fixed:X,Y[,F]" (one press held at X, Y mm
-/// with F N, default 10); later "file:PATH" and "serial:PATH".
+/// with F N, default 10); "file:PATH" (a recording, recording.hpp) and "serial:PATH[@BAUD]" (the
+/// board, device_source.hpp).
 /// \throw InvalidInput naming the spec.
 std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options);
 

@@ -47,7 +47,8 @@ class SimSource : public FrameSource {
 
   /// The presses the twin was given for frame `sequence` (empty: nothing touches).
   std::vector<Press> presses_of(std::uint64_t sequence) const;
-  /// Frames the twin made that were dropped because the reader fell more than `queue_limit` behind.
+  /// Frames the twin made that were dropped because the reader fell more than `queue_limit` behind
+  /// (paced only: unpaced, frames_per_s = 0, the twin waits for the reader and drops none).
   std::uint64_t dropped() const;
 
   static constexpr std::size_t queue_limit = 8;

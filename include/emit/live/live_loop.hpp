@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "emit/acquire/frame_source.hpp"
+#include "emit/acquire/recorder.hpp"
 #include "emit/live/baseline.hpp"
 #include "emit/live/latency_stats.hpp"
 #include "emit/reconstruct/reconstruction_setup.hpp"
@@ -44,6 +45,8 @@ struct LiveOptions {
   FrameOptions frame;
   /// Stop after this many reconstructed frames (the baseline capture's frames do not count); 0: run until stopped.
   std::uint64_t max_frames = 0;
+  /// Stop after this many seconds of running; 0: no limit.
+  double max_seconds = 0;
   /// How long next() waits before the loop looks at commands and the stop flag again.
   std::chrono::milliseconds poll{50};
 };
@@ -64,6 +67,8 @@ class LiveLoop {
   /// Contacts as JSON Lines (contacts_jsonl.hpp), "frame" = the source's sequence number, one line
   /// per reconstructed frame, flushed each frame. Null: none.
   void write_contacts_to(std::ostream* out) { contacts_out_ = out; }
+  /// Every frame the source gives (baseline capture included) is recorded here. Null: none.
+  void record_to(Recorder* recorder) { recorder_ = recorder; }
   /// Must outlive run(). Several may be added.
   void add_publisher(FramePublisher* publisher) { publishers_.push_back(publisher); }
   /// Told each reconstructed frame with its contacts (for tests and tools).
@@ -75,8 +80,8 @@ class LiveLoop {
   /// \return false for an unknown command (ignored).
   bool command(const std::string& name);
 
-  /// Runs until `stop` is set, max_frames are reconstructed, or the source ends (its IoError
-  /// propagates). Returns what it measured.
+  /// Runs until `stop` is set, max_frames are reconstructed, or the source has finished (a
+  /// recording's end); a source's failure (IoError) propagates. Returns what it measured.
   LiveStats run(const std::atomic<bool>& stop);
 
  private:
@@ -89,6 +94,7 @@ class LiveLoop {
   Reconstructor reconstructor_;
   Baseline baseline_;
   std::ostream* contacts_out_ = nullptr;
+  Recorder* recorder_ = nullptr;
   std::vector<FramePublisher*> publishers_;
   std::function<void(const SourceFrame&, const std::vector<Contact>&)> observer_;
   std::atomic<bool> recapture_requested_{false};
