@@ -10,6 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev       # command line, JSON
   libpng-dev                            # images
   libceres-dev                          # nonlinear least squares (calibration)
+  libsuitesparse-dev                    # CHOLMOD: the Jacobian's supernodal Cholesky
   libopenblas-dev                       # BLAS for the per-frame products
   libgtest-dev libbenchmark-dev         # tests, benchmarks
   zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC

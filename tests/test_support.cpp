@@ -53,10 +53,11 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-CommandResult run_emit(const std::string& arguments) {
+CommandResult run_emit(const std::string& arguments, const std::string& environment) {
   const std::string folder = temp_folder("run");
   const std::string out = folder + "/stdout", err = folder + "/stderr";
-  const std::string command = std::string(EMIT_CLI_PATH) + " " + arguments + " >" + out + " 2>" + err + " </dev/null";
+  const std::string command =
+      environment + " " + std::string(EMIT_CLI_PATH) + " " + arguments + " >" + out + " 2>" + err + " </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -17,8 +17,9 @@ struct CommandResult {
   int exit_code = -1;
   std::string out, err;
 };
-/// Run the emit CLI with these arguments (a shell-quoted string), capturing stdout and stderr.
-CommandResult run_emit(const std::string& arguments);
+/// Run the emit CLI with these arguments (a shell-quoted string), capturing stdout and stderr;
+/// `environment`: shell assignments put before the command (VAR=value ...).
+CommandResult run_emit(const std::string& arguments, const std::string& environment = "");
 
 /// A fresh, empty temporary folder for one test.
 std::string temp_folder(const std::string& name);
