@@ -378,11 +378,11 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
                                     const std::function<bool(const Vector&, Disc&)>& residual_peak) {
   if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
   result_ = {};
-  // Nothing touches: the frame is within the readings' noise of the reference. The linear image
-  // of noise always has a peak to seed from, and a faint disc at the border would "explain" it.
-  const double untouched_sq = dV.squaredNorm();
-  if (untouched_sq <= options_.noise_chi2_per_measurement * noise_V_ * noise_V_ * measurements_.size()) {
-    result_.rms_misfit_V = std::sqrt(untouched_sq / measurements_.size());
+  // No contact at all already explains the frame (the rule every further contact answers to):
+  // the linear image of noise always has a peak to seed from, and a faint disc at the border
+  // would "explain" it.
+  if (explained(dV.squaredNorm(), dV)) {
+    result_.rms_misfit_V = std::sqrt(dV.squaredNorm() / static_cast<double>(measurements_.size()));
     return result_;
   }
   if (seeds.empty()) return result_;
