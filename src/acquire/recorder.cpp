@@ -7,6 +7,7 @@
 
 #include "emit/acquire/recording.hpp"
 #include "emit/errors.hpp"
+#include "emit/twin/adc.hpp"
 
 namespace emit {
 namespace fw = emit::firmware;
@@ -15,16 +16,15 @@ Recorder::Recorder(std::string path, const Sensor& sensor)
     : path_(std::move(path)),
       partial_path_(path_ + ".partial"),
       electrode_count_(sensor.electrode_count()),
-      adc_bits_(sensor.adc.bits),
-      vref_V_(sensor.adc.vref_V),
+      adc_(sensor.adc),
       counts_(static_cast<std::size_t>(electrode_count_ * electrode_count_)),
       packet_(fw::packet_size(electrode_count_)) {
   stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw IoError(partial_path_ + ": cannot create the recording");
   RecordingHeader header;
   header.electrode_count = electrode_count_;
-  header.adc_bits = adc_bits_;
-  header.vref_V = vref_V_;
+  header.adc_bits = adc_.bits;
+  header.vref_V = adc_.vref_V;
   header.start_unix_us = static_cast<std::uint64_t>(
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
   std::array<std::uint8_t, recording_header_size> bytes{};
@@ -45,14 +45,10 @@ void Recorder::record(const SourceFrame& frame) {
   if (frame.volts.rows() != n || frame.volts.cols() != n)
     throw InvalidInput(path_ + ": cannot record a " + std::to_string(frame.volts.rows()) + "x" +
                        std::to_string(frame.volts.cols()) + " frame; the sensor has " + std::to_string(n) + " electrodes");
-  const double full_scale = std::ldexp(1.0, adc_bits_) - 1;
-  for (Index k = 0; k < n * n; ++k) {
-    const double counts = std::round(frame.volts.data()[k] / vref_V_ * full_scale);
-    counts_[static_cast<std::size_t>(k)] = static_cast<std::uint16_t>(std::clamp(counts, 0.0, full_scale));
-  }
+  for (Index k = 0; k < n * n; ++k) counts_[static_cast<std::size_t>(k)] = adc_code(adc_, frame.volts.data()[k]);
   fw::PacketHeader header;
   header.electrode_count = static_cast<std::uint8_t>(n);
-  header.adc_bits = static_cast<std::uint8_t>(adc_bits_);
+  header.adc_bits = static_cast<std::uint8_t>(adc_.bits);
   header.oversampling = 1;
   header.sequence = static_cast<std::uint32_t>(frame.sequence);
   header.timestamp_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));

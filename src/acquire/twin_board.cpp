@@ -9,6 +9,7 @@
 #include <string>
 
 #include "emit/errors.hpp"
+#include "emit/twin/adc.hpp"
 
 namespace emit {
 
@@ -44,10 +45,7 @@ std::uint16_t TwinBoard::read_adc() {
   const int g = electrode_of_channel_[ground_.address % firmware::mux_channel_count];
   const int s = electrode_of_channel_[sense_.address % firmware::mux_channel_count];
   if (g < 0 || s < 0 || g >= frame_.rows() || s >= frame_.cols()) return 0;
-  const AdcSpec& adc = twin_.sensor().adc;
-  const double full_scale = std::ldexp(1.0, adc.bits) - 1;
-  const double counts = std::round(frame_(g, s) / adc.vref_V * full_scale);
-  return static_cast<std::uint16_t>(std::clamp(counts, 0.0, full_scale));
+  return adc_code(twin_.sensor().adc, frame_(g, s));
 }
 
 std::uint32_t TwinBoard::micros() {

@@ -54,8 +54,7 @@ class Recorder {
   std::string path_, partial_path_;
   std::ofstream stream_;
   int electrode_count_;
-  int adc_bits_;
-  double vref_V_;
+  AdcSpec adc_;
   std::vector<std::uint16_t> counts_;
   std::vector<std::uint8_t> packet_;
   std::uint64_t frames_ = 0;
