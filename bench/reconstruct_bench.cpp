@@ -5,14 +5,15 @@
 // in the same run.
 #include <benchmark/benchmark.h>
 
+#include "emit/model/method.hpp"
 #include "emit/fem/forward_model.hpp"
-#include "emit/fit/fit_model.hpp"
-#include "emit/fit/frame_predictor.hpp"
-#include "emit/reconstruct/jacobian.hpp"
-#include "emit/reconstruct/reconstruction_model.hpp"
-#include "emit/reconstruct/reconstructor.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/frame/frame_predictor.hpp"
+#include "emit/model/jacobian.hpp"
+#include "emit/model/reconstruction_model.hpp"
+#include "emit/frame/reconstructor.hpp"
 #include "emit/sensor/sensor_json.hpp"
-#include "emit/threads.hpp"
+#include "emit/core/threads.hpp"
 #include "emit/twin/press_contact.hpp"
 #include "emit/twin/twin.hpp"
 
@@ -22,7 +23,7 @@ using namespace emit;
 
 struct Bench {
   Sensor sensor = default_sensor();
-  ReconstructionModel model = build_reconstruction_model(sensor, method_options("paper"), "");
+  ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
   FitModel fit_model = build_fit_model(sensor);
   Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 3; return o; }()};
   Frame reference = twin.frame({});
@@ -43,7 +44,7 @@ Bench& bench() {
 
 void BM_PaperFrame(benchmark::State& state) {
   Bench& b = bench();
-  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor));
+  Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
@@ -87,8 +88,7 @@ void fit_frames(benchmark::State& state, const std::vector<Frame>& frames, bool 
   ContactFitter fitter(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
   FrameOptions options;
   options.track_contacts = track;
-  Reconstructor reconstructor(b.model, PressureCalibration::uncalibrated(b.sensor), options);
-  reconstructor.use_fitter(&fitter);
+  Reconstructor reconstructor(b.model, fitter, FitCalibration::uncalibrated(b.sensor), options);
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   double evaluations = 0, contacts = 0;

@@ -1,15 +1,16 @@
 #pragma once
-// The emit command-line tool: one file per subcommand. The CLI parses, prints and calls the
-// library; it holds no maths.
-#include <cstdint>
+// The emit command-line tool: one file per subcommand. A command parses its options into the
+// library's job, calls it, and prints what it returns; it holds no maths and no pipeline.
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "emit/fem/forward_model.hpp"
-#include "emit/sensor/sensor.hpp"
-#include "emit/twin/press.hpp"
+#include "emit/core/progress.hpp"
+#include "emit/core/types.hpp"
+#include "emit/jobs/live_session.hpp"
+#include "emit/model/method.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit::cli {
 
@@ -22,33 +23,18 @@ void add_calibrate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_live_command(CLI::App& app);
 
-/// What `emit live` is asked to do (command_live.cpp); `emit demo` runs it too.
-struct LiveArgs {
-  std::string source = "sim", serve, contacts_path, record_path, method = "fit", sensor_path, calibration_path, cache_dir;
-  std::uint64_t frames = 0;
-  double seconds = 0;  ///< stop after this long (0: no limit)
-  double frames_per_s = 50;
-  bool no_cache = false;
-};
-/// Reconstructs frames from args.source until Ctrl-C, args.frames or args.seconds; prints the
-/// viewer's address, and frames/s and latency at the end.
-void run_live(const LiveArgs& args);
+/// Runs `emit live` (command_live.cpp): until Ctrl-C or the job's limits; prints the source, the
+/// viewer's address, and frames/s and latency at the end. `emit demo` runs it too.
+void run_live(const LiveJob& job);
 
-/// The sensor file given with --sensor, or the built-in default sensor when empty.
-Sensor sensor_from_option(const std::string& path);
+/// Progress on stderr: stages as "<stage> ...", counts rewritten in place on a terminal (a line
+/// every ~10 % otherwise; none for fewer than `min_count` items), warnings as "emit: warning: …".
+Progress stderr_progress(long min_count = 0);
 
-/// Progress on stderr: rewritten in place on a terminal, a line every ~10 % otherwise.
-class Progress {
- public:
-  Progress(std::string what, int total);
-  void step(int done);
-  void finish();
-
- private:
-  std::string what_;
-  int total_, last_percent_ = -1;
-  bool tty_;
-};
+/// --method's choices: every method's name (model/method.hpp).
+std::vector<std::string> method_names();
+/// The operator cache: none with --no-cache, else --cache or the default folder.
+std::string cache_dir_option(const std::string& cache_dir, bool no_cache);
 
 /// A short table of frames: presses and the largest readings.
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses);

@@ -1,29 +1,41 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <unistd.h>
 
 #include "commands.hpp"
-#include "emit/sensor/sensor_json.hpp"
+#include "emit/model/operator_cache.hpp"
 
 namespace emit::cli {
 
-Sensor sensor_from_option(const std::string& path) { return path.empty() ? default_sensor() : load_sensor(path); }
-
-Progress::Progress(std::string what, int total) : what_(std::move(what)), total_(std::max(total, 1)), tty_(::isatty(2)) {}
-
-void Progress::step(int done) {
-  const int percent = 100 * done / total_;
-  if (tty_) {
-    std::fprintf(stderr, "\r%s %d/%d (%d%%)", what_.c_str(), done, total_, percent);
-  } else if (percent / 10 != last_percent_ / 10) {
-    std::fprintf(stderr, "%s %d/%d (%d%%)\n", what_.c_str(), done, total_, percent);
-  }
-  last_percent_ = percent;
+Progress stderr_progress(long min_count) {
+  struct State {
+    bool tty = ::isatty(2) != 0;
+    long last_percent = -1;
+  };
+  auto state = std::make_shared<State>();
+  Progress progress;
+  progress.stage = [](const std::string& stage) { std::fprintf(stderr, "%s ...\n", stage.c_str()); };
+  progress.warning = [](const std::string& message) { std::fprintf(stderr, "emit: warning: %s\n", message.c_str()); };
+  progress.count = [state, min_count](const std::string& what, long done, long total) {
+    if (total < std::max(min_count, 1L)) return;
+    const long percent = 100 * done / total;
+    if (state->tty)
+      std::fprintf(stderr, "\r%s %ld/%ld (%ld%%)%s", what.c_str(), done, total, percent, done == total ? "\n" : "");
+    else if (percent / 10 != state->last_percent / 10)
+      std::fprintf(stderr, "%s %ld/%ld (%ld%%)\n", what.c_str(), done, total, percent);
+    state->last_percent = done == total ? -1 : percent;
+  };
+  return progress;
 }
 
-void Progress::finish() {
-  if (tty_) std::fprintf(stderr, "\r%s %d/%d (100%%)\n", what_.c_str(), total_, total_);
+std::vector<std::string> method_names() {
+  return {method_name(Method::fit), method_name(Method::paper), method_name(Method::noser), method_name(Method::laplacian)};
+}
+
+std::string cache_dir_option(const std::string& cache_dir, bool no_cache) {
+  return no_cache ? "" : (cache_dir.empty() ? default_cache_dir() : cache_dir);
 }
 
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses) {

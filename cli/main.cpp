@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
-#include "emit/errors.hpp"
-#include "emit/threads.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/threads.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"

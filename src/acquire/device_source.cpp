@@ -2,7 +2,7 @@
 
 #include "emit/acquire/file_source.hpp"
 #include "emit/acquire/serial_source.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace {

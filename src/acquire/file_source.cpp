@@ -5,7 +5,7 @@
 #include <thread>
 
 #include "core/frame_packet.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace fw = emit::firmware;
@@ -51,6 +51,7 @@ bool FileSource::read_pending() {
   bool decoded = false;
   decoder_.feed(packet_, [&](const RawFrame& raw) {
     to_volts(raw, header_.vref_V, pending_.volts);
+    pending_.raw = raw;
     pending_.sequence = raw.sequence;
     pending_.board_time_s = clock_.seconds(raw.timestamp_us);
     decoded = raw.electrode_count == header_.electrode_count;
@@ -85,7 +86,9 @@ bool FileSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
     start_ = Clock::now();
     t0_s_ = pending_.board_time_s;
   }
+  frame.raw.counts.resize(pending_.raw.counts.size());  // so the buffer pending_ gets back holds a frame
   frame.volts.swap(pending_.volts);
+  std::swap(frame.raw, pending_.raw);
   if (pending_.volts.rows() != header_.electrode_count)  // the caller's frame was empty
     pending_.volts.resize(header_.electrode_count, header_.electrode_count);
   frame.sequence = pending_.sequence;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/frame_packet.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace fw = emit::firmware;

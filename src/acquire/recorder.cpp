@@ -6,8 +6,7 @@
 #include <filesystem>
 
 #include "emit/acquire/recording.hpp"
-#include "emit/errors.hpp"
-#include "emit/twin/adc.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace fw = emit::firmware;
@@ -16,15 +15,13 @@ Recorder::Recorder(std::string path, const Sensor& sensor)
     : path_(std::move(path)),
       partial_path_(path_ + ".partial"),
       electrode_count_(sensor.electrode_count()),
-      adc_(sensor.adc),
-      counts_(static_cast<std::size_t>(electrode_count_ * electrode_count_)),
       packet_(fw::packet_size(electrode_count_)) {
   stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw IoError(partial_path_ + ": cannot create the recording");
   RecordingHeader header;
   header.electrode_count = electrode_count_;
-  header.adc_bits = adc_.bits;
-  header.vref_V = adc_.vref_V;
+  header.adc_bits = sensor.adc.bits;
+  header.vref_V = sensor.adc.vref_V;
   header.start_unix_us = static_cast<std::uint64_t>(
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
   std::array<std::uint8_t, recording_header_size> bytes{};
@@ -38,21 +35,6 @@ Recorder::~Recorder() {
     close();
   } catch (const std::exception&) {  // PATH.partial stays for the user to look at
   }
-}
-
-void Recorder::record(const SourceFrame& frame) {
-  const Index n = electrode_count_;
-  if (frame.volts.rows() != n || frame.volts.cols() != n)
-    throw InvalidInput(path_ + ": cannot record a " + std::to_string(frame.volts.rows()) + "x" +
-                       std::to_string(frame.volts.cols()) + " frame; the sensor has " + std::to_string(n) + " electrodes");
-  for (Index k = 0; k < n * n; ++k) counts_[static_cast<std::size_t>(k)] = adc_code(adc_, frame.volts.data()[k]);
-  fw::PacketHeader header;
-  header.electrode_count = static_cast<std::uint8_t>(n);
-  header.adc_bits = static_cast<std::uint8_t>(adc_.bits);
-  header.oversampling = 1;
-  header.sequence = static_cast<std::uint32_t>(frame.sequence);
-  header.timestamp_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));
-  write_packet(header, counts_.data());
 }
 
 void Recorder::record(const RawFrame& frame) {

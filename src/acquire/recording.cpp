@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "core/frame_packet.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace fw = emit::firmware;

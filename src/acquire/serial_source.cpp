@@ -5,7 +5,7 @@
 #include <thread>
 #include <utility>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace {
@@ -31,7 +31,10 @@ SerialSource::SerialSource(std::string path, unsigned baud, const Sensor& sensor
       vref_V_(sensor.adc.vref_V),
       retry_interval_(retry_interval),
       queue_(queue_capacity) {
-  for (SourceFrame& slot : queue_) slot.volts.resize(electrode_count_, electrode_count_);
+  for (SourceFrame& slot : queue_) {
+    slot.volts.resize(electrode_count_, electrode_count_);
+    slot.raw.counts.resize(static_cast<std::size_t>(electrode_count_ * electrode_count_));
+  }
   port_.open(path_, baud_);
 }
 
@@ -110,6 +113,7 @@ void SerialSource::push(const RawFrame& raw, Clock::time_point received) {
   SourceFrame& slot = queue_[(queue_head_ + queue_size_) % queue_.size()];
   ++queue_size_;
   to_volts(raw, vref_V_, slot.volts);
+  slot.raw = raw;  // N·N counts into a slot sized for them: no allocation
   slot.sequence = raw.sequence;
   slot.board_time_s = clock_.seconds(raw.timestamp_us);
   slot.received = received;
@@ -122,7 +126,9 @@ bool SerialSource::pop(SourceFrame& frame) {
   // frame), so every slot stays N×N and to_volts never reallocates.
   if (frame.volts.rows() != electrode_count_ || frame.volts.cols() != electrode_count_)
     frame.volts.resize(electrode_count_, electrode_count_);
+  frame.raw.counts.resize(slot.raw.counts.size());
   frame.volts.swap(slot.volts);
+  std::swap(frame.raw, slot.raw);
   frame.sequence = slot.sequence;
   frame.board_time_s = slot.board_time_s;
   frame.received = slot.received;

@@ -1,3 +1,4 @@
+#include "emit/model/method.hpp"
 #include "emit/eval/pipeline_timing.hpp"
 
 #include <algorithm>
@@ -8,14 +9,14 @@
 #include <Eigen/Cholesky>
 #include <cblas.h>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/supernodal_cholesky.hpp"
 #include "emit/fem/stiffness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
-#include "emit/reconstruct/jacobian.hpp"
-#include "emit/reconstruct/operator_cache.hpp"
-#include "emit/reconstruct/reconstructor.hpp"
+#include "emit/model/jacobian.hpp"
+#include "emit/model/operator_cache.hpp"
+#include "emit/frame/reconstructor.hpp"
 
 namespace emit {
 
@@ -91,7 +92,7 @@ Frame as_frame(const MeasurementSet& measurements, const Vector& dV) {
 
 void time_per_frame(const ReconstructionModel& model, const Sensor& sensor, const std::vector<Vector>& frames,
                     double batch_s, PipelineTiming& timing) {
-  const PressureCalibration calibration = PressureCalibration::uncalibrated(sensor);
+  const LinearCalibration calibration = LinearCalibration::uncalibrated(sensor);
   Reconstructor reconstructor(model, calibration);
   const int N = model.measurements.electrode_count;
   reconstructor.set_reference(Frame::Zero(N, N));
@@ -161,7 +162,7 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
 
   Matrix J;
   timing.jacobian_s = seconds([&] { J = compute_jacobian(mesh, measurements); });
-  const OperatorOptions operator_options = method_options("paper");
+  const OperatorOptions paper = operator_options(Method::paper);
 
   std::vector<Vector> frames;
   const Vector2 low = mesh.nodes_mm.colwise().minCoeff().head<2>().transpose();
@@ -172,8 +173,8 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
   ReconstructionModel model;
   model.mesh = mesh;
   model.measurements = measurements;
-  model.options = operator_options;
-  timing.operator_s = seconds([&] { model.op = build_compact_operator(std::move(J), mesh, operator_options); });
+  model.options = paper;
+  timing.operator_s = seconds([&] { model.op = build_compact_operator(std::move(J), mesh, paper); });
   timing.rank = static_cast<int>(model.op.rank());
   if (!options.cache_dir.empty()) {
     timing.store_s = seconds([&] { store_cached_operator(options.cache_dir, "bench", model.op); });
@@ -193,7 +194,7 @@ BaselineTiming time_baselines(const Sensor& sensor_in, const PipelineTimingOptio
   const MeasurementSet measurements = make_measurement_set(mesh.electrode_count());
   BaselineTiming timing;
   if (normal_equations)
-    timing.normal_equations_s = normal_equations_seconds(compute_jacobian(mesh, measurements), method_options("paper").lambda2);
+    timing.normal_equations_s = normal_equations_seconds(compute_jacobian(mesh, measurements), operator_options(Method::paper).lambda2);
   if (brute_force_jacobian)
     timing.brute_force_jacobian_s = seconds([&] { compute_jacobian_brute_force(mesh, measurements); });
   return timing;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/fem/stiffness.hpp"
 
 namespace emit {

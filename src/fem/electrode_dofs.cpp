@@ -1,6 +1,6 @@
 #include "emit/fem/electrode_dofs.hpp"
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

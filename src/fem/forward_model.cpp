@@ -4,7 +4,7 @@
 
 #include <Eigen/Dense>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/fem/driving_layer.hpp"
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/sparse_cholesky.hpp"

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

@@ -7,8 +7,8 @@
 #include <cblas.h>
 #include <suitesparse/cholmod.h>
 
-#include "emit/errors.hpp"
-#include "emit/large_matrix.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/large_matrix.hpp"
 
 extern "C" void dpotri_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 

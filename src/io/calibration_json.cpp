@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/errors.hpp"
-#include "emit/io/atomic_file.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/atomic_file.hpp"
 
 namespace emit {
 
@@ -49,7 +49,7 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
 
 }  // namespace
 
-PressureCalibration load_calibration(const std::string& path) {
+Calibration load_calibration(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw IoError(path + ": cannot open calibration file (" + std::strerror(errno) + ")");
   nlohmann::json j;
@@ -59,46 +59,54 @@ PressureCalibration load_calibration(const std::string& path) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object()) throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"} or {\"alpha_ohm_mm2\", \"gamma\"}");
-  PressureCalibration c;
-  c.calibrated = true;
+  LinearCalibration linear;
+  FitCalibration fit;
   const bool law = j.contains("alpha_ohm_mm2") || j.contains("gamma");
-  if (law) c.fitted_contact_law = ContactLaw{};
   for (const auto& item : j.items()) {
     if (law && item.key() == "sheet_correction") {
-      c.sheet_correction = sheet_correction_from_json(path, item.value());
+      fit.sheet_correction = sheet_correction_from_json(path, item.value());
       continue;
     }
     if (!item.value().is_number() || !std::isfinite(item.value().get<double>()))
       throw InvalidInput(path + ": " + item.key() + ": must be a finite number");
     const double v = item.value().get<double>();
-    if (!law && item.key() == "a1") c.a1 = v;
-    else if (!law && item.key() == "a2") c.a2 = v;
-    else if (!law && item.key() == "a3") c.a3 = v;
-    else if (law && item.key() == "alpha_ohm_mm2") c.fitted_contact_law->alpha_ohm_mm2 = v;
-    else if (law && item.key() == "gamma") c.fitted_contact_law->gamma = v;
-    else if (law && item.key() == "indenter_radius_mm" && v > 0) c.indenter_radius_mm = v;
+    if (!law && item.key() == "a1") linear.a1 = v;
+    else if (!law && item.key() == "a2") linear.a2 = v;
+    else if (!law && item.key() == "a3") linear.a3 = v;
+    else if (law && item.key() == "alpha_ohm_mm2") fit.contact_law.alpha_ohm_mm2 = v;
+    else if (law && item.key() == "gamma") fit.contact_law.gamma = v;
+    else if (law && item.key() == "indenter_radius_mm" && v > 0) fit.indenter_radius_mm = v;
     else if (law && item.key() == "indenter_radius_mm") throw InvalidInput(path + ": indenter_radius_mm must be positive");
     else throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
   }
   for (const char* key : law ? std::vector<const char*>{"alpha_ohm_mm2", "gamma"} : std::vector<const char*>{"a1", "a2", "a3"})
     if (!j.contains(key)) throw InvalidInput(path + ": " + key + ": missing");
-  if (law && !(c.fitted_contact_law->alpha_ohm_mm2 > 0 && c.fitted_contact_law->gamma < 0))
+  if (!law) return linear;
+  if (!(fit.contact_law.alpha_ohm_mm2 > 0 && fit.contact_law.gamma < 0))
     throw InvalidInput(path + ": alpha_ohm_mm2 must be positive and gamma negative");
-  return c;
+  return fit;
 }
 
-void write_calibration(const std::string& path, const PressureCalibration& c) {
-  AtomicFile file(path);
-  nlohmann::json j = c.fitted_contact_law ? nlohmann::json{{"alpha_ohm_mm2", c.fitted_contact_law->alpha_ohm_mm2},
-                                                           {"gamma", c.fitted_contact_law->gamma}}
-                                          : nlohmann::json{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
-  if (c.fitted_contact_law && c.indenter_radius_mm > 0) j["indenter_radius_mm"] = c.indenter_radius_mm;
-  if (c.fitted_contact_law && c.sheet_correction) {
+namespace {
+
+nlohmann::json to_json(const LinearCalibration& c) { return {{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}}; }
+
+nlohmann::json to_json(const FitCalibration& c) {
+  nlohmann::json j{{"alpha_ohm_mm2", c.contact_law.alpha_ohm_mm2}, {"gamma", c.contact_law.gamma}};
+  if (c.indenter_radius_mm > 0) j["indenter_radius_mm"] = c.indenter_radius_mm;
+  if (c.sheet_correction) {
     const SheetCorrection& s = *c.sheet_correction;
     j["sheet_correction"] = {{"box_mm", {s.lower_mm.x(), s.lower_mm.y(), s.upper_mm.x(), s.upper_mm.y()}},
                              {"log_conductance", s.log_conductance}};
   }
-  file.stream() << j.dump(2) << '\n';
+  return j;
+}
+
+}  // namespace
+
+void write_calibration(const std::string& path, const Calibration& calibration) {
+  AtomicFile file(path);
+  file.stream() << std::visit([](const auto& c) { return to_json(c); }, calibration).dump(2) << '\n';
   file.commit();
 }
 

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

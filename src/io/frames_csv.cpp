@@ -7,8 +7,8 @@
 #include <cstring>
 #include <fstream>
 
-#include "emit/errors.hpp"
-#include "emit/io/atomic_file.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/atomic_file.hpp"
 
 namespace emit {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "emit/errors.hpp"
-#include "emit/io/atomic_file.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/atomic_file.hpp"
 
 namespace emit {
 

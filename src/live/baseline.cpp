@@ -1,6 +1,6 @@
 #include "emit/live/baseline.hpp"
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

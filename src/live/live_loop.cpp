@@ -1,6 +1,6 @@
 #include "emit/live/live_loop.hpp"
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 
 namespace emit {
@@ -15,13 +15,12 @@ constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in th
 
 }  // namespace
 
-LiveLoop::LiveLoop(FrameSource& source, ReconstructionSetup& setup, const LiveOptions& options)
+LiveLoop::LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& options)
     : source_(source),
-      setup_(setup),
       options_(options),
-      reconstructor_(setup.reconstructor(options.frame)),
+      reconstructor_(pipeline.reconstructor(options.frame)),
       baseline_(options.baseline),
-      no_pressure_(Vector::Zero(setup.model().mesh.triangle_count())) {
+      no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {
   if (options.poll.count() <= 0) throw InvalidInput("live: the poll interval must be positive");
   if (!(options.max_seconds >= 0)) throw InvalidInput("live: the time limit must be 0 (none) or positive");
 }
@@ -51,7 +50,7 @@ void LiveLoop::handle(const SourceFrame& frame) {
   LiveFrame out;
   out.index = handled_++;
   out.sequence = frame.sequence;
-  if (recorder_) recorder_->record(frame);
+  if (recorder_) recorder_->record(frame.raw);
   if (baseline_.capturing()) {
     if (baseline_.capture(frame.volts)) reconstructor_.set_reference(baseline_.reference());
     ++stats_.capture_frames;

@@ -9,7 +9,7 @@
 #include <boost/asio.hpp>
 #include <boost/beast.hpp>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/live/viewer_messages.hpp"
 #include "emit/live/viewer_page.hpp"
 

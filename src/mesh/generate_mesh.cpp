@@ -5,7 +5,7 @@
 
 #include <gmsh.h>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "gmsh_session.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <gmsh.h>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/mesh/sort_for_locality.hpp"
 
 namespace emit::detail {

@@ -5,8 +5,8 @@
 
 #include <gmsh.h>
 
-#include "emit/errors.hpp"
-#include "emit/io/atomic_file.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/atomic_file.hpp"
 #include "gmsh_session.hpp"
 
 namespace emit {

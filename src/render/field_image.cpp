@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "bitmap_font.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "bitmap_font.hpp"
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

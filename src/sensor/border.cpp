@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 
@@ -120,13 +120,6 @@ void Border::finish() {
   }
   length_mm_ = s;
   size_mm_ = box.diagonal().norm();
-}
-
-std::vector<double> Border::corner_arclengths_mm() const {
-  std::vector<double> corners;
-  for (const auto& piece : pieces_)
-    if (piece.kind == BorderPiece::Kind::line) corners.push_back(piece.start_s_mm);
-  return corners;
 }
 
 Vector2 Border::point_at(double s_mm) const {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/sensor/electrode_layout.hpp"
 
 namespace emit {

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <random>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 
@@ -121,6 +121,27 @@ PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& fro
     sequence.push_back({sampler.press_at(p)});
   }
   return sequence;
+}
+
+PressScript::Kind parse_script_kind(const std::string& name) {
+  if (name == "none") return PressScript::Kind::none;
+  if (name == "grid") return PressScript::Kind::grid;
+  if (name == "random") return PressScript::Kind::random;
+  if (name == "two-finger") return PressScript::Kind::two_finger;
+  if (name == "moving") return PressScript::Kind::moving;
+  throw InvalidInput("--script: unknown script \"" + name + "\" (none, grid, random, two-finger, moving)");
+}
+
+PressSequence run_script(const Sensor& sensor, const PressScript& script) {
+  switch (script.kind) {
+    case PressScript::Kind::none: return PressSequence(static_cast<std::size_t>(script.frames));
+    case PressScript::Kind::grid: return grid_script(sensor, script.spacing_mm, script.jitter_mm, script.style);
+    case PressScript::Kind::random: return random_script(sensor, script.frames, script.style);
+    case PressScript::Kind::two_finger:
+      return two_finger_script(sensor, script.frames, script.min_separation_mm, script.max_separation_mm, script.style);
+    case PressScript::Kind::moving: return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
+  }
+  return {};
 }
 
 }  // namespace emit

@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "emit/errors.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

@@ -2,8 +2,9 @@
 
 #include <cmath>
 
-#include "emit/errors.hpp"
-#include "emit/twin/adc.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/sensor/adc.hpp"
+#include "emit/twin/adc_noise.hpp"
 #include "emit/twin/press_contact.hpp"
 
 namespace emit {
@@ -54,7 +55,7 @@ Frame Twin::exact_frame(const std::vector<Press>& presses) const {
   return model_.solve_frame(contact_of(presses), sensor_.drive_voltage_V);
 }
 
-Frame Twin::frame(const std::vector<Press>& presses) {
+Frame Twin::frame(const std::vector<Press>& presses, std::vector<std::uint16_t>* codes) {
   Frame f = exact_frame(presses);
   if (const int e = options_.dead_electrode; e >= 0 && e < f.rows()) {
     // Disconnected: as the sensed electrode its input is pulled to 0 V; as the ground it grounds
@@ -63,7 +64,10 @@ Frame Twin::frame(const std::vector<Press>& presses) {
     f.col(e).setZero();
     f.row(e).setConstant(pressed ? sensor_.drive_voltage_V : 0.0);
   }
-  if (options_.adc) apply_adc(sensor_.adc, f, rng_);
+  if (codes) codes->resize(static_cast<std::size_t>(f.size()));
+  if (options_.adc) apply_adc(sensor_.adc, f, rng_, codes ? codes->data() : nullptr);
+  else if (codes)
+    for (Index i = 0; i < f.size(); ++i) (*codes)[static_cast<std::size_t>(i)] = adc_code(sensor_.adc, f.data()[i]);
   return f;
 }
 

@@ -43,7 +43,6 @@ class FileSource : public FrameSource {
   std::string description() const override;
 
   const RecordingHeader& header() const { return header_; }
-  std::uint64_t frame_count() const { return frame_count_; }  ///< frames in the file
 
  private:
   /// Read and decode the next packet into pending_. \return false at the end of the file.

@@ -5,11 +5,11 @@
 /// live loop (live/live_loop.hpp) does not care which one it reads.
 #include <chrono>
 #include <cstdint>
-#include <memory>
 #include <string>
 
+#include "emit/acquire/raw_frame.hpp"
 #include "emit/sensor/sensor.hpp"
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 
@@ -20,13 +20,13 @@ struct SourceFrame {
   double board_time_s = 0;        ///< when the board (or simulator) took it, on the board's clock
   /// When it reached the host: end-to-end latency is measured from here.
   std::chrono::steady_clock::time_point received;
+  /// What the board sent (the twin: what its ADC read), as a recording keeps it (recorder.hpp).
+  RawFrame raw;
 };
 
 struct SourceOptions {
   /// Pace of the simulator (and of a file replayed at its own pace) [frames/s]; 0: as fast as possible.
   double frames_per_s = 50;
-  /// The simulator's ADC (quantisation and noise, as the sensor's ADC spec says); off: exact frames.
-  bool adc_noise = true;
   std::uint64_t seed = 1;  ///< the simulator's noise and random presses
   /// The simulator's first frames have no press, so the baseline (live/baseline.hpp) captures an
   /// untouched sheet; the scripts start after them.
@@ -44,12 +44,5 @@ class FrameSource {
   /// One line for people, e.g. "sim: scripted finger on default 60 mm", "serial:/dev/ttyUSB0 at 921600".
   virtual std::string description() const = 0;
 };
-
-/// A source from its spec: "sim" (a finger moving over the sheet in a figure-eight, lifted now and
-/// then), "sim:random" (presses at random places), "sim:fixed:X,Y[,F]" (one press held at X, Y mm
-/// with F N, default 10); "file:PATH" (a recording, recording.hpp) and "serial:PATH[@BAUD]" (the
-/// board, device_source.hpp).
-/// \throw InvalidInput naming the spec.
-std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options);
 
 }  // namespace emit

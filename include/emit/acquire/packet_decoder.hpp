@@ -21,19 +21,10 @@
 #include <span>
 #include <vector>
 
-#include "emit/types.hpp"
+#include "emit/acquire/raw_frame.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
-
-/// One decoded packet.
-struct RawFrame {
-  std::uint32_t sequence = 0;      ///< the board's frame counter (+1 per frame, wraps)
-  std::uint32_t timestamp_us = 0;  ///< board clock when the frame's scan started, µs (wraps)
-  int electrode_count = 0;         ///< N
-  int adc_bits = 0;                ///< ADC resolution: counts are in 0..2^bits − 1
-  int oversampling = 0;            ///< readings the board averaged into each count
-  std::vector<std::uint16_t> counts;  ///< N·N ADC counts, ground-major: [g·N + s]
-};
 
 /// What the decoder has seen since construction.
 struct DecoderStats {

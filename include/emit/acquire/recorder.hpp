@@ -9,7 +9,7 @@
 /// Example:
 ///
 ///     emit::Recorder recorder("rec.bin", sensor);
-///     while (source.next(frame, timeout)) recorder.record(frame);
+///     while (source.next(frame, timeout)) recorder.record(frame.raw);
 ///     recorder.close();   // rec.bin.partial → rec.bin
 #include <array>
 #include <cstdint>
@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "core/frame_packet.hpp"
-#include "emit/acquire/frame_source.hpp"
-#include "emit/acquire/packet_decoder.hpp"
+#include "emit/acquire/raw_frame.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -33,11 +33,6 @@ class Recorder {
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
-  /// A frame in volts: counts = round(v / vref · (2^bits − 1)) clipped to the ADC's range (exact
-  /// for a frame that came from counts with the same ADC), sequence modulo 2^32, timestamp
-  /// round(board_time_s · 10⁶) modulo 2^32 µs, oversampling 1. Allocates nothing.
-  /// \throw InvalidInput if the frame is not N×N; IoError if the write fails.
-  void record(const SourceFrame& frame);
   /// A decoded packet, re-encoded byte for byte as the board sent it.
   /// \throw InvalidInput if its N is not the recording's; IoError if the write fails.
   void record(const RawFrame& frame);
@@ -54,8 +49,6 @@ class Recorder {
   std::string path_, partial_path_;
   std::ofstream stream_;
   int electrode_count_;
-  AdcSpec adc_;
-  std::vector<std::uint16_t> counts_;
   std::vector<std::uint8_t> packet_;
   std::uint64_t frames_ = 0;
   bool closed_ = false;

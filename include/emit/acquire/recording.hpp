@@ -1,6 +1,6 @@
 #pragma once
 /// \file recording.hpp
-/// The recording format (DESIGN §5: a compact binary recording with timestamps): a 32-byte file
+/// The recording format (docs/recording.md: a compact binary recording with timestamps): a 32-byte file
 /// header, then the board's packets v1 (firmware/core/frame_packet.hpp) back to back, verbatim, so
 /// each frame keeps its sequence number, board timestamp and CRC. All integers little-endian.
 ///

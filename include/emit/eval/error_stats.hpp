@@ -4,8 +4,8 @@
 /// and 95th percentile, and how many presses were not found at all.
 #include <vector>
 
-#include "emit/reconstruct/contacts.hpp"
-#include "emit/twin/press.hpp"
+#include "emit/frame/contacts.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit {
 

@@ -1,13 +1,13 @@
 #pragma once
 /// \file evaluation.hpp
-/// The yardstick (paper §3.2, DESIGN §4): frames from the twin on a finer, different mesh with the
+/// The yardstick (paper §3.2; docs/physics.md, "How it is checked"): frames from the twin on a finer, different mesh with the
 /// ADC on, reconstructed, and compared with the presses that made them.
 #include <cstdint>
 #include <vector>
 
 #include "emit/eval/error_stats.hpp"
-#include "emit/reconstruct/calibration.hpp"
-#include "emit/reconstruct/reconstructor.hpp"
+#include "emit/calibrate/pressure_calibration.hpp"
+#include "emit/frame/reconstructor.hpp"
 #include "emit/twin/twin.hpp"
 
 namespace emit {

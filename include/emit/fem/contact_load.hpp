@@ -1,6 +1,6 @@
 #pragma once
 /// \file contact_load.hpp
-/// The contact term of the forward model (DESIGN §2): C_ij = ∫ g φ_i φ_j dA, g the contact
+/// The contact term of the forward model (docs/physics.md, "Forward model"): C_ij = ∫ g φ_i φ_j dA, g the contact
 /// conductance per area [S/mm²] coupling the probing sheet to the driving layer. Stored per
 /// touched element, so a press touching a few hundred triangles costs that, not the mesh.
 #include <vector>

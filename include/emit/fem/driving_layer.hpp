@@ -1,6 +1,6 @@
 #pragma once
 /// \file driving_layer.hpp
-/// A driving layer with a resistance of its own. DESIGN §1 (and the paper, and the reconstruction)
+/// A driving layer with a resistance of its own. docs/physics.md (and the paper, and the reconstruction)
 /// take the driving layer as an equipotential at E. A real one (conductive fabric) is a sheet with
 /// its own small sheet resistance, held at E only where it is fed (a bus bar), so a contact far
 /// from the feed draws its current through it and sees less than E:

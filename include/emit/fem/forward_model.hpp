@@ -1,6 +1,6 @@
 #pragma once
 /// \file forward_model.hpp
-/// The forward model (DESIGN §2): -div(σ ∇u) + g u = g E on the sheet, one electrode grounded,
+/// The forward model (docs/physics.md, "Forward model"; paper eqs. 1–2): -div(σ ∇u) + g u = g E on the sheet, one electrode grounded,
 /// every other electrode one floating unknown with zero net current, insulating elsewhere.
 ///
 /// Per contact it factorises once (electrode 0 grounded) and gets all N groundings from N solves:
@@ -14,7 +14,7 @@
 #include "emit/fem/contact_load.hpp"
 #include "emit/fem/driving_layer.hpp"
 #include "emit/mesh/mesh.hpp"
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

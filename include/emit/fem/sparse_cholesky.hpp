@@ -10,7 +10,7 @@
 /// objects, which selected inversion needs.
 #include <memory>
 
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -2,7 +2,7 @@
 /// \file stiffness.hpp
 /// P1 stiffness of the probing sheet: K_ij = ∫ σ ∇φ_i·∇φ_j dA.
 #include "emit/mesh/mesh.hpp"
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -2,7 +2,7 @@
 /// \file supernodal_cholesky.hpp
 /// CHOLMOD's supernodal Cholesky (P A Pᵀ = L Lᵀ, L stored as dense column blocks) and selected
 /// inversion on it: the entries of A⁻¹ on A's own pattern, which is what the Jacobian needs of
-/// the grounded Green's function (DESIGN §2).
+/// the grounded Green's function (docs/physics.md, "The Jacobian").
 ///
 /// Why a second Cholesky beside SparseCholesky: selected inversion runs the Takahashi recurrence
 /// over every pair of rows in each column of L. On Eigen's simplicial factor each pair is a
@@ -13,7 +13,7 @@
 /// forward model keeps SparseCholesky (its header says why).
 #include <memory>
 
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -5,12 +5,13 @@
 /// sees it) for contact fitting; other keys are errors.
 #include <string>
 
-#include "emit/reconstruct/pressure.hpp"
+#include "emit/model/calibration.hpp"
 
 namespace emit {
 
-/// \throw IoError if unreadable; InvalidInput naming the key.
-PressureCalibration load_calibration(const std::string& path);
-void write_calibration(const std::string& path, const PressureCalibration& calibration);
+/// The kind is told by the keys. \throw IoError if unreadable; InvalidInput naming the key.
+Calibration load_calibration(const std::string& path);
+/// Written via a temporary file renamed into place. \throw IoError.
+void write_calibration(const std::string& path, const Calibration& calibration);
 
 }  // namespace emit

@@ -1,6 +1,6 @@
 #pragma once
 /// \file contacts_jsonl.hpp
-/// Contacts out as JSON Lines (DESIGN §5), one object per frame:
+/// Contacts out as JSON Lines (README, "Files"), one object per frame:
 /// {"frame": i, "contacts": [{"x_mm":…, "y_mm":…, "area_mm2":…, "pressure_N_per_mm2":…,
 ///   "peak_pressure_N_per_mm2":…, "force_N":…[, "x_std_mm":…, "y_std_mm":…,
 ///   "pressure_std_N_per_mm2":…]}][, "fit_misfit_mV":…]}
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "emit/reconstruct/contacts.hpp"
+#include "emit/frame/contacts.hpp"
 
 namespace emit {
 

@@ -1,11 +1,11 @@
 #pragma once
 /// \file frames_csv.hpp
-/// Frames as CSV (DESIGN §5): one frame per line, N·N comma-separated volts, ground-major
+/// Frames as CSV (README, "Files"): one frame per line, N·N comma-separated volts, ground-major
 /// (index l·N + m), no header.
 #include <string>
 #include <vector>
 
-#include "emit/fem/forward_model.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -4,7 +4,7 @@
 /// row per press (several rows share a frame index for simultaneous presses).
 #include <string>
 
-#include "emit/twin/press.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit {
 

@@ -7,7 +7,7 @@
 /// press is never learnt as the baseline.
 #include <cstdint>
 
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

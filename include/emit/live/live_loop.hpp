@@ -16,7 +16,7 @@
 #include "emit/acquire/recorder.hpp"
 #include "emit/live/baseline.hpp"
 #include "emit/live/latency_stats.hpp"
-#include "emit/reconstruct/reconstruction_setup.hpp"
+#include "emit/pipeline/pipeline.hpp"
 
 namespace emit {
 
@@ -61,13 +61,14 @@ struct LiveStats {
 
 class LiveLoop {
  public:
-  /// `source` and `setup` must outlive the loop. \throw InvalidInput for a bad option.
-  LiveLoop(FrameSource& source, ReconstructionSetup& setup, const LiveOptions& options = {});
+  /// `source` and `pipeline` must outlive the loop. \throw InvalidInput for a bad option.
+  LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& options = {});
 
   /// Contacts as JSON Lines (contacts_jsonl.hpp), "frame" = the source's sequence number, one line
   /// per reconstructed frame, flushed each frame. Null: none.
   void write_contacts_to(std::ostream* out) { contacts_out_ = out; }
-  /// Every frame the source gives (baseline capture included) is recorded here. Null: none.
+  /// Every frame the source gives (baseline capture included) is recorded here, as the board sent
+  /// it (SourceFrame::raw). Null: none.
   void record_to(Recorder* recorder) { recorder_ = recorder; }
   /// Must outlive run(). Several may be added.
   void add_publisher(FramePublisher* publisher) { publishers_.push_back(publisher); }
@@ -89,7 +90,6 @@ class LiveLoop {
   void publish(LiveFrame& frame);
 
   FrameSource& source_;
-  ReconstructionSetup& setup_;
   LiveOptions options_;
   Reconstructor reconstructor_;
   Baseline baseline_;

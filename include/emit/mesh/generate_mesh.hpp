@@ -28,7 +28,7 @@ struct MeshOptions {
 
 /// The reconstruction mesh of a sensor as its description asks.
 MeshOptions reconstruction_mesh_options(const Sensor& sensor);
-/// The twin's finer, edge-graded mesh (DESIGN §2: finer than the reconstruction's).
+/// The twin's finer, edge-graded mesh (docs/physics.md, "The digital twin": finer than the reconstruction's).
 MeshOptions twin_mesh_options(const Sensor& sensor, int seed = 1);
 
 /// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead. Either way the mesh comes

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

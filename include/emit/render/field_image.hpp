@@ -9,7 +9,7 @@
 
 #include "emit/mesh/mesh.hpp"
 #include "emit/render/image.hpp"
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

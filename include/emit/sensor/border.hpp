@@ -1,11 +1,11 @@
 #pragma once
 /// \file border.hpp
 /// The border of a flat sheet as a closed curve parameterised by arc length s ∈ [0, length),
-/// counter-clockwise. Electrodes are arc-length intervals of it (DESIGN §1), so a 3 mm electrode on
+/// counter-clockwise. Electrodes are arc-length intervals of it (README, "Sensor description"), so a 3 mm electrode on
 /// a circle is 3 mm of arc, and one that wraps a polygon corner is still one interval.
 #include <vector>
 
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 
@@ -24,7 +24,7 @@ struct BorderPiece {
 
 class Border {
  public:
-  /// Rectangle [0,w]×[0,h]; s = 0 at the bottom-left corner (DESIGN §1 origin).
+  /// Rectangle [0,w]×[0,h]; s = 0 at the bottom-left corner (the sensor description's origin).
   static Border rectangle(double width_mm, double height_mm);
   /// Circle; s = 0 at angle 0 (the +x point), as the default electrode layout numbers from there.
   static Border circle(Vector2 center_mm, double radius_mm);
@@ -34,8 +34,6 @@ class Border {
 
   double length_mm() const { return length_mm_; }
   const std::vector<BorderPiece>& pieces() const { return pieces_; }
-  /// Arc lengths of the polygon's corners (empty for a circle).
-  std::vector<double> corner_arclengths_mm() const;
 
   /// Point at arc length s (taken modulo the length).
   Vector2 point_at(double s_mm) const;

@@ -1,6 +1,6 @@
 #pragma once
 /// \file electrode_layout.hpp
-/// Where the electrodes go: the default layout rule (DESIGN §1) and the checks every layout passes.
+/// Where the electrodes go: the default layout rule (README, "Sensor description") and the checks every layout passes.
 #include <vector>
 
 #include "emit/sensor/sensor.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 /// \file sensor.hpp
-/// The sensor description (DESIGN §1, §5): the probing sheet's shape, its electrodes, the drive,
+/// The sensor description (README, "Sensor description"): the probing sheet's shape, its electrodes, the drive,
 /// the materials, the ADC and the mesh size. Built from JSON by `load_sensor` (sensor_json.hpp),
 /// validated there; every field here is in the units its name says.
 #include <optional>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "emit/sensor/border.hpp"
-#include "emit/types.hpp"
+#include "emit/core/types.hpp"
 
 namespace emit {
 

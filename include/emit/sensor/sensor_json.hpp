@@ -1,6 +1,6 @@
 #pragma once
 /// \file sensor_json.hpp
-/// Reading a sensor description from JSON (DESIGN §5), with validation that names the offending key.
+/// Reading a sensor description from JSON (README, "Sensor description"), with validation that names the offending key.
 ///
 /// Keys (all others are errors):
 ///   name                                  optional string
@@ -8,7 +8,7 @@
 ///              | {type: circle, radius_mm, center_mm: [x, y] (default [r, r])}
 ///              | {type: polygon, points_mm: [[x, y], ...]}
 ///              | {type: mesh, file: "sheet.msh"}     (path relative to the sensor file)
-///   electrodes   {count, width_mm}  laid out by the default rule (DESIGN §1)
+///   electrodes   {count, width_mm}  laid out by the default rule (electrode_layout.hpp)
 ///              | [{x_mm, y_mm, width_mm}, ...]  centres on the border, in electrode order
 ///   drive_voltage_V, probing_sheet_resistance_ohm_per_sq
 ///   contact_law  {alpha_ohm_mm2, gamma, min_pressure_N_per_mm2}

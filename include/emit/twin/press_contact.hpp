@@ -9,7 +9,7 @@
 
 #include "emit/fem/contact_load.hpp"
 #include "emit/sensor/sensor.hpp"
-#include "emit/twin/press.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit {
 

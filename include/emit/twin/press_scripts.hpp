@@ -4,9 +4,10 @@
 /// presses, and a press that moves over time. Every press lies inside the sheet, at least
 /// `margin_mm` from its border.
 #include <cstdint>
+#include <string>
 
 #include "emit/sensor/sensor.hpp"
-#include "emit/twin/press.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit {
 
@@ -28,5 +29,22 @@ PressSequence two_finger_script(const Sensor& sensor, int frames, double min_sep
 /// One press moving in a straight line from `from` to `to` over `frames` frames.
 PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
                             const PressStyle& style);
+
+/// A script by name, as `emit simulate --script` takes it, with every script's parameters.
+struct PressScript {
+  enum class Kind { none, grid, random, two_finger, moving };
+  Kind kind = Kind::none;
+  int frames = 20;                 ///< none (no-contact references), random, two_finger, moving
+  double spacing_mm = 10, jitter_mm = 0;                  ///< grid
+  double min_separation_mm = 12, max_separation_mm = 40;  ///< two_finger
+  Vector2 from_mm{0, 0}, to_mm{0, 0};                     ///< moving
+  PressStyle style;
+};
+
+/// "none", "grid", "random", "two-finger", "moving". \throw InvalidInput naming the text.
+PressScript::Kind parse_script_kind(const std::string& name);
+
+/// The script's presses, frame by frame (`none`: `frames` frames with no press).
+PressSequence run_script(const Sensor& sensor, const PressScript& script);
 
 }  // namespace emit

@@ -1,7 +1,7 @@
 #pragma once
 /// \file twin.hpp
 /// The digital twin: presses → contact conductance (resolved inside elements) → one solve per
-/// grounding → frame → ADC. It meshes the sheet finer than the reconstruction does (DESIGN §2, §4:
+/// grounding → frame → ADC. It meshes the sheet finer than the reconstruction does (docs/physics.md, "The digital twin":
 /// no inverse crime) and grades the mesh into the electrodes' ends.
 #include <cstdint>
 #include <optional>
@@ -10,7 +10,7 @@
 #include "emit/fem/forward_model.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/sensor/sensor.hpp"
-#include "emit/twin/press.hpp"
+#include "emit/sensor/press.hpp"
 
 namespace emit {
 
@@ -40,7 +40,9 @@ class Twin {
   /// The noise-free frame of the physics, before the ADC. \throw InvalidInput for a bad press.
   Frame exact_frame(const std::vector<Press>& presses) const;
   /// The frame as the board reads it (ADC applied if enabled). Each call draws fresh noise.
-  Frame frame(const std::vector<Press>& presses);
+  /// `codes`, if given, gets the ADC's codes of it (N·N, ground-major; with the ADC off, those of
+  /// the exact volts).
+  Frame frame(const std::vector<Press>& presses, std::vector<std::uint16_t>* codes = nullptr);
   /// Node potentials, #V by N (column l: electrode l grounded), for pictures.
   Matrix potentials(const std::vector<Press>& presses) const;
 

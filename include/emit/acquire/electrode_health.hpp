@@ -1,0 +1,32 @@
+#pragma once
+/// \file electrode_health.hpp
+/// Dead electrodes, told from the frames. A disconnected electrode m reads ~0 V as the sensed
+/// electrode whatever is pressed (its ADC input is pulled down); as the grounded one it grounds
+/// nothing, so the pressed sheet rises to the drive and its whole row reads full scale. Either,
+/// in every frame that has signal, marks the electrode dead: the reconstruction then leaves out
+/// all its measurements (as ground and as sense) and keeps the rest.
+#include <string>
+#include <vector>
+
+#include "emit/core/types.hpp"
+#include "emit/sensor/sensor.hpp"
+
+namespace emit {
+
+struct DeadElectrode {
+  int electrode = -1;
+  std::string reason;  ///< e.g. "reads 0 V as the sensed electrode in all 25 frames with signal"
+};
+
+/// Electrodes dead in every frame with signal. "At a rail" allows max(2 ADC steps, 5 σ of the
+/// ADC noise); a frame has signal when some reading exceeds 20 times that. Needs at least one
+/// such frame to say anything.
+std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames, const AdcSpec& adc);
+
+/// A frame with a whole row at full scale whose electrode is not dead overall: the grounding
+/// failed in that frame only. \throw InvalidInput "<source>: frame <i>: ground <l> reads <v> V
+/// on every electrode …".
+void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
+                         const std::string& source);
+
+}  // namespace emit

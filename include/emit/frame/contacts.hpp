@@ -1,0 +1,63 @@
+#pragma once
+/// \file contacts.hpp
+/// Contacts from a reconstructed image (paper §2.4): the connected regions of selected (above
+/// threshold) elements, two elements being connected when they share an edge. Each contact gets
+/// its centroid, area, mean and peak pressure and force = Σ P_k·A_k.
+///
+/// Offline/online split: the constructor precomputes the mesh's element adjacency, areas and
+/// centroids; find() runs per frame and allocates nothing (all scratch and the output buffer are
+/// sized for the worst case at construction).
+#include <cstdint>
+#include <vector>
+
+#include "emit/mesh/mesh.hpp"
+#include "emit/core/types.hpp"
+
+namespace emit {
+
+struct Contact {
+  double x_mm = 0, y_mm = 0;            ///< centroid, weighted by area × weight (see find())
+  double area_mm2 = 0;                   ///< Σ A_k over the contact's elements
+  double pressure_N_per_mm2 = 0;         ///< area-weighted mean pressure
+  double peak_pressure_N_per_mm2 = 0;    ///< largest element pressure
+  double force_N = 0;                    ///< Σ P_k A_k
+  /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
+  double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;
+  int element_count = 0;
+};
+
+class ContactFinder {
+ public:
+  explicit ContactFinder(const Mesh& mesh);
+
+  /// \param selected  #F flags, nonzero where the element is above threshold
+  /// \param pressure  #F element pressures [N/mm²] (read only where selected)
+  /// \param weight    #F non-negative weights for the centroid (e.g. the reconstructed
+  ///                  potential); the centroid is Σ w_k A_k c_k / Σ w_k A_k, or the area-weighted
+  ///                  centroid when all weights of a contact are 0
+  /// \return the contacts, largest force first; valid until the next call. Contacts smaller than
+  ///         min_area_mm2 are dropped.
+  const std::vector<Contact>& find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
+                                   const Vector& weight, double min_area_mm2 = 0.0);
+
+  /// The image's peaks: elements whose value is at least min_value and no smaller than any edge
+  /// neighbour's, strongest first, each at least min_separation_mm from every stronger one kept.
+  /// Where a 50 % threshold merges two presses into one region, the image still has two peaks.
+  /// \return the peaks' centroids, valid until the next call.
+  const std::vector<Vector2>& peaks(const Vector& image, double min_value, double min_separation_mm);
+
+  Index element_count() const { return static_cast<Index>(areas_mm2_.size()); }
+  const Vector2& centroid_mm(Index element) const { return centroids_mm_[static_cast<std::size_t>(element)]; }
+
+ private:
+  std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
+  std::vector<double> areas_mm2_;
+  std::vector<Vector2> centroids_mm_;
+  std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
+  std::vector<int> stack_;             ///< scratch
+  std::vector<Contact> contacts_;   ///< output, capacity #F
+  std::vector<int> peak_elements_;
+  std::vector<Vector2> peaks_;
+};
+
+}  // namespace emit

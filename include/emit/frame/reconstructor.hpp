@@ -1,0 +1,80 @@
+#pragma once
+/// \file reconstructor.hpp
+/// The online half (docs/architecture.md, the online line): per frame, δV = V − V_ref → δφ = R·δV → threshold → pressure
+/// (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
+#include <cstdint>
+#include <vector>
+
+#include <variant>
+
+#include "emit/model/calibration.hpp"
+#include "emit/frame/contact_fitter.hpp"
+#include "emit/frame/contacts.hpp"
+#include "emit/model/reconstruction_model.hpp"
+
+namespace emit {
+
+struct FrameOptions {
+  double threshold_fraction = 0.5;  ///< of the image's maximum (paper §2.4)
+  double min_contact_area_mm2 = 0;  ///< smaller regions are dropped
+  /// With a fitter: start each frame from the last frame's contacts (ContactFitter::track), and
+  /// seed afresh from the linear image only when that does not explain the frame. A stream of
+  /// frames from a moving finger then costs a fraction of a cold fit; frames that are not a stream
+  /// cost one tracking attempt more. While tracking holds, the linear image is not computed.
+  bool track_contacts = true;
+};
+
+class Reconstructor {
+ public:
+  /// A linear method: eq. 7 by the model's operator, the threshold, eq. 8 by `calibration`, the
+  /// contacts. Keeps a reference to `model`, which must outlive it. \throw InvalidInput for a bad
+  /// option.
+  Reconstructor(const ReconstructionModel& model, LinearCalibration calibration, FrameOptions options = {});
+  /// Contact fitting (contact_fitter.hpp), seeded by the linear image's contacts (strongest first,
+  /// by the model's uncalibrated eq. 8: only their order matters). Contacts are reported with
+  /// the calibration's indenter area. `fitter`, built with the calibration's contact law and sheet
+  /// (pipeline/pipeline.hpp does both) and on the model's measurements, must outlive this; one
+  /// reconstructor at a time may use it. \throw InvalidInput for a bad option.
+  Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, FitCalibration calibration,
+                FrameOptions options = {});
+
+  /// The no-contact reference frame. \throw InvalidInput if it is not N×N or not finite.
+  void set_reference(const Frame& reference);
+
+  /// The last frame's fit (null for a linear method).
+  const FitResult* fit_result() const { return fitter_ ? &fitter_result_ : nullptr; }
+
+  /// One frame → contacts (valid until the next call). \throw InvalidInput if the frame is not
+  /// N×N; the frame's values are not checked here (the readers check them).
+  const std::vector<Contact>& process(const Frame& frame);
+
+  const Vector& image() const { return dphi_; }       ///< δφ per element [V] (0 while tracking holds)
+  const Vector& pressure() const { return pressure_; } ///< per element [N/mm²], 0 below threshold
+  const Mesh& mesh() const { return model_.mesh; }
+
+ private:
+  const ReconstructionModel& model_;
+  /// Eq. 8 on the linear image: the calibration of a linear method, the model's uncalibrated one
+  /// for contact fitting's seeds.
+  LinearCalibration linear_;
+  double indenter_radius_mm_ = 0;  ///< contact fitting's (FitCalibration::indenter_radius_mm)
+  FrameOptions options_;
+  ContactFinder finder_;
+  Vector reference_, dV_, dphi_, pressure_;
+  std::vector<std::uint8_t> selected_;
+  ContactFitter* fitter_ = nullptr;
+  FitResult fitter_result_;
+  std::vector<Disc> seeds_;
+  std::vector<Contact> fitted_;
+  std::vector<Disc> previous_discs_;  ///< the last frame's fitted contacts, for tracking
+  Vector residual_image_;
+  CompactOperatorScratch operator_scratch_;
+  const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
+  const std::vector<Contact>& report_fitted();
+};
+
+/// The mean of several frames (the reference is captured as an average). \throw InvalidInput
+/// if there are none or their sizes differ.
+Frame average_frames(const std::vector<Frame>& frames);
+
+}  // namespace emit

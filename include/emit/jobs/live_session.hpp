@@ -1,0 +1,61 @@
+#pragma once
+/// \file live_session.hpp
+/// `emit live`: a source (live/open_source.hpp), the pipeline for a method, the live loop, and on
+/// request the viewer's server, a recording and the contacts as JSON Lines, wired together.
+/// Built by the constructor (the source opened and the models built before any output file is
+/// touched), run until stopped.
+///
+/// Example:
+///
+///     emit::LiveSession session({.source = "sim", .serve = "127.0.0.1:8080"});
+///     std::puts(session.viewer_url().c_str());
+///     std::atomic<bool> stop{false};   // set it from a signal handler
+///     const emit::LiveStats stats = session.run(stop);
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "emit/core/progress.hpp"
+#include "emit/live/live_loop.hpp"
+#include "emit/model/method.hpp"
+
+namespace emit {
+
+struct LiveJob {
+  std::string source = "sim";  ///< live/open_source.hpp
+  std::string serve;           ///< HOST:PORT for the viewer; empty: none
+  std::string contacts_path;   ///< JSON Lines; "-": standard output; empty: none
+  std::string record_path;     ///< empty: no recording
+  std::string sensor_path;     ///< empty: the built-in default sensor
+  std::string calibration_path;  ///< empty: uncalibrated
+  std::string cache_dir;       ///< the operator cache; empty: none
+  Method method = Method::fit;
+  std::uint64_t frames = 0;  ///< stop after this many reconstructed frames (0: no limit)
+  double seconds = 0;        ///< stop after this long (0: no limit)
+  double frames_per_s = 50;  ///< the simulator's pace; 0: a recording as fast as it goes
+};
+
+class LiveSession {
+ public:
+  /// \throw InvalidInput, IoError (a source or port that cannot be opened, an unwritable file).
+  explicit LiveSession(const LiveJob& job, const Progress& progress = {});
+  ~LiveSession();
+  LiveSession(const LiveSession&) = delete;
+  LiveSession& operator=(const LiveSession&) = delete;
+
+  std::string source_description() const;
+  std::string viewer_url() const;  ///< empty when not serving
+  bool calibrated() const;
+
+  /// Runs until `stop`, the frame or time limit, or the source's end; then closes the recording
+  /// (renamed into place) and returns what the loop measured.
+  LiveStats run(const std::atomic<bool>& stop);
+  std::uint64_t recorded_frames() const;  ///< after run(); 0 without a recording
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace emit

@@ -1,0 +1,43 @@
+#pragma once
+/// \file reconstruct_job.hpp
+/// `emit reconstruct`: frames from a CSV file → contacts as JSON Lines, and on request a pressure
+/// map per frame. The frames are read and checked before anything is built or written (a bad
+/// value stops the run with nothing lost); dead electrodes are found in them and left out; the
+/// contacts file is replaced only when it is whole.
+#include <string>
+#include <vector>
+
+#include "emit/core/progress.hpp"
+#include "emit/model/method.hpp"
+
+namespace emit {
+
+struct ReconstructJob {
+  std::string sensor_path;       ///< empty: the built-in default sensor
+  std::string reference_path;    ///< no-contact frames (CSV; averaged)
+  std::string frames_path;       ///< frames to reconstruct (CSV)
+  std::string contacts_path;     ///< contacts out (JSON Lines)
+  std::string calibration_path;  ///< empty: uncalibrated
+  std::string images_dir;        ///< empty: no pictures
+  Method method = Method::fit;
+  double lambda2 = 0;            ///< 0: the method's
+  double threshold_fraction = 0.5, min_contact_area_mm2 = 0;
+  std::string cache_dir;         ///< empty: no operator cache
+  int threads = 1;               ///< the linear methods' batch is split across them
+};
+
+struct ReconstructReport {
+  std::size_t frames = 0;
+  long triangles = 0;
+  int measurements = 0;
+  bool operator_from_cache = false;
+  double model_seconds = 0, frames_per_s = 0;
+  double lambda2 = 0;  ///< the linear operator's
+  bool calibrated = false;
+  std::vector<int> dead_electrodes;  ///< left out (each also told to progress.warning)
+};
+
+/// \throw InvalidInput, IoError, SolverError with one-line messages naming the file.
+ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress = {});
+
+}  // namespace emit

@@ -1,0 +1,42 @@
+#pragma once
+/// \file simulate_job.hpp
+/// `emit simulate`: frames from the digital twin for given presses or a press script, written as
+/// CSV with the presses beside them (the ground truth), and on request a picture of the
+/// probing layer's potential per frame.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "emit/core/progress.hpp"
+#include "emit/mesh/mesh_quality.hpp"
+#include "emit/sensor/press.hpp"
+#include "emit/twin/press_scripts.hpp"
+#include "emit/twin/twin.hpp"
+
+namespace emit {
+
+struct SimulateJob {
+  std::string sensor_path;  ///< empty: the built-in default sensor
+  std::string out_path;     ///< frames (CSV)
+  std::string truth_path;   ///< the presses (CSV); empty: <out's stem>_presses.csv beside it
+  std::string images_dir;   ///< empty: no pictures
+  /// One frame of these presses, or the script's frames: exactly one of the two.
+  std::vector<Press> presses;
+  std::optional<PressScript> script;
+  TwinOptions twin;
+  double noise_V = -1;  ///< ≥ 0: replaces the sensor's ADC noise
+};
+
+struct SimulateReport {
+  Sensor sensor;  ///< as simulated
+  PressSequence presses;
+  std::vector<Frame> frames;
+  MeshQuality twin_mesh;
+  std::string truth_path;  ///< where the presses went
+};
+
+/// \throw InvalidInput (neither or both of presses and script, a press off the sheet), IoError
+/// (an output folder that does not exist: before any work).
+SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress = {});
+
+}  // namespace emit

@@ -1,0 +1,33 @@
+#pragma once
+/// \file method.hpp
+/// The reconstruction methods, by name in one place: the CLI's --method, the calibration each
+/// needs, and the linear operator each applies (README, "Reconstruction methods").
+#include <string>
+
+#include "emit/model/reconstruction_operator.hpp"
+
+namespace emit {
+
+enum class Method {
+  fit,        ///< model-based contact fitting (frame/contact_fitter.hpp), seeded by the paper method's image
+  paper,      ///< paper eq. 7 with Q = I, a 50 % threshold, eq. 8
+  noser,      ///< eq. 7 with the NOSER prior
+  laplacian,  ///< eq. 7 with the element Laplacian as the prior (smooth images)
+};
+
+/// The linear methods apply an operator to each frame (eq. 7); contact fitting fits a model.
+constexpr bool is_linear(Method method) { return method != Method::fit; }
+
+/// "fit", "paper", "noser", "laplacian".
+const char* method_name(Method method);
+
+/// The method named `name`. \throw InvalidInput naming it and the methods there are.
+Method parse_method(const std::string& name);
+
+/// The linear operator a method applies: its prior at the λ² `emit eval` measured best on the
+/// 60 mm sheet (paper 10⁴, noser 1.5·10³, laplacian 6·10⁵; the paper's own λ² = 1000 belongs to
+/// its Jacobian's scale). Contact fitting is seeded by the paper method's image, so `fit` gets
+/// the paper method's operator.
+OperatorOptions operator_options(Method method);
+
+}  // namespace emit

@@ -1,0 +1,80 @@
+#pragma once
+/// \file pipeline.hpp
+/// The one place that builds every model a method needs, from a sensor and options: the linear
+/// model (mesh, Jacobian, operator, from the cache where it can: model/reconstruction_model.hpp),
+/// and for contact fitting the fit model (its graded mesh and Green's function, on the calibrated
+/// sheet) and the fitter with the calibrated contact law. `emit reconstruct`, `emit live`, the
+/// Python bindings and the evaluation all reconstruct through it.
+///
+/// Example:
+///
+///     emit::Pipeline pipeline(sensor, {.method = emit::Method::fit, .cache_dir = emit::default_cache_dir()});
+///     emit::Reconstructor reconstructor = pipeline.reconstructor();
+///     reconstructor.set_reference(reference);
+///     for (const emit::Frame& frame : frames) use(reconstructor.process(frame));
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "emit/frame/contact_fitter.hpp"
+#include "emit/frame/reconstructor.hpp"
+#include "emit/model/calibration.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/model/method.hpp"
+#include "emit/model/reconstruction_model.hpp"
+
+namespace emit {
+
+struct PipelineOptions {
+  Method method = Method::fit;
+  double lambda2 = 0;         ///< the linear operator's λ² (0: the method's, model/method.hpp)
+  std::string cache_dir;      ///< the operator cache (empty: none; model/operator_cache.hpp)
+  std::vector<int> excluded;  ///< dead electrodes left out (acquire/electrode_health.hpp)
+};
+
+/// The sensor's electrode count; a mesh-file sensor's electrodes are its file's (read here).
+/// \throw InvalidInput, IoError for an unreadable mesh file.
+int electrode_count_of(const Sensor& sensor);
+
+/// \throw InvalidInput "<source>: a calibration for <kind>; run 'emit calibrate --method <m>'"
+/// when `calibration` is not of the kind `method` needs (model/calibration.hpp).
+void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source);
+
+class Pipeline {
+ public:
+  /// Builds the models. `calibration`: none is uncalibrated; one of the wrong kind is refused
+  /// (check_calibration_for_method, `calibration_source` naming it). `progress` is told each stage.
+  /// \throw InvalidInput (a mismatched calibration, a bad sensor), IoError, SolverError.
+  Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration = {},
+           const std::function<void(const std::string&)>& progress = {},
+           const std::string& calibration_source = "calibration");
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+
+  Method method() const { return method_; }
+  bool calibrated() const { return calibrated_; }
+  const ReconstructionModel& model() const { return model_; }
+  const OperatorOptions& operator_options() const { return model_.options; }
+  /// The linear method's calibration (the uncalibrated eq. 8 until calibrated). \pre is_linear(method()).
+  const LinearCalibration& linear_calibration() const { return linear_; }
+  /// Contact fitting's own mesh (model/fit_model.hpp); null for a linear method.
+  const Mesh* fit_mesh() const { return fit_model_ ? &fit_model_->mesh : nullptr; }
+
+  /// A reconstructor for the method. It (and for `fit` the pipeline's one fitter) refers to this
+  /// pipeline, which must outlive it; one reconstructor at a time may fit.
+  Reconstructor reconstructor(const FrameOptions& options = {});
+
+ private:
+  Method method_;
+  bool calibrated_;
+  ReconstructionModel model_;
+  LinearCalibration linear_;
+  FitCalibration fit_calibration_;
+  std::unique_ptr<FitModel> fit_model_;
+  Sensor fit_sensor_;  ///< the sensor with the calibrated contact law
+  std::optional<ContactFitter> fitter_;
+};
+
+}  // namespace emit

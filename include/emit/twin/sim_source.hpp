@@ -1,0 +1,74 @@
+#pragma once
+/// \file sim_source.hpp
+/// The digital twin as a live source: a scripted finger presses the sheet, the twin computes each
+/// frame (with the ADC's noise) on a thread of its own, paced at SourceOptions::frames_per_s, and
+/// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame `sequence` is a pure function of the
+/// script (presses_of), so tests can compare contacts with the truth.
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "emit/acquire/frame_source.hpp"
+#include "emit/sensor/press.hpp"
+#include "emit/twin/twin.hpp"
+
+namespace emit {
+
+/// What the simulated finger does.
+struct SimScript {
+  enum class Kind {
+    loop,    ///< a figure-eight over the sheet, 6 s pressed then 1 s lifted, again and again
+    random,  ///< a press at a random place for 0.6 s, then 0.2 s lifted, again and again
+    fixed,   ///< one press held at `fixed`
+  };
+  Kind kind = Kind::loop;
+  Press fixed{30, 30, 5, 10};  ///< kind fixed: where and how hard
+  double radius_mm = 5;        ///< the indenter of loop and random
+  double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
+};
+
+/// "sim", "sim:loop", "sim:random", "sim:fixed:X,Y[,F]". \throw InvalidInput naming the spec.
+SimScript parse_sim_script(const std::string& spec);
+
+class SimSource : public FrameSource {
+ public:
+  /// Builds the twin (meshing takes a second); the frame thread starts at the first next().
+  /// \throw InvalidInput for a bad script (e.g. a fixed press off the sheet) or sensor.
+  SimSource(const Sensor& sensor, const SimScript& script, const SourceOptions& options);
+  ~SimSource() override;
+  SimSource(const SimSource&) = delete;
+  SimSource& operator=(const SimSource&) = delete;
+
+  bool next(SourceFrame& frame, std::chrono::milliseconds timeout) override;
+  bool finished() const override;
+  std::string description() const override;
+
+  /// The presses the twin was given for frame `sequence` (empty: nothing touches).
+  std::vector<Press> presses_of(std::uint64_t sequence) const;
+  /// Frames the twin made that were dropped because the reader fell more than `queue_limit` behind
+  /// (paced only: unpaced, frames_per_s = 0, the twin waits for the reader and drops none).
+  std::uint64_t dropped() const;
+
+  static constexpr std::size_t queue_limit = 8;
+
+ private:
+  void produce();
+  double script_time_s(std::uint64_t sequence) const;
+
+  Sensor sensor_;
+  SimScript script_;
+  SourceOptions options_;
+  Twin twin_;
+  Vector2 center_mm_, half_extent_mm_;  ///< of the sheet's bounding box, for the loop's path
+  mutable std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<SourceFrame> queue_;
+  std::uint64_t dropped_ = 0;
+  bool stop_ = false;
+  std::exception_ptr failure_;
+  std::thread thread_;
+};
+
+}  // namespace emit

@@ -1,0 +1,26 @@
+#include "emit/core/threads.hpp"
+
+#include <cblas.h>
+
+#include <string>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+
+namespace {
+int current_count = 1;
+}  // namespace
+
+void set_thread_count(int count) {
+  if (count < 1) throw InvalidInput("thread count must be at least 1, got " + std::to_string(count));
+  openblas_set_num_threads(count);
+  current_count = count;
+}
+
+int thread_count() { return current_count; }
+
+SingleThreadedBlas::SingleThreadedBlas() { openblas_set_num_threads(1); }
+SingleThreadedBlas::~SingleThreadedBlas() { openblas_set_num_threads(current_count); }
+
+}  // namespace emit

@@ -1,0 +1,289 @@
+#include "emit/eval/sheet_evaluation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <cstdio>
+#include <numbers>
+#include <tuple>
+
+#include "emit/acquire/electrode_health.hpp"
+#include "emit/calibrate/contact_law_calibration.hpp"
+#include "emit/calibrate/sheet_calibration.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/model/jacobian.hpp"
+#include "emit/model/reconstruction_model.hpp"
+#include "emit/render/image.hpp"
+#include "emit/render/line_plot.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/press_scripts.hpp"
+#include "emit/twin/sensor_mismatch.hpp"
+
+namespace emit {
+
+std::vector<EvalCase> standard_eval_cases(const std::string& dir) {
+  return {
+      {"60 x 60 mm sheet", default_sensor(), 6.0, 2.0, 5.0, "paper: 3.49 +/- 1.56 mm", true},
+      {"30 x 30 mm sheet", load_sensor(dir + "/square30.json"), 3.0, 1.0, 2.5, "paper: 1.74 mm", true},
+      {"circle, r = 40 mm", load_sensor(dir + "/circle40.json"), 8.0, 2.0, 5.0, "paper: -", false},
+      {"120 x 120 mm sheet", load_sensor(dir + "/square120_32.json"), 12.0, 4.0, 5.0, "paper: -", false, 2},
+  };
+}
+
+namespace {
+
+/// λ² from 1 to 10⁶.
+std::vector<double> default_sweep(int per_decade) {
+  std::vector<double> values;
+  for (int i = 0; i <= 6 * per_decade; ++i) values.push_back(std::pow(10.0, i / static_cast<double>(per_decade)));
+  return values;
+}
+
+/// Single presses at random places with pressures uniform in [0.02, 0.5] N/mm² (the paper's range).
+PressSequence pressure_presses(const Sensor& sensor, double radius_mm, int frames, std::uint64_t seed) {
+  PressStyle style;
+  style.radius_mm = radius_mm;
+  style.margin_mm = radius_mm + 1;
+  style.min_force_N = 0.02 * std::numbers::pi * radius_mm * radius_mm;
+  style.max_force_N = 0.5 * std::numbers::pi * radius_mm * radius_mm;
+  style.seed = seed;
+  return random_script(sensor, frames, style);
+}
+
+PressStyle grid_style(const EvalCase& c, const EvalOptions& options) {
+  PressStyle style;
+  style.radius_mm = c.radius_mm;
+  style.margin_mm = c.radius_mm + 1;
+  style.seed = options.seed;
+  return style;
+}
+
+PressSequence grid_presses(const EvalCase& c, const EvalOptions& options) {
+  return grid_script(c.sensor, (options.quick ? 2 : 1) * c.spacing_mm, c.jitter_mm, grid_style(c, options));
+}
+
+int pressure_press_count(const EvalOptions& options) { return options.quick ? 10 : 40; }
+
+struct Runs {
+  SimulatedRun grid, calibration, test, two_press;
+};
+
+Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
+  TwinOptions twin_options;
+  twin_options.mesh_seed = options.mesh_seed;  // finer than and different from the reconstruction's mesh
+  twin_options.noise_seed = options.seed;
+  Twin twin(c.sensor, twin_options);
+  Runs runs;
+  runs.grid = simulate_run(twin, grid_presses(c, options));
+  if (c.pressure_and_two_press) {
+    const int n = pressure_press_count(options);
+    runs.calibration = simulate_run(twin, pressure_presses(c.sensor, c.radius_mm, n, options.seed + 100));
+    runs.test = simulate_run(twin, pressure_presses(c.sensor, c.radius_mm, n, options.seed + 200));
+    PressStyle two = grid_style(c, options);
+    two.min_force_N = 5 * c.radius_mm * c.radius_mm / 25, two.max_force_N = 20 * c.radius_mm * c.radius_mm / 25;
+    const double side = c.sensor.border->size_mm() / std::sqrt(2.0);
+    runs.two_press = simulate_run(twin, two_finger_script(c.sensor, n, 0.2 * side, 0.67 * side, two));
+  }
+  return runs;
+}
+
+/// A linear method over the λ² sweep; the best λ² by the paper's positional error.
+MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, ReconstructionModel& model, const Matrix& J,
+                                 Method method, const EvalOptions& options) {
+  MethodEvaluation result;
+  result.method = method;
+  const std::vector<double> sweep = options.lambda2.empty() ? default_sweep(c.lambdas_per_decade) : options.lambda2;
+  model.options = operator_options(method);
+  const OperatorFamily family(J, model.mesh, model.options.prior, model.options.noser_exponent);
+  const SweepPoint* best = nullptr;
+  for (double lambda2 : sweep) {
+    model.options.lambda2 = lambda2;
+    model.op = family.compact_operator_for(lambda2, model.options.rank_cutoff);
+    Reconstructor reconstructor(model, LinearCalibration::uncalibrated(c.sensor));
+    const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
+    result.sweep.push_back({lambda2, r.image_centroid, r.strongest_contact, l_curve_point(J, model.op, model.measurements, runs.grid)});
+  }
+  for (const SweepPoint& point : result.sweep)
+    if (!best || point.image_centroid.mean < best->image_centroid.mean) best = &point;
+  result.lambda2 = best->lambda2;
+  result.position = best->image_centroid;
+  result.strongest_contact = best->strongest_contact;
+  if (c.pressure_and_two_press) {
+    model.options.lambda2 = result.lambda2;
+    model.op = family.compact_operator_for(result.lambda2, model.options.rank_cutoff);
+    Reconstructor reconstructor(model, LinearCalibration::uncalibrated(c.sensor));
+    result.pressure_error_N_per_mm2 = pressure_errors(reconstructor, runs.calibration, runs.test, 0.5).error_N_per_mm2.mean;
+    result.two_press = two_press_rates(reconstructor, runs.two_press, 0.4 * c.radius_mm * 4);
+  }
+  return result;
+}
+
+std::vector<double> true_pressures(const SimulatedRun& run) {
+  std::vector<double> out;
+  for (const auto& presses : run.presses) out.push_back(presses.at(0).pressure_N_per_mm2());
+  return out;
+}
+
+/// Fitted contacts' pressure after contact fitting's calibration on the calibration run: the
+/// mean |error| on the test run.
+double fit_pressure_error(Reconstructor& reconstructor, const ReconstructionModel& model, ContactFitter& fitter,
+                          const EvalCase& c, const Runs& runs) {
+  const ContactLaw law = calibrate_fitted_contact_law(model, fitter, runs.calibration.reference, runs.calibration.frames,
+                                                      true_pressures(runs.calibration), c.sensor.contact)
+                             .law;
+  reconstructor.set_reference(runs.test.reference);
+  const std::vector<double> truth = true_pressures(runs.test);
+  std::vector<double> errors;
+  for (std::size_t f = 0; f < runs.test.frames.size(); ++f) {
+    reconstructor.process(runs.test.frames[f]);
+    const FitResult& fit = *reconstructor.fit_result();
+    if (fit.contacts.empty()) continue;
+    errors.push_back(std::abs(law.pressure_N_per_mm2(fit.contacts[0].disc.conductance_S_per_mm2) - truth[f]));
+  }
+  return summarize_errors(errors, 0).mean;
+}
+
+/// Model-based contact fitting, seeded by the paper method's image.
+MethodEvaluation evaluate_fit(const EvalCase& c, const Runs& runs, ReconstructionModel model, const Matrix& J) {
+  MethodEvaluation result;
+  result.method = Method::fit;
+  model.options = operator_options(Method::paper);
+  model.op = build_compact_operator(J, model.mesh, model.options);
+  const FitModel fit_model = build_fit_model(c.sensor);
+  result.fit_mesh_nodes = static_cast<long>(fit_model.mesh.node_count());
+  ContactFitter fitter(c.sensor, fit_model.mesh, fit_model.green, model.measurements);
+  Reconstructor reconstructor(model, fitter, FitCalibration::uncalibrated(c.sensor));
+  const auto start = std::chrono::steady_clock::now();
+  const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
+  result.ms_per_frame = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+                        static_cast<double>(runs.grid.frames.size());
+  result.position = result.strongest_contact = r.strongest_contact;
+  if (c.pressure_and_two_press) {
+    result.pressure_error_N_per_mm2 = fit_pressure_error(reconstructor, model, fitter, c, runs);
+    result.two_press = two_press_rates(reconstructor, runs.two_press, 2.0);
+  }
+  return result;
+}
+
+/// The twin departs from the description; the reconstruction keeps the nominal one (and leaves
+/// out electrodes it finds dead, as `emit reconstruct` does).
+std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double lambda2, const EvalOptions& options,
+                                                    const FitModel* fit_model, const Progress& progress) {
+  TwinOptions base;
+  base.mesh_seed = options.mesh_seed;
+  base.noise_seed = options.seed;
+  OperatorOptions linear = operator_options(Method::paper);
+  linear.lambda2 = lambda2;
+  const PressSequence grid = grid_presses(c, options);
+  std::vector<MismatchEvaluation> results;
+  for (const Mismatch& m : standard_mismatches(c.sensor, base, options.seed)) {
+    progress.say("  mismatch: " + m.name);
+    MismatchEvaluation result;
+    result.name = m.name;
+    Twin twin(m.twin_sensor, m.twin_options);
+    const SimulatedRun run = simulate_run(twin, grid);
+    std::vector<int> dead;
+    for (const DeadElectrode& d : find_dead_electrodes(run.frames, c.sensor.adc)) dead.push_back(d.electrode);
+    result.dead_electrode_found = !dead.empty();
+    const ReconstructionModel model = build_reconstruction_model(c.sensor, linear, "", dead);
+    Reconstructor paper(model, LinearCalibration::uncalibrated(c.sensor));
+    result.paper = localisation_errors(paper, run, 0.5).image_centroid;
+    if (fit_model) {
+      ContactFitter fitter(c.sensor, fit_model->mesh, fit_model->green, model.measurements);
+      Reconstructor fitting(model, fitter, FitCalibration::uncalibrated(c.sensor));
+      result.fit = localisation_errors(fitting, run, 0.5).strongest_contact;
+      const SimulatedRun calibration = simulate_run(
+          twin, pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
+      const SheetCorrection correction = calibrate_sheet(c.sensor, fit_model->mesh, model.measurements, calibration.frames,
+                                                         calibration.reference, calibration.presses)
+                                             .correction;
+      const DenseGreenFunction green = fit_green_function(fit_model->mesh, c.sensor, &correction);
+      ContactFitter corrected(c.sensor, fit_model->mesh, green, model.measurements);
+      Reconstructor calibrated(model, corrected, FitCalibration::uncalibrated(c.sensor));
+      result.fit_self_calibrated = localisation_errors(calibrated, run, 0.5).strongest_contact;
+      std::tie(result.sheet_factor_low, result.sheet_factor_high) = correction.factor_range(fit_model->mesh);
+    }
+    results.push_back(result);
+  }
+  return results;
+}
+
+std::string file_stem(const std::string& name) {
+  std::string stem;
+  for (char ch : name)
+    if (std::isalnum(static_cast<unsigned char>(ch))) stem += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    else if (!stem.empty() && stem.back() != '_') stem += '_';
+  while (!stem.empty() && stem.back() == '_') stem.pop_back();
+  return stem;
+}
+
+}  // namespace
+
+SheetEvaluation evaluate_sheet(const EvalCase& c, const EvalOptions& options, const Progress& progress) {
+  SheetEvaluation evaluation;
+  progress.say("  simulating");
+  const Runs runs = simulate_case(c, options);
+  evaluation.grid_presses = runs.grid.presses.size();
+  ReconstructionModel model;
+  model.mesh = generate_mesh(c.sensor, reconstruction_mesh_options(c.sensor));
+  model.measurements = make_measurement_set(model.mesh.electrode_count());
+  model.uncalibrated = LinearCalibration::uncalibrated(c.sensor);
+  evaluation.triangles = static_cast<long>(model.mesh.triangle_count());
+  const Matrix J = compute_jacobian(model.mesh, model.measurements);
+  for (Method method : options.methods) {
+    progress.say(std::string("  ") + method_name(method));
+    evaluation.methods.push_back(method == Method::fit ? evaluate_fit(c, runs, model, J)
+                                                       : evaluate_linear(c, runs, model, J, method, options));
+    if (method == Method::paper) evaluation.mismatch_lambda2 = evaluation.methods.back().lambda2;
+  }
+  if (c.pressure_and_two_press && evaluation.mismatch_lambda2 > 0 && options.mismatches) {
+    const bool with_fit = std::find(options.methods.begin(), options.methods.end(), Method::fit) != options.methods.end();
+    const std::optional<FitModel> fit_model = with_fit ? std::optional<FitModel>(build_fit_model(c.sensor)) : std::nullopt;
+    evaluation.mismatches =
+        evaluate_mismatches(c, evaluation.mismatch_lambda2, options, fit_model ? &*fit_model : nullptr, progress);
+  }
+  return evaluation;
+}
+
+std::vector<std::string> write_sweep_plots(const EvalCase& c, const SheetEvaluation& evaluation, const std::string& dir) {
+  std::vector<PlotSeries> errors, l_curves;
+  for (std::size_t i = 0; i < evaluation.methods.size(); ++i) {
+    const MethodEvaluation& m = evaluation.methods[i];
+    if (m.sweep.empty()) continue;  // a method without λ (fit)
+    PlotSeries error{method_name(m.method), {}, {}, series_colour(static_cast<int>(i)), true, {}};
+    PlotSeries l{method_name(m.method), {}, {}, series_colour(static_cast<int>(i)), true, {}};
+    for (const SweepPoint& p : m.sweep) {
+      error.x.push_back(p.lambda2);
+      error.y.push_back(p.image_centroid.mean);
+      l.x.push_back(p.l_curve.residual_norm_V);
+      l.y.push_back(p.l_curve.solution_norm_V);
+      const double decade = std::log10(p.lambda2);
+      char label[24] = "";
+      if (std::abs(decade - std::round(decade)) < 1e-9 && static_cast<long>(std::round(decade)) % 2 == 0)
+        std::snprintf(label, sizeof label, "1e%ld", static_cast<long>(std::round(decade)));
+      l.point_labels.push_back(label);
+    }
+    errors.push_back(error);
+    l_curves.push_back(l);
+  }
+  if (errors.empty()) return {};  // no method with a λ (fit alone): nothing to plot
+  std::filesystem::create_directories(dir);
+  const std::string stem = dir + "/" + file_stem(c.name);
+  PlotOptions options;
+  options.title = c.name + ": positional error versus λ²";
+  options.x_label = "λ²";
+  options.y_label = "mean error (mm)";
+  options.log_x = true;
+  write_png(render_line_plot(errors, options), stem + "_error_vs_lambda.png");
+  options.title = c.name + ": L-curve (labels: λ²)";
+  options.x_label = "misfit |J·δφ - δV| (V)";
+  options.y_label = "image norm |δφ| (V)";
+  options.log_x = options.log_y = true;
+  write_png(render_line_plot(l_curves, options), stem + "_l_curve.png");
+  return {stem + "_error_vs_lambda.png", stem + "_l_curve.png"};
+}
+
+}  // namespace emit

@@ -1,0 +1,398 @@
+#include "emit/frame/contact_fitter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <ceres/ceres.h>
+
+#include "emit/core/errors.hpp"
+#include "emit/sensor/adc.hpp"
+
+namespace emit {
+
+void FitOptions::validate() const {
+  if (max_contacts < 1) throw InvalidInput("fit: max_contacts must be at least 1");
+  if (!(edge_mm >= 0)) throw InvalidInput("fit: edge_mm must not be negative");
+  if (!(prior_radius_mm >= 0)) throw InvalidInput("fit: prior_radius_mm must not be negative");
+}
+
+namespace {
+
+constexpr int disc_parameters = 4;  // x [mm], y [mm], log r [log mm], log g [log S/mm²]
+
+std::array<double, disc_parameters> to_parameters(const Disc& d) {
+  return {d.x_mm, d.y_mm, std::log(d.radius_mm), std::log(d.conductance_S_per_mm2)};
+}
+
+Disc to_disc(const double* p) { return {p[0], p[1], std::exp(p[2]), std::exp(p[3])}; }
+
+}  // namespace
+
+/// Ceres's view of the fit: residuals (predicted − measured)/σ for all discs at once, with the
+/// analytic Jacobian (disc_contact.hpp's ∂C/∂(x, y, r), ∂C/∂log g = C, frame_predictor.hpp's
+/// derivative).
+class FrameMisfit : public ceres::CostFunction {
+ public:
+  FrameMisfit(ContactFitter& fitter, const Vector& dV, int discs) : fitter_(fitter), dV_(dV), discs_(discs) {
+    for (int i = 0; i < discs; ++i) mutable_parameter_block_sizes()->push_back(disc_parameters);
+    set_num_residuals(fitter.measurements_.size());
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    ContactFitter& f = fitter_;
+    f.load_.clear();
+    ranges_.clear();
+    for (int i = 0; i < discs_; ++i) {
+      const std::size_t begin = f.load_.triangles.size();
+      f.integrator_.integrate(to_disc(parameters[i]), f.load_, jacobians != nullptr);
+      ranges_.emplace_back(begin, f.load_.triangles.size());
+    }
+    f.predictor_.predict(f.load_.triangles, f.load_.local_S, f.sensor_.drive_voltage_V, f.frame_);
+    const MeasurementSet& m = f.measurements_;
+    bool finite = true;
+    for (int r = 0; r < m.size(); ++r) {
+      residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / f.noise_V_;
+      finite = finite && std::isfinite(residuals[r]);
+    }
+    if (!finite) return false;  // a step too far: Ceres shrinks it
+    if (!jacobians) return true;
+    for (int i = 0; i < discs_; ++i) {
+      if (!jacobians[i]) continue;
+      for (int j = 0; j < disc_parameters; ++j) {
+        if (j == 2) {  // the radius is held: Ceres ignores the column, so spare its solve
+          for (int r = 0; r < m.size(); ++r) jacobians[i][r * disc_parameters + j] = 0;
+          continue;
+        }
+        direction_.assign(f.load_.triangles.size(), Eigen::Matrix3d::Zero());
+        for (std::size_t t = ranges_[i].first; t < ranges_[i].second; ++t)
+          direction_[t] = j == 3 ? f.load_.local_S[t] : f.load_.d_local_S[t][j];
+        f.predictor_.derivative(f.load_.triangles, direction_, d_frame_);
+        for (int r = 0; r < m.size(); ++r)
+          jacobians[i][r * disc_parameters + j] = d_frame_.data()[m.frame_index[r]] / f.noise_V_;
+      }
+    }
+    return true;
+  }
+
+ private:
+  ContactFitter& fitter_;
+  const Vector& dV_;
+  int discs_;
+  mutable std::vector<std::pair<std::size_t, std::size_t>> ranges_;
+  mutable std::vector<Eigen::Matrix3d> direction_;
+  mutable Frame d_frame_;
+};
+
+FitOptions resolved_fit_options(FitOptions o, const Sensor& sensor, const Mesh& mesh) {
+  o.validate();
+  if (o.edge_mm == 0) o.edge_mm = sensor.mesh.element_size_mm / 4;
+  if (o.prior_radius_mm == 0) o.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
+  const Vector2 extent = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff() - mesh.nodes_mm.leftCols<2>().colwise().minCoeff();
+  if (extent.minCoeff() <= 2 * sensor.mesh.element_size_mm) throw InvalidInput("fit: the sheet is too small for its mesh");
+  return o;
+}
+
+ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+                             const MeasurementSet& measurements, FitOptions options)
+    : sensor_(sensor),
+      mesh_(mesh),
+      measurements_(measurements),
+      options_(resolved_fit_options(options, sensor, mesh)),
+      integrator_(mesh, options_.edge_mm),
+      predictor_(mesh, green),
+      noise_V_(reading_noise_V(sensor.adc)),
+      lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
+      upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {
+  build_atoms();
+}
+
+/// The frames of a disc at the contact law's conductance at 0.1 N/mm² on a grid over the sheet
+/// (in units of σ), and their Gram matrix. While the contact's resistance dwarfs the sheet's, each
+/// contact draws a current of its own: a frame with several is close to a positive sum of atoms.
+void ContactFitter::build_atoms() {
+  const double spacing = 1.5 * options_.prior_radius_mm;  // finer than the plausible separation
+  const double g = sensor_.contact.conductance_S_per_mm2(0.1);
+  std::vector<Vector> columns;
+  for (double y = lower_mm_.y() + spacing / 2; y < upper_mm_.y(); y += spacing)
+    for (double x = lower_mm_.x() + spacing / 2; x < upper_mm_.x(); x += spacing) {
+      const Disc d{x, y, options_.prior_radius_mm, g};
+      if (!mesh_.contains_xy(Vector2(x, y))) continue;
+      Vector column;
+      misfit({d}, Vector::Zero(measurements_.size()), column);
+      columns.push_back(column / noise_V_);
+      atom_discs_.push_back(d);
+    }
+  atoms_.resize(measurements_.size(), static_cast<Index>(columns.size()));
+  for (std::size_t a = 0; a < columns.size(); ++a) atoms_.col(static_cast<Index>(a)) = columns[a];
+  atom_gram_ = atoms_.transpose() * atoms_;
+}
+
+/// The pair of atoms, at least the plausible separation apart, whose positive combination best
+/// explains `target` (σ units): a global search for the starts of a two-contact fit, where
+/// seeds from linear images mislead (their peaks sit by the electrodes, and one disc fitted to two
+/// presses settles between them). \return false if no pair has two positive weights.
+bool ContactFitter::best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const {
+  const Vector b = atoms_.transpose() * target;
+  const double min_separation = plausible_separation_mm();
+  double best = 0;
+  for (Index i = 0; i < b.size(); ++i)
+    for (Index j = i + 1; j < b.size(); ++j) {
+      const Disc &p = atom_discs_[static_cast<std::size_t>(i)], &q = atom_discs_[static_cast<std::size_t>(j)];
+      if (std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) < min_separation) continue;
+      // The 2×2 normal equations; the explained sum of squares is wᵀb.
+      const double gii = atom_gram_(i, i), gjj = atom_gram_(j, j), gij = atom_gram_(i, j);
+      const double det = gii * gjj - gij * gij;
+      if (!(det > 1e-12 * gii * gjj)) continue;
+      const double wi = (gjj * b[i] - gij * b[j]) / det, wj = (gii * b[j] - gij * b[i]) / det;
+      if (wi <= 0 || wj <= 0 || wi * b[i] + wj * b[j] <= best) continue;
+      best = wi * b[i] + wj * b[j];
+      // In the current-source regime a disc's frame scales with its conductance.
+      pair = {Disc{p.x_mm, p.y_mm, p.radius_mm, p.conductance_S_per_mm2 * wi},
+              Disc{q.x_mm, q.y_mm, q.radius_mm, q.conductance_S_per_mm2 * wj}};
+    }
+  return best > 0;
+}
+
+Frame ContactFitter::predict(const std::vector<Disc>& discs) {
+  load_.clear();
+  for (const Disc& d : discs) integrator_.integrate(d, load_);
+  predictor_.predict(load_.triangles, load_.local_S, sensor_.drive_voltage_V, frame_);
+  return frame_;
+}
+
+void ContactFitter::misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out) {
+  predict(discs);
+  out.resize(measurements_.size());
+  for (int i = 0; i < measurements_.size(); ++i) out[i] = frame_.data()[measurements_.frame_index[i]] - dV[i];
+}
+
+Disc ContactFitter::clamp_seed(Disc seed) const {
+  seed.x_mm = std::clamp(seed.x_mm, lower_mm_.x(), upper_mm_.x());
+  seed.y_mm = std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
+  seed.radius_mm = options_.prior_radius_mm;
+  const double g = sensor_.contact.conductance_S_per_mm2(0.1);
+  seed.conductance_S_per_mm2 =
+      seed.conductance_S_per_mm2 > 0 ? std::clamp(seed.conductance_S_per_mm2, g * std::exp(-13), g * std::exp(13)) : g;
+  return seed;
+}
+
+
+/// A set of discs is presses only if every disc is on the sheet (one pushed off it is the
+/// optimiser using it as a fudge) and none is beside another: two small discs side by side are
+/// one large press, modelled by two (the held radius is smaller than most presses).
+bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < plausible_separation_mm()) return false;
+  }
+  return true;
+}
+
+/// The misfit is the noise's (within a bound on χ²), or what it has beyond the noise is the
+/// model's error: a small fraction of the frame's energy, as a press's shape departs from a held
+/// disc in proportion to its frame. A missed press leaves a larger fraction (FitOptions).
+bool ContactFitter::explained(double misfit_sq, const Vector& dV) const {
+  const double noise_sq = noise_V_ * noise_V_ * measurements_.size();
+  if (misfit_sq <= noise_chi2_per_measurement * noise_sq) return true;
+  const double fraction = model_error_rms_fraction;
+  return misfit_sq - noise_sq <= fraction * fraction * dV.squaredNorm();
+}
+
+/// 1σ of each parameter from the Gauss–Newton covariance (JᵀJ)⁻¹ at the solution (residuals are
+/// in units of σ), scaled up by the misfit per degree of freedom where the model misfits more than
+/// the noise. Computed here from the analytic Jacobian rather than by ceres::Covariance, whose
+/// Eigen temporaries cross the library boundary (and an ASan build's allocator with them).
+void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2) {
+  const int k = static_cast<int>(parameters.size()), M = measurements_.size();
+  const FrameMisfit cost(*this, dV, k);
+  Vector residuals(M);
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, disc_parameters, Eigen::RowMajor>> blocks(k, decltype(blocks)::value_type(M, disc_parameters));
+  std::vector<const double*> values;
+  std::vector<double*> jacobians;
+  for (int i = 0; i < k; ++i) values.push_back(parameters[i].data()), jacobians.push_back(blocks[i].data());
+  if (!cost.Evaluate(values.data(), residuals.data(), jacobians.data())) return;
+  std::vector<int> free;  // the radius is held
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < disc_parameters; ++j)
+      if (j != 2) free.push_back(disc_parameters * i + j);
+  Matrix J(M, static_cast<Index>(free.size()));
+  for (std::size_t c = 0; c < free.size(); ++c) J.col(static_cast<Index>(c)) = blocks[free[c] / disc_parameters].col(free[c] % disc_parameters);
+  const Matrix covariance = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse();
+  const double scale = std::max(1.0, chi2 / std::max<double>(1, M - static_cast<double>(free.size())));
+  for (std::size_t c = 0; c < free.size(); ++c)
+    covariance_std_[static_cast<std::size_t>(free[c])] = std::sqrt(std::max(0.0, covariance(static_cast<Index>(c), static_cast<Index>(c)) * scale));
+}
+
+/// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
+double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
+  const int k = static_cast<int>(discs.size());
+  std::vector<std::array<double, disc_parameters>> parameters;
+  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
+  ceres::Problem problem;
+  std::vector<double*> blocks;
+  for (auto& p : parameters) blocks.push_back(p.data());
+  problem.AddResidualBlock(new FrameMisfit(*this, dV, k), nullptr, blocks);
+  for (double* p : blocks) {
+    problem.SetParameterLowerBound(p, 0, lower_mm_.x());
+    problem.SetParameterUpperBound(p, 0, upper_mm_.x());
+    problem.SetParameterLowerBound(p, 1, lower_mm_.y());
+    problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+    // g within six decades of the contact law's at 0.1 N/mm²: keeps exp(log g) finite.
+    const double log_g = std::log(sensor_.contact.conductance_S_per_mm2(0.1));
+    problem.SetParameterLowerBound(p, 3, log_g - 14);
+    problem.SetParameterUpperBound(p, 3, log_g + 14);
+    problem.SetManifold(p, new ceres::SubsetManifold(disc_parameters, {2}));  // the radius is held
+  }
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = max_iterations;
+  solver.logging_type = ceres::SILENT;
+  solver.function_tolerance = 1e-10;
+  solver.parameter_tolerance = 1e-10;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  result_.evaluations += summary.num_residual_evaluations;
+
+  for (int i = 0; i < k; ++i) discs[i] = to_disc(parameters[i].data());
+  return 2 * summary.final_cost * noise_V_ * noise_V_;
+}
+
+/// Two starts for one more contact at `seed`: the fitted discs as they are plus the seed, and a
+/// split one, the disc nearest the seed mirrored away from it. A single disc fitted to two presses
+/// settles between them, nearer the stronger; kept there, it leads Levenberg–Marquardt into a
+/// local minimum (a strong disc between the presses, a weak one beyond), and a seed at either press
+/// sits beside it. Mirrored, the pair starts near both presses.
+void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const {
+  const Disc added = clamp_seed(seed);
+  starts.push_back(discs);
+  starts.back().push_back(added);
+  const auto distance = [&](const Disc& d) { return std::hypot(d.x_mm - added.x_mm, d.y_mm - added.y_mm); };
+  const auto nearest = std::min_element(discs.begin(), discs.end(), [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
+  // Mirrored less than the plausible separation apart, the pair would be one press anyway.
+  if (2 * distance(*nearest) < plausible_separation_mm()) return;
+  std::vector<Disc> split = starts.back();
+  Disc& moved = split[static_cast<std::size_t>(nearest - discs.begin())];
+  moved = clamp_seed({2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
+  starts.push_back(std::move(split));
+}
+
+/// Levenberg–Marquardt from each start. \return whether one gave a plausible fit; `best` and
+/// `best_sq` then hold the lowest misfit's.
+bool ContactFitter::fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best,
+                                   double& best_sq) {
+  bool found = false;
+  for (std::vector<Disc>& start : starts) {
+    if (!plausible_set(start)) continue;  // a seed beside a contact: not worth a fit
+    const double sq = fit_discs(dV, start);
+    if (plausible_set(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
+  }
+  return found;
+}
+
+/// The result of a fit ending at `discs`: uncertainties, pressures, strongest first.
+void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq) {
+  std::vector<std::array<double, disc_parameters>> parameters;
+  for (const Disc& d : discs) parameters.push_back(to_parameters(d));
+  covariance_std_.assign(static_cast<std::size_t>(disc_parameters * discs.size()), 0.0);
+  parameter_std(dV, parameters, misfit_sq / (noise_V_ * noise_V_));
+  result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    const double* s = covariance_std_.data() + disc_parameters * i;
+    // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
+    const double pressure = sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
+    result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3], pressure,
+                                pressure * s[3] / std::abs(sensor_.contact.gamma)});
+  }
+  std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
+    return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >
+           b.disc.conductance_S_per_mm2 * b.disc.radius_mm * b.disc.radius_mm;
+  });
+}
+
+/// Tracking several contacts follows fingers that moved less than the separation that tells two
+/// presses apart (a sliding finger moves ~0.5 mm a frame). A disc of a set that went further was
+/// pulled to another press, or into a local minimum between presses that still explains the frame
+/// about as well (two discs 3–5 mm off two strong presses on the 60 mm sheet: χ²/M 3.2, the right
+/// pair's ~3); the cold fit, with its global search for the pair, decides there. One disc has no
+/// such minima: wherever it went, if it explains the frame the cold fit would agree.
+bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
+  if (discs.size() < 2) return false;
+  for (std::size_t i = 0; i < discs.size(); ++i)
+    if (std::hypot(discs[i].x_mm - previous[i].x_mm, discs[i].y_mm - previous[i].y_mm) > plausible_separation_mm()) return true;
+  return false;
+}
+
+const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>& previous) {
+  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  result_ = {};
+  if (previous.empty()) return result_;
+  std::vector<Disc> discs = previous;
+  const double misfit_sq = fit_discs(dV, discs);
+  if (!explained(misfit_sq, dV) || !plausible_set(discs) || jumped(previous, discs)) return result_;
+  // A lifted finger: its disc fades to nothing the readings can see.
+  for (const Disc& d : discs) {
+    zeros_.setZero(measurements_.size());
+    misfit({d}, zeros_, residual_);
+    if (residual_.cwiseAbs().maxCoeff() < 5 * noise_V_) return result_;
+  }
+  result_.tracked = true;
+  finish(dV, discs, misfit_sq);
+  return result_;
+}
+
+const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& seeds,
+                                    const std::function<bool(const Vector&, Disc&)>& residual_peak) {
+  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  result_ = {};
+  // No contact at all already explains the frame (the rule every further contact answers to):
+  // the linear image of noise always has a peak to seed from, and a faint disc at the border
+  // would "explain" it.
+  if (explained(dV.squaredNorm(), dV)) {
+    result_.rms_misfit_V = std::sqrt(dV.squaredNorm() / static_cast<double>(measurements_.size()));
+    return result_;
+  }
+  if (seeds.empty()) return result_;
+  std::vector<Disc> discs{clamp_seed(seeds[0])};
+  double misfit_sq = fit_discs(dV, discs);
+  std::size_t next_seed = 1;
+  Vector residual;
+  // Look for another contact only while the misfit is clearly above the readings' noise and
+  // the model's error (explained()).
+  // The starts for one more contact. First the fit's own proposals: for a second contact the
+  // best pair of atoms (a fresh start of both), and where the linear image of what the fit leaves
+  // unexplained peaks. Then the caller's remaining seeds, one at a time.
+  bool fresh = true;
+  std::vector<std::vector<Disc>> starts;
+  const auto next_starts = [&] {
+    starts.clear();
+    if (fresh) {
+      fresh = false;
+      std::array<Disc, 2> pair;
+      if (discs.size() == 1 && best_atom_pair(dV / noise_V_, pair)) starts.push_back({clamp_seed(pair[0]), clamp_seed(pair[1])});
+      Disc seed;
+      this->misfit(discs, dV, residual);
+      if (residual_peak && residual_peak(residual, seed)) add_starts(discs, seed, starts);
+    } else if (next_seed < seeds.size()) {
+      add_starts(discs, seeds[next_seed++], starts);
+    }
+    return !starts.empty();
+  };
+  int failed = 0;  // each try costs a fit or few: give up after a few
+  while (static_cast<int>(discs.size()) < options_.max_contacts && !explained(misfit_sq, dV) && failed < 3 && next_starts()) {
+    std::vector<Disc> more;
+    double more_sq = 0;
+    if (fit_best_start(dV, starts, more, more_sq) && more_sq <= (1 - new_contact_gain) * misfit_sq) {
+      discs = std::move(more);
+      misfit_sq = more_sq;
+      fresh = true;
+    } else {
+      ++failed;
+    }
+  }
+  finish(dV, discs, misfit_sq);
+  return result_;
+}
+
+}  // namespace emit

@@ -1,0 +1,214 @@
+#include "emit/frame/contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+
+namespace {
+
+/// One triangle's edge with its nodes sorted, so the triangles sharing an edge sort next to each other.
+struct Edge {
+  int low, high, triangle;
+  bool same_nodes(const Edge& other) const { return low == other.low && high == other.high; }
+  bool operator<(const Edge& other) const {
+    return std::tie(low, high, triangle) < std::tie(other.low, other.high, other.triangle);
+  }
+};
+
+std::vector<Edge> sorted_edges(const Mesh& mesh) {
+  std::vector<Edge> edges;
+  edges.reserve(3 * static_cast<std::size_t>(mesh.triangle_count()));
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.triangles(t, k), b = mesh.triangles(t, (k + 1) % 3);
+      edges.push_back({std::min(a, b), std::max(a, b), static_cast<int>(t)});
+    }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+/// Calls link(s, t) once for every pair of distinct triangles sharing an edge. A run of equal edges
+/// holds 1 (border) or 2 (interior) triangles on a manifold mesh; on a non-manifold one every pair
+/// in the run is linked, and a degenerate triangle is never linked to itself.
+template <class Link>
+void for_each_shared_edge(const std::vector<Edge>& edges, Link link) {
+  for (std::size_t begin = 0, end = 0; begin < edges.size(); begin = end) {
+    end = begin + 1;
+    while (end < edges.size() && edges[end].same_nodes(edges[begin])) ++end;
+    for (std::size_t i = begin; i < end; ++i)
+      for (std::size_t j = i + 1; j < end; ++j)
+        if (edges[i].triangle != edges[j].triangle) link(edges[i].triangle, edges[j].triangle);
+  }
+}
+
+/// Edge adjacency as CSR: the neighbours of t are neighbours[offsets[t] .. offsets[t + 1]).
+void build_adjacency(const Mesh& mesh, std::vector<int>& offsets, std::vector<int>& neighbours) {
+  const std::vector<Edge> edges = sorted_edges(mesh);
+  offsets.assign(static_cast<std::size_t>(mesh.triangle_count()) + 1, 0);
+  for_each_shared_edge(edges, [&](int s, int t) {
+    ++offsets[s + 1];
+    ++offsets[t + 1];
+  });
+  for (std::size_t t = 1; t < offsets.size(); ++t) offsets[t] += offsets[t - 1];
+  neighbours.resize(static_cast<std::size_t>(offsets.back()));
+  std::vector<int> next(offsets.begin(), offsets.end() - 1);  // fill cursor per triangle
+  for_each_shared_edge(edges, [&](int s, int t) {
+    neighbours[next[s]++] = t;
+    neighbours[next[t]++] = s;
+  });
+}
+
+/// Running sums over one contact's elements.
+class Accumulator {
+ public:
+  void add(double area, double pressure, double weight, const Vector2& centroid) {
+    area_ += area;
+    force_ += pressure * area;
+    peak_ = std::max(peak_, pressure);
+    weight_area_ += weight * area;
+    weighted_centroid_sum_ += weight * area * centroid;
+    area_centroid_sum_ += area * centroid;
+    centroid_sum_ += centroid;
+    ++count_;
+  }
+
+  Contact contact() const {
+    Contact c;
+    const Vector2 centroid = this->centroid();
+    c.x_mm = centroid.x();
+    c.y_mm = centroid.y();
+    c.area_mm2 = area_;
+    c.force_N = force_;
+    c.pressure_N_per_mm2 = area_ > 0 ? force_ / area_ : 0.0;
+    c.peak_pressure_N_per_mm2 = peak_;
+    c.element_count = count_;
+    return c;
+  }
+
+ private:
+  /// Weighted as documented; falling back to the area-weighted centroid when the weights are all
+  /// 0, and to the plain mean only for degenerate (zero-area) elements, so it is never 0/0.
+  Vector2 centroid() const {
+    if (weight_area_ > 0) return weighted_centroid_sum_ / weight_area_;
+    if (area_ > 0) return area_centroid_sum_ / area_;
+    return centroid_sum_ / count_;
+  }
+
+  double area_ = 0, force_ = 0, peak_ = -std::numeric_limits<double>::infinity(), weight_area_ = 0;
+  Vector2 weighted_centroid_sum_ = Vector2::Zero(), area_centroid_sum_ = Vector2::Zero(),
+          centroid_sum_ = Vector2::Zero();
+  int count_ = 0;
+};
+
+/// One frame's flood fill: views of ContactFinder's precomputed data and scratch, and of find()'s
+/// inputs, so the fill is a free function and the header keeps its private members only.
+struct FloodFill {
+  const int* offsets;
+  const int* neighbours;
+  const double* areas_mm2;
+  const Vector2* centroids_mm;
+  const double* pressure;
+  const double* weight;
+  std::uint8_t* pending;  ///< selected and not yet in a contact
+  int* stack;
+
+  /// The contact grown from a pending seed. An element stops pending when pushed, so each is
+  /// pushed once and the stack never holds more than #F. Raw pointers held by value: a store
+  /// through a byte pointer may alias anything, so pointers behind references would be reloaded
+  /// after every store (measured 10 % slower).
+  Contact grow(int seed) const {
+    Accumulator sum;
+    std::size_t top = 0;
+    pending[seed] = 0;
+    stack[top++] = seed;
+    while (top > 0) {
+      const int t = stack[--top];
+      sum.add(areas_mm2[t], pressure[t], weight[t], centroids_mm[t]);
+      for (int k = offsets[t]; k < offsets[t + 1]; ++k) {
+        const int n = neighbours[k];
+        if (pending[n]) {
+          pending[n] = 0;
+          stack[top++] = n;
+        }
+      }
+    }
+    return sum.contact();
+  }
+};
+
+/// Throws on a size mismatch; builds its message only when throwing, so it never allocates otherwise.
+void check_size(const char* what, Index size, Index element_count) {
+  if (size != element_count)
+    throw InvalidInput(std::string("contacts: ") + what + " has " + std::to_string(size) +
+                       " entries, expected one per mesh element (" + std::to_string(element_count) + ")");
+}
+
+/// Sort key: NaN forces (from a NaN pressure) go last, so the comparison stays a strict weak
+/// ordering, which std::sort needs to stay in bounds.
+double force_key(const Contact& c) {
+  return std::isnan(c.force_N) ? -std::numeric_limits<double>::infinity() : c.force_N;
+}
+
+}  // namespace
+
+ContactFinder::ContactFinder(const Mesh& mesh) {
+  build_adjacency(mesh, neighbour_offsets_, neighbours_);
+  const auto count = static_cast<std::size_t>(mesh.triangle_count());
+  areas_mm2_.resize(count);
+  centroids_mm_.resize(count);
+  for (std::size_t t = 0; t < count; ++t) {
+    areas_mm2_[t] = mesh.triangle_area_mm2(static_cast<Index>(t));
+    centroids_mm_[t] = mesh.triangle_centroid_mm(static_cast<Index>(t)).head<2>();
+  }
+  // Worst cases, so find() never grows a vector: every element on the stack, every element its own contact.
+  pending_.resize(count);
+  stack_.resize(count);
+  contacts_.reserve(count);
+}
+
+const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
+                                                const Vector& weight, double min_area_mm2) {
+  check_size("the selection", static_cast<Index>(selected.size()), element_count());
+  check_size("the pressure", pressure.size(), element_count());
+  check_size("the weight", weight.size(), element_count());
+  const FloodFill fill{neighbour_offsets_.data(), neighbours_.data(), areas_mm2_.data(), centroids_mm_.data(),
+                       pressure.data(),           weight.data(),     pending_.data(),   stack_.data()};
+  std::copy(selected.begin(), selected.end(), pending_.begin());
+  contacts_.clear();
+  for (int seed = 0; seed < static_cast<int>(pending_.size()); ++seed) {
+    if (!pending_[seed]) continue;
+    const Contact contact = fill.grow(seed);
+    if (contact.area_mm2 >= min_area_mm2) contacts_.push_back(contact);  // within the reserved capacity
+  }
+  // std::sort works in place (unlike std::stable_sort, which may take a buffer).
+  std::sort(contacts_.begin(), contacts_.end(),
+            [](const Contact& a, const Contact& b) { return force_key(a) > force_key(b); });
+  return contacts_;
+}
+
+const std::vector<Vector2>& ContactFinder::peaks(const Vector& image, double min_value, double min_separation_mm) {
+  peak_elements_.clear();
+  for (int t = 0; t < static_cast<int>(centroids_mm_.size()); ++t) {
+    if (!(image[t] >= min_value)) continue;
+    bool highest = true;
+    for (int k = neighbour_offsets_[t]; k < neighbour_offsets_[t + 1] && highest; ++k)
+      highest = image[neighbours_[k]] <= image[t];
+    if (highest) peak_elements_.push_back(t);
+  }
+  std::sort(peak_elements_.begin(), peak_elements_.end(), [&](int a, int b) { return image[a] > image[b]; });
+  peaks_.clear();
+  for (int t : peak_elements_) {
+    bool apart = true;
+    for (const Vector2& p : peaks_) apart = apart && (p - centroids_mm_[t]).norm() >= min_separation_mm;
+    if (apart) peaks_.push_back(centroids_mm_[t]);
+  }
+  return peaks_;
+}
+
+}  // namespace emit

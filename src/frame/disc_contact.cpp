@@ -1,0 +1,157 @@
+#include "emit/frame/disc_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+
+void DiscLoad::clear() {
+  triangles.clear();
+  local_S.clear();
+  d_local_S.clear();
+}
+
+namespace {
+
+/// ∫ φ_i φ_j over a sub-triangle whose corners have barycentric coordinates B (rows) in its
+/// parent, per unit parent area: with μ the piece's own coordinates, ∫ μ_k μ_l = a (1 + δ_kl) / 12.
+Eigen::Matrix3d piece_integral(const Eigen::Matrix3d& B, double area_fraction) {
+  Eigen::Matrix3d mu = Eigen::Matrix3d::Constant(1.0 / 12);
+  mu.diagonal().setConstant(2.0 / 12);
+  return area_fraction * B.transpose() * mu * B;
+}
+
+/// Splits the reference triangle into 4^levels similar pieces (corner midpoints), depth first.
+void split(const Eigen::Matrix3d& B, int levels, double area_fraction, std::vector<Eigen::Matrix3d>& out) {
+  if (levels == 0) {
+    out.push_back(B);
+    return;
+  }
+  const Eigen::RowVector3d m01 = (B.row(0) + B.row(1)) / 2, m12 = (B.row(1) + B.row(2)) / 2,
+                           m20 = (B.row(2) + B.row(0)) / 2;
+  Eigen::Matrix3d child;
+  child << B.row(0), m01, m20;
+  split(child, levels - 1, area_fraction / 4, out);
+  child << m01, B.row(1), m12;
+  split(child, levels - 1, area_fraction / 4, out);
+  child << m20, m12, B.row(2);
+  split(child, levels - 1, area_fraction / 4, out);
+  child << m01, m12, m20;
+  split(child, levels - 1, area_fraction / 4, out);
+}
+
+/// C¹ smoothstep of ξ = (r − d) / edge over [−1, 1], and its derivative in ξ.
+void smoothstep(double xi, double& s, double& ds_dxi) {
+  if (xi >= 1) {
+    s = 1, ds_dxi = 0;
+  } else if (xi <= -1) {
+    s = 0, ds_dxi = 0;
+  } else {
+    const double t = (xi + 1) / 2;
+    s = t * t * (3 - 2 * t);
+    ds_dxi = 3 * t * (1 - t);
+  }
+}
+
+Eigen::Matrix3d uniform_integral() {
+  Eigen::Matrix3d m = Eigen::Matrix3d::Constant(1.0 / 12);
+  m.diagonal().setConstant(2.0 / 12);
+  return m;
+}
+
+}  // namespace
+
+DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels)
+    : mesh_(&mesh), edge_mm_(edge_mm) {
+  if (!(edge_mm > 0)) throw InvalidInput("disc contact: the rim's smoothing width must be positive");
+  if (levels < 0 || levels > 5) throw InvalidInput("disc contact: quadrature levels must be 0 to 5");
+  std::vector<Eigen::Matrix3d> corners;
+  split(Eigen::Matrix3d::Identity(), levels, 1.0, corners);
+  for (const Eigen::Matrix3d& B : corners)
+    pieces_.push_back({B.colwise().mean().transpose(), piece_integral(B, std::pow(0.25, levels))});
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    const Vector2 c = mesh.triangle_centroid_mm(t).head<2>();
+    double reach = 0;
+    for (int k = 0; k < 3; ++k) reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).head<2>().transpose() - c).norm());
+    centroid_mm_.push_back(c);
+    reach_mm_.push_back(reach);
+  }
+  bucket_triangles();
+}
+
+/// Triangles by the cell of a grid their centroid lies in (cells of the largest reach, so a
+/// disc's candidates are the cells its reach-widened square covers): a disc touches tens of the
+/// mesh's thousands of triangles, and integrate() runs several times per fit iteration.
+void DiscContactIntegrator::bucket_triangles() {
+  max_reach_mm_ = *std::max_element(reach_mm_.begin(), reach_mm_.end());
+  cell_mm_ = std::max(max_reach_mm_, 1e-9);
+  origin_mm_ = Vector2(INFINITY, INFINITY);
+  Vector2 top(-INFINITY, -INFINITY);
+  for (const Vector2& c : centroid_mm_) origin_mm_ = origin_mm_.cwiseMin(c), top = top.cwiseMax(c);
+  columns_ = 1 + static_cast<int>((top.x() - origin_mm_.x()) / cell_mm_);
+  rows_ = 1 + static_cast<int>((top.y() - origin_mm_.y()) / cell_mm_);
+  cell_start_.assign(static_cast<std::size_t>(columns_ * rows_ + 1), 0);
+  const auto cell_of = [&](const Vector2& c) {
+    return static_cast<int>((c.y() - origin_mm_.y()) / cell_mm_) * columns_ + static_cast<int>((c.x() - origin_mm_.x()) / cell_mm_);
+  };
+  for (const Vector2& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c) + 1)];
+  for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
+  cell_triangles_.resize(centroid_mm_.size());
+  std::vector<int> filled(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t t = 0; t < centroid_mm_.size(); ++t)
+    cell_triangles_[static_cast<std::size_t>(filled[static_cast<std::size_t>(cell_of(centroid_mm_[t]))]++)] = static_cast<int>(t);
+}
+
+void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool derivatives) const {
+  const Vector2 center(disc.x_mm, disc.y_mm);
+  const double r = disc.radius_mm, h = edge_mm_;
+  const double reach = r + h + max_reach_mm_;  // no centroid farther than this can be touched
+  const auto cell = [&](double v, double origin, int count) {
+    return std::clamp(static_cast<int>(std::floor((v - origin) / cell_mm_)), 0, count - 1);
+  };
+  const int x0 = cell(center.x() - reach, origin_mm_.x(), columns_), x1 = cell(center.x() + reach, origin_mm_.x(), columns_);
+  const int y0 = cell(center.y() - reach, origin_mm_.y(), rows_), y1 = cell(center.y() + reach, origin_mm_.y(), rows_);
+  for (int row = y0; row <= y1; ++row)
+    for (int k = cell_start_[static_cast<std::size_t>(row * columns_ + x0)]; k < cell_start_[static_cast<std::size_t>(row * columns_ + x1 + 1)]; ++k)
+      add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, out, derivatives);
+}
+
+void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLoad& out, bool derivatives) const {
+  const Vector2 center(disc.x_mm, disc.y_mm);
+  const double g = disc.conductance_S_per_mm2, r = disc.radius_mm, h = edge_mm_;
+  const double d = (centroid_mm_[t] - center).norm();
+  if (d - reach_mm_[t] >= r + h) return;  // wholly outside the smoothed rim
+  const auto tri = static_cast<Index>(t);
+  const double area = mesh_->triangle_area_mm2(tri);
+  out.triangles.push_back(tri);
+  if (d + reach_mm_[t] <= r - h) {  // wholly inside: s = 1
+    out.local_S.push_back(g * area * uniform_integral());
+    if (derivatives) out.d_local_S.push_back({Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()});
+    return;
+  }
+  Eigen::Matrix<double, 3, 2> corner;
+  for (int k = 0; k < 3; ++k) corner.row(k) = mesh_->nodes_mm.row(mesh_->triangles(tri, k)).head<2>();
+  Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
+  std::array<Eigen::Matrix3d, 3> d_local{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  for (const Piece& piece : pieces_) {
+    const Vector2 offset = corner.transpose() * piece.centroid_barycentric - center;
+    const double distance = offset.norm();
+    double s, ds_dxi;
+    smoothstep((r - distance) / h, s, ds_dxi);
+    if (s == 0 && ds_dxi == 0) continue;
+    local += s * piece.integral;
+    if (derivatives && ds_dxi != 0) {
+      // ξ = (r − |p − c|)/h: ∂ξ/∂c = (p − c)/(|p − c| h), ∂ξ/∂r = 1/h.
+      const double scale = ds_dxi / h;
+      d_local[0] += scale * offset.x() / distance * piece.integral;
+      d_local[1] += scale * offset.y() / distance * piece.integral;
+      d_local[2] += scale * piece.integral;
+    }
+  }
+  out.local_S.push_back(g * area * local);
+  if (derivatives) out.d_local_S.push_back({g * area * d_local[0], g * area * d_local[1], g * area * d_local[2]});
+}
+
+}  // namespace emit

@@ -1,0 +1,116 @@
+#include "emit/frame/frame_predictor.hpp"
+
+namespace emit {
+
+FramePredictor::FramePredictor(const Mesh& mesh, const DenseGreenFunction& green)
+    : mesh_(mesh), green_(green), patch_of_dof_(green.dofs.dof_count, -1) {}
+
+/// Numbers the dofs the contact touches and assembles C on them.
+void FramePredictor::gather_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S) {
+  for (int dof : patch_dofs_) patch_of_dof_[dof] = -1;
+  patch_dofs_.clear();
+  for (Index t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int dof = green_.dofs.dof_of_node[mesh_.triangles(t, k)];
+      if (patch_of_dof_[dof] < 0) {
+        patch_of_dof_[dof] = static_cast<int>(patch_dofs_.size());
+        patch_dofs_.push_back(dof);
+      }
+    }
+  assemble_on_patch(triangles, local_S, C_);
+}
+
+void FramePredictor::assemble_on_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
+                                       Matrix& out) const {
+  const auto p = static_cast<Index>(patch_dofs_.size());
+  out.setZero(p, p);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        out(patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], a)]],
+            patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], b)]]) += local_S[i](a, b);
+}
+
+void FramePredictor::predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
+                             double E, Frame& frame) {
+  const int N = green_.dofs.electrode_count;  // electrode e is dof e
+  frame.setZero(N, N);
+  if (triangles.empty()) return;
+  gather_patch(triangles, local_S);
+  const auto p = static_cast<Index>(patch_dofs_.size());
+  G_pp_.resize(p, p);
+  G_pe_.resize(p, N);
+  for (Index i = 0; i < p; ++i) {
+    for (Index j = 0; j < p; ++j) G_pp_(i, j) = green_.at(patch_dofs_[i], patch_dofs_[j]);
+    for (int e = 0; e < N; ++e) G_pe_(i, e) = green_.at(patch_dofs_[i], e);
+  }
+  c1_.noalias() = C_.rowwise().sum();  // C·1: the contact's pull per volt of drive
+
+  M_.setIdentity(p, p);
+  M_.noalias() += C_ * G_pp_;
+  lu_.compute(M_);
+  Y_.resize(p, N);  // column 0: unit drive; column l: unit current into electrode l
+  Y_.col(0) = c1_;
+  Y_.rightCols(N - 1).noalias() = C_ * G_pe_.rightCols(N - 1);
+  Y_ = lu_.solve(Y_);
+  Z_p_.noalias() = G_pp_ * Y_;
+  Z_e_.noalias() = G_pe_.transpose() * Y_;
+
+  // Ground 0: the unit-drive field a = G0_·P M⁻¹ C·1, scaled by E.
+  const auto a_p = Z_p_.col(0);
+  const auto a_e = Z_e_.col(0);
+  frame.row(0) = E * a_e.transpose();
+  const double drawn_by_a = c1_.sum() - c1_.dot(a_p);  // current the contact feeds in, unit drive
+  E_ = E, drawn_by_a_ = drawn_by_a;
+  Q_.resize(p, N);
+  Q_.col(0) = Vector::Ones(p) - a_p;
+  Q_.rightCols(N - 1) = G_pe_.rightCols(N - 1) - Z_p_.rightCols(N - 1);  // w_l on the patch
+  W_e_.resize(N, N);
+  regrounding_.resize(N);
+  xI_.resize(N);
+  for (int l = 1; l < N; ++l) {
+    // w_l = (A0 + C)⁻¹ e_l on the electrodes and the patch.
+    W_e_.col(l) = green_.column(l).head(N) - Z_e_.col(l);
+    const auto w_e = W_e_.col(l);
+    const double lost_through_contact = c1_.dot(Q_.col(l));  // −(contact inflow)
+    // Unknowns x = E − c and I (see forward_model.hpp): u(e_l) = c + x a_l + I w_l(l) = 0, and no
+    // net current at electrode 0: x · drawn_by_a + I · (1 − lost_through_contact) = 0.
+    Eigen::Matrix2d A;
+    A << a_e[l] - 1.0, w_e[l], drawn_by_a, 1.0 - lost_through_contact;
+    const Eigen::Vector2d xI = A.partialPivLu().solve(Eigen::Vector2d(-E, 0.0));
+    regrounding_[l] = A, xI_[l] = xI;
+    const double c = E - xI[0];
+    frame.row(l) = (Vector::Constant(N, c) + xI[0] * a_e + xI[1] * w_e).transpose();
+  }
+}
+
+void FramePredictor::derivative(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& d_local_S,
+                                Frame& d_frame) {
+  const int N = green_.dofs.electrode_count;
+  d_frame.setZero(N, N);
+  if (patch_dofs_.empty()) return;
+  assemble_on_patch(triangles, d_local_S, dC_);
+  dc1_.noalias() = dC_.rowwise().sum();
+  dY_.noalias() = dC_ * Q_;
+  dY_ = lu_.solve(dY_);
+  dZ_p_.noalias() = G_pp_ * dY_;
+  dZ_e_.noalias() = G_pe_.transpose() * dY_;
+  const auto a_p = Z_p_.col(0);
+  const auto a_e = Z_e_.col(0);
+  const auto da_e = dZ_e_.col(0);
+  d_frame.row(0) = E_ * da_e.transpose();
+  const double d_drawn = dc1_.sum() - dc1_.dot(a_p) - c1_.dot(dZ_p_.col(0));
+  for (int l = 1; l < N; ++l) {
+    const auto dw_e = -dZ_e_.col(l);  // w_l = G0·l − Z·l
+    const double d_lost = dc1_.dot(Q_.col(l)) - c1_.dot(dZ_p_.col(l));
+    Eigen::Matrix2d dA;
+    dA << da_e[l], dw_e[l], d_drawn, -d_lost;
+    const Eigen::Vector2d d_xI = -regrounding_[l].partialPivLu().solve(dA * xI_[l]);
+    const Eigen::Vector2d& xI = xI_[l];
+    d_frame.row(l) = (Vector::Constant(N, -d_xI[0]) + d_xI[0] * a_e + xI[0] * da_e + d_xI[1] * W_e_.col(l) +
+                      xI[1] * dw_e)
+                         .transpose();
+  }
+}
+
+}  // namespace emit

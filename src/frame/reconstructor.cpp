@@ -1,0 +1,120 @@
+#include "emit/frame/reconstructor.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+
+Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration calibration, FrameOptions options)
+    : model_(model),
+      linear_(calibration),
+      options_(options),
+      finder_(model.mesh),
+      reference_(Vector::Zero(model.measurements.size())),
+      dV_(model.measurements.size()),
+      dphi_(model.mesh.triangle_count()),
+      pressure_(model.mesh.triangle_count()),
+      selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
+      operator_scratch_(model.op.scratch()) {
+  if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
+    throw InvalidInput("threshold must be a fraction between 0 and 1, got " + std::to_string(options.threshold_fraction));
+}
+
+Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, FitCalibration calibration,
+                             FrameOptions options)
+    : Reconstructor(model, model.uncalibrated, options) {
+  fitter_ = &fitter;
+  indenter_radius_mm_ = calibration.indenter_radius_mm;
+}
+
+void Reconstructor::set_reference(const Frame& reference) {
+  const int N = model_.measurements.electrode_count;
+  if (reference.rows() != N || reference.cols() != N)
+    throw InvalidInput("reference frame has " + std::to_string(reference.size()) + " values, expected " +
+                       std::to_string(N * N));
+  if (!reference.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
+  for (int i = 0; i < model_.measurements.size(); ++i) reference_[i] = reference.data()[model_.measurements.frame_index[i]];
+  previous_discs_.clear();  // a new reference starts a new stream
+}
+
+const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
+  const int N = model_.measurements.electrode_count;
+  if (frame.rows() != N || frame.cols() != N)
+    throw InvalidInput("frame has " + std::to_string(frame.size()) + " values, expected " + std::to_string(N * N));
+  for (int i = 0; i < model_.measurements.size(); ++i)
+    dV_[i] = frame.data()[model_.measurements.frame_index[i]] - reference_[i];
+  if (fitter_ && options_.track_contacts && !previous_discs_.empty()) {
+    fitter_result_ = fitter_->track(dV_, previous_discs_);
+    if (fitter_result_.tracked) {
+      dphi_.setZero();
+      return report_fitted();
+    }
+  }
+  model_.op.apply(dV_, dphi_, operator_scratch_);  // paper eq. 7, precomputed
+  const double peak = dphi_.maxCoeff();
+  const double threshold = options_.threshold_fraction * peak;
+  linear_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
+  const std::vector<Contact>& linear = finder_.find(selected_, pressure_, dphi_, options_.min_contact_area_mm2);
+  return fitter_ ? fit_contacts(linear) : linear;
+}
+
+const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contact>& linear) {
+  // Seeds: the thresholded regions' centroids (the paper's estimate, strongest first), then the
+  // image's other peaks above a quarter of its maximum (where the threshold merged two presses
+  // into one region, the image still has two peaks). Raw peaks alone make poor first seeds: the
+  // linear image's maximum often sits by an electrode, far from the press.
+  seeds_.clear();
+  for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  for (const Vector2& p : finder_.peaks(dphi_, 0.25 * dphi_.maxCoeff(), 8.0)) {
+    bool apart = true;
+    for (const Contact& c : linear) apart = apart && std::hypot(p.x() - c.x_mm, p.y() - c.y_mm) >= 8.0;
+    if (apart) seeds_.push_back({p.x(), p.y(), 0, 0});
+  }
+  // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
+  const auto residual_peak = [this](const Vector& misfit, Disc& seed) {
+    model_.op.apply(misfit, residual_image_, operator_scratch_);  // the image of −misfit is its negative
+    Index peak;
+    if (residual_image_.minCoeff(&peak) >= 0) return false;
+    seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};
+    return true;
+  };
+  fitter_result_ = fitter_->fit(dV_, seeds_, residual_peak);
+  return report_fitted();
+}
+
+/// The fit's contacts as the reconstruction reports them, and the picture: each disc at its pressure.
+const std::vector<Contact>& Reconstructor::report_fitted() {
+  fitted_.clear();
+  previous_discs_.clear();
+  pressure_.setZero();  // the picture: each fitted disc at its pressure
+  for (const FittedContact& f : fitter_result_.contacts) {
+    Contact c;
+    c.x_mm = f.disc.x_mm, c.y_mm = f.disc.y_mm;
+    const double radius_mm = indenter_radius_mm_ > 0 ? indenter_radius_mm_ : f.disc.radius_mm;
+    c.area_mm2 = std::numbers::pi * radius_mm * radius_mm;  // see FitCalibration::indenter_radius_mm
+    c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;
+    c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
+    c.x_std_mm = f.x_std_mm, c.y_std_mm = f.y_std_mm;
+    c.pressure_std_N_per_mm2 = f.pressure_std_N_per_mm2;
+    fitted_.push_back(c);
+    previous_discs_.push_back(f.disc);
+    for (Index k = 0; k < pressure_.size(); ++k)
+      if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= radius_mm)
+        pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
+  }
+  return fitted_;
+}
+
+Frame average_frames(const std::vector<Frame>& frames) {
+  if (frames.empty()) throw InvalidInput("no frames to average");
+  Frame mean = Frame::Zero(frames[0].rows(), frames[0].cols());
+  for (const Frame& f : frames) {
+    if (f.rows() != mean.rows() || f.cols() != mean.cols()) throw InvalidInput("frames of different sizes");
+    mean += f;
+  }
+  return mean / static_cast<double>(frames.size());
+}
+
+}  // namespace emit

@@ -1,0 +1,72 @@
+#include "emit/jobs/live_session.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+#include "emit/acquire/recorder.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/io/calibration_json.hpp"
+#include "emit/live/live_server.hpp"
+#include "emit/live/open_source.hpp"
+#include "emit/pipeline/pipeline.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+
+struct LiveSession::Impl {
+  Sensor sensor;
+  std::unique_ptr<FrameSource> source;
+  std::optional<Pipeline> pipeline;
+  std::optional<LiveLoop> loop;
+  std::optional<LiveServer> server;
+  std::optional<Recorder> recorder;
+  std::ofstream contacts_file;
+};
+
+LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  std::optional<Calibration> calibration;
+  if (!job.calibration_path.empty()) {
+    calibration = load_calibration(job.calibration_path);
+    check_calibration_for_method(*calibration, job.method, job.calibration_path);
+  }
+  SourceOptions source_options;
+  source_options.frames_per_s = job.frames_per_s;
+  s.source = open_source(job.source, s.sensor, source_options);
+  s.pipeline.emplace(s.sensor, PipelineOptions{job.method, 0, job.cache_dir, {}}, calibration, progress.stage,
+                     job.calibration_path);
+  LiveOptions live_options;
+  live_options.max_frames = job.frames;
+  live_options.max_seconds = job.seconds;
+  s.loop.emplace(*s.source, *s.pipeline, live_options);
+  if (!job.serve.empty()) {
+    s.server.emplace(job.serve, s.pipeline->model().mesh, s.sensor.name,
+                     [&loop = *s.loop](const std::string& command) { loop.command(command); });
+    s.loop->add_publisher(&*s.server);
+  }
+  if (job.contacts_path == "-") {
+    s.loop->write_contacts_to(&std::cout);
+  } else if (!job.contacts_path.empty()) {
+    s.contacts_file.open(job.contacts_path);
+    if (!s.contacts_file) throw IoError(job.contacts_path + ": cannot write (does the folder exist?)");
+    s.loop->write_contacts_to(&s.contacts_file);
+  }
+  if (!job.record_path.empty()) s.loop->record_to(&s.recorder.emplace(job.record_path, s.sensor));
+}
+
+LiveSession::~LiveSession() = default;
+
+std::string LiveSession::source_description() const { return impl_->source->description(); }
+std::string LiveSession::viewer_url() const { return impl_->server ? impl_->server->url() : ""; }
+bool LiveSession::calibrated() const { return impl_->pipeline->calibrated(); }
+std::uint64_t LiveSession::recorded_frames() const { return impl_->recorder ? impl_->recorder->frames() : 0; }
+
+LiveStats LiveSession::run(const std::atomic<bool>& stop) {
+  const LiveStats stats = impl_->loop->run(stop);
+  if (impl_->recorder) impl_->recorder->close();
+  return stats;
+}
+
+}  // namespace emit

@@ -1,0 +1,26 @@
+#include "emit/jobs/mesh_job.hpp"
+
+#include <chrono>
+
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+
+MeshReport run_mesh_job(const MeshJob& job) {
+  const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  MeshOptions options = job.twin ? twin_mesh_options(sensor, job.seed) : reconstruction_mesh_options(sensor);
+  if (job.element_size_mm > 0) options.element_size_mm = job.element_size_mm;
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh mesh = generate_mesh(sensor, options);
+  MeshReport report;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.sensor_name = sensor.name;
+  report.quality = measure_mesh_quality(mesh);
+  report.electrodes = mesh.electrode_count();
+  write_msh(mesh, job.out_path);
+  return report;
+}
+
+}  // namespace emit

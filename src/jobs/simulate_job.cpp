@@ -1,0 +1,69 @@
+#include "emit/jobs/simulate_job.hpp"
+
+#include <filesystem>
+
+#include "emit/core/errors.hpp"
+#include "emit/io/frames_csv.hpp"
+#include "emit/io/presses_csv.hpp"
+#include "emit/render/field_image.hpp"
+#include "emit/render/image.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+
+namespace {
+
+std::string default_truth_path(const std::string& out_path) {
+  std::filesystem::path p(out_path);
+  return (p.parent_path() / (p.stem().string() + "_presses.csv")).string();
+}
+
+void check_writable_folder(const std::string& path) {
+  const auto folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder))
+    throw IoError(path + ": cannot write: folder " + folder.string() + " does not exist");
+}
+
+void write_potential_images(Twin& twin, const PressSequence& sequence, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  for (std::size_t f = 0; f < sequence.size(); ++f) {
+    std::vector<Circle> outlines;
+    for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
+    FieldImageOptions image;
+    image.title = "frame " + std::to_string(f) + ": probing-layer potential, electrode 0 grounded";
+    write_png(render_field(twin.mesh(), twin.potentials(sequence[f]).col(0), outlines, image),
+              dir + "/frame_" + std::to_string(f) + ".png");
+  }
+}
+
+}  // namespace
+
+SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress) {
+  SimulateReport report;
+  report.sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  Sensor& sensor = report.sensor;
+  if (job.noise_V >= 0) sensor.adc.noise_V = job.noise_V;
+  if (!job.presses.empty() && job.script) throw InvalidInput("give --press or --script, not both");
+  if (job.presses.empty() && !job.script) throw InvalidInput("nothing to simulate: give --press x,y,r,F or --script NAME");
+  report.presses = job.script ? run_script(sensor, *job.script) : PressSequence{job.presses};
+  for (std::size_t f = 0; f < report.presses.size(); ++f)
+    for (std::size_t i = 0; i < report.presses[f].size(); ++i)
+      validate_press(sensor, report.presses[f][i], "frame " + std::to_string(f) + ", press " + std::to_string(i));
+  report.truth_path = job.truth_path.empty() ? default_truth_path(job.out_path) : job.truth_path;
+  check_writable_folder(job.out_path);
+  check_writable_folder(report.truth_path);
+
+  progress.say("meshing the twin of " + sensor.name);
+  Twin twin(sensor, job.twin);
+  report.twin_mesh = measure_mesh_quality(twin.mesh());
+  for (std::size_t f = 0; f < report.presses.size(); ++f) {
+    report.frames.push_back(twin.frame(report.presses[f]));
+    progress.step("simulating frame", static_cast<long>(f + 1), static_cast<long>(report.presses.size()));
+  }
+  write_frames_csv(job.out_path, report.frames);
+  write_presses_csv(report.truth_path, report.presses);
+  if (!job.images_dir.empty()) write_potential_images(twin, report.presses, job.images_dir);
+  return report;
+}
+
+}  // namespace emit

@@ -1,0 +1,51 @@
+#include "emit/pipeline/pipeline.hpp"
+
+#include "emit/core/errors.hpp"
+#include "emit/mesh/mesh_io.hpp"
+
+namespace emit {
+
+namespace {
+
+OperatorOptions linear_options(const PipelineOptions& options) {
+  OperatorOptions linear = operator_options(options.method);
+  if (options.lambda2 > 0) linear.lambda2 = options.lambda2;
+  return linear;
+}
+
+}  // namespace
+
+int electrode_count_of(const Sensor& sensor) {
+  return sensor.shape.kind == ShapeKind::mesh_file ? read_msh(sensor.shape.mesh_path).electrode_count()
+                                                   : sensor.electrode_count();
+}
+
+void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source) {
+  if (is_linear(method) != std::holds_alternative<LinearCalibration>(calibration))
+    throw InvalidInput(source + ": a calibration for " + calibration_kind(calibration) + "; run 'emit calibrate --method " +
+                       method_name(method) + "'");
+}
+
+Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration,
+                   const std::function<void(const std::string&)>& progress, const std::string& calibration_source)
+    : method_(options.method), calibrated_(calibration.has_value()), fit_sensor_(sensor) {
+  if (calibration) check_calibration_for_method(*calibration, method_, calibration_source);
+  model_ = build_reconstruction_model(sensor, linear_options(options), options.cache_dir, options.excluded, progress);
+  linear_ = model_.uncalibrated;
+  if (is_linear(method_)) {
+    if (calibration) linear_ = std::get<LinearCalibration>(*calibration);
+    return;
+  }
+  fit_calibration_ = calibration ? std::get<FitCalibration>(*calibration) : FitCalibration::uncalibrated(sensor);
+  fit_sensor_.contact = fit_calibration_.contact_law;
+  fit_model_ = std::make_unique<FitModel>(build_fit_model(
+      sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr, progress));
+  fitter_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
+}
+
+Reconstructor Pipeline::reconstructor(const FrameOptions& options) {
+  if (fitter_) return Reconstructor(model_, *fitter_, fit_calibration_, options);
+  return Reconstructor(model_, linear_, options);
+}
+
+}  // namespace emit

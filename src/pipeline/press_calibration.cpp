@@ -1,0 +1,91 @@
+#include "emit/pipeline/press_calibration.hpp"
+
+#include <tuple>
+
+#include "emit/calibrate/contact_law_calibration.hpp"
+#include "emit/calibrate/pressure_calibration.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/frame/reconstructor.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/model/reconstruction_model.hpp"
+
+namespace emit {
+
+namespace {
+
+/// Contact fitting's calibration: the sheet (if asked), then the contact law on the corrected sheet.
+PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibrationOptions& options,
+                                         const ReconstructionModel& model, const Frame& reference,
+                                         const std::vector<Frame>& frames, const PressSequence& truth,
+                                         const std::function<void(const std::string&)>& say) {
+  std::vector<Frame> single;
+  std::vector<double> pressures;
+  FitCalibration calibration;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    calibration.indenter_radius_mm += truth[f][0].radius_mm;
+    single.push_back(frames[f]);
+    pressures.push_back(truth[f][0].pressure_N_per_mm2());
+  }
+  if (single.empty()) throw InvalidInput("calibration: no single presses to calibrate on");
+  calibration.indenter_radius_mm /= static_cast<double>(single.size());
+  PressCalibrationResult result;
+  if (say) say("meshing the sheet for contact fitting");
+  FitModel fit_model{fit_mesh(sensor), {}};
+  if (options.fit_sheet) {
+    result.sheet = calibrate_sheet(sensor, fit_model.mesh, model.measurements, frames, reference, truth, say);
+    calibration.sheet_correction = result.sheet->correction;
+    std::tie(result.sheet_factor_low, result.sheet_factor_high) = result.sheet->correction.factor_range(fit_model.mesh);
+  }
+  if (say) say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");
+  fit_model.green =
+      fit_green_function(fit_model.mesh, sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
+  ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
+  FrameOptions frame_options;
+  frame_options.threshold_fraction = options.threshold_fraction;
+  const FittedLawCalibration fitted =
+      calibrate_fitted_contact_law(model, fitter, reference, single, pressures, sensor.contact, frame_options);
+  calibration.contact_law = fitted.law;
+  result.calibration = calibration;
+  result.presses = fitted.presses;
+  result.rms_N_per_mm2 = fitted.rms_N_per_mm2;
+  result.max_abs_N_per_mm2 = fitted.max_abs_N_per_mm2;
+  return result;
+}
+
+}  // namespace
+
+PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressCalibrationOptions& options,
+                                              const Frame& reference, const std::vector<Frame>& frames,
+                                              const PressSequence& truth,
+                                              const std::function<void(const std::string&)>& progress) {
+  if (truth.size() != frames.size())
+    throw InvalidInput("calibration: " + std::to_string(truth.size()) + " frames of presses for " +
+                       std::to_string(frames.size()) + " frames");
+  OperatorOptions operator_options_ = operator_options(options.method);  // fit: the paper's, its seeds
+  if (options.lambda2 > 0) operator_options_.lambda2 = options.lambda2;
+  const ReconstructionModel model = build_reconstruction_model(sensor, operator_options_, options.cache_dir, {}, progress);
+  PressCalibrationResult result;
+  if (!is_linear(options.method)) result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
+  result.lambda2 = operator_options_.lambda2;
+  if (!is_linear(options.method)) return result;
+
+  FrameOptions frame_options;
+  frame_options.threshold_fraction = options.threshold_fraction;
+  Reconstructor reconstructor(model, model.uncalibrated, frame_options);
+  reconstructor.set_reference(reference);
+  std::vector<PressureSample> samples;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    reconstructor.process(frames[f]);
+    samples.push_back(pressure_sample(reconstructor, options.threshold_fraction, truth[f][0].pressure_N_per_mm2()));
+  }
+  const PressureFit fit = fit_pressure_calibration(samples);
+  result.calibration = fit.calibration;
+  result.presses = samples.size();
+  result.rms_N_per_mm2 = fit.rms_N_per_mm2;
+  result.max_abs_N_per_mm2 = fit.max_abs_N_per_mm2;
+  return result;
+}
+
+}  // namespace emit

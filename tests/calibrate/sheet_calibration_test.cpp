@@ -1,0 +1,116 @@
+// Sheet-resistance self-calibration: presses on a twin whose sheet is not the nominal one give
+// back the twin's sheet; presses on the nominal sheet leave it alone.
+#include "emit/calibrate/sheet_calibration.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+#include "emit/eval/evaluation.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/io/calibration_json.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/sensor/adc.hpp"
+#include "emit/twin/press_scripts.hpp"
+#include "emit/twin/twin.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+/// `count` random presses on a twin (its own finer mesh, 12-bit ADC, 1 mV noise) whose sheet
+/// resistance varies linearly along x by ± `variation`.
+SimulatedRun twin_presses(const Sensor& sensor, double variation, int count) {
+  TwinOptions options;
+  options.mesh_seed = 4;
+  options.sheet_resistance_variation = variation;
+  Twin twin(sensor, options);
+  PressStyle style;
+  style.radius_mm = 2.5, style.margin_mm = 3.5, style.min_force_N = 0.5, style.max_force_N = 8, style.seed = 5;
+  return simulate_run(twin, random_script(sensor, count, style), 1);
+}
+
+struct Sheet30 {
+  Sensor sensor = load_sensor(test::source_path("examples/sensors/square30.json"));
+  Mesh mesh = fit_mesh(sensor);
+  MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
+};
+
+SheetCalibration calibrate(const Sheet30& s, const SimulatedRun& run) {
+  return calibrate_sheet(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses);
+}
+
+TEST(SheetCalibration, RecoversTheTwinsResistanceGradient) {
+  const Sheet30 s;
+  const SheetCalibration c = calibrate(s, twin_presses(s.sensor, 0.2, 12));
+  // The twin's conductance factor is 1/(1 + 0.2 u), u = 2x/30 − 1. The quadratic's closest
+  // approximation of its log misses by the cubic term, 0.2³/3 ≈ 0.003; noise and the two meshes'
+  // different discretisations add to that (0.005 measured). 0.01 is a twentieth of the variation.
+  double worst = 0;
+  for (Index t = 0; t < s.mesh.triangle_count(); ++t) {
+    const Vector2 at = s.mesh.triangle_centroid_mm(t).head<2>();
+    const double truth = -std::log(1 + 0.2 * (2 * at.x() / 30 - 1));
+    worst = std::max(worst, std::abs(std::log(c.correction.factor(at)) - truth));
+  }
+  EXPECT_LT(worst, 0.01);
+  // The nominal sheet misfits by tens of noise σ; the corrected one by about the noise.
+  const double noise_V = reading_noise_V(s.sensor.adc);
+  EXPECT_GT(c.rms_misfit_nominal_V, 10 * noise_V);
+  EXPECT_LT(c.rms_misfit_corrected_V, 2 * noise_V);
+}
+
+TEST(SheetCalibration, LeavesANominalSheetAlone) {
+  const Sheet30 s;
+  const SheetCalibration c = calibrate(s, twin_presses(s.sensor, 0.0, 10));
+  const auto [low, high] = c.correction.factor_range(s.mesh);
+  // What is left is the twin's finer mesh against the fit mesh: under a per cent (0.996 measured),
+  // against the ±20 % of the gradient above.
+  EXPECT_GT(low, 0.99);
+  EXPECT_LT(high, 1.01);
+}
+
+TEST(SheetCalibration, RefusesTooFewPressesOrACentreOffTheSheet) {
+  const Sheet30 s;
+  const SimulatedRun run = twin_presses(s.sensor, 0.0, 8);
+  SimulatedRun few = run;
+  few.frames.pop_back(), few.presses.pop_back();
+  EXPECT_THROW(calibrate(s, few), InvalidInput);
+  SimulatedRun two = run;  // a frame of two presses is left out: that leaves 7
+  two.presses[2].push_back(two.presses[2][0]);
+  EXPECT_THROW(calibrate(s, two), InvalidInput);
+  SimulatedRun off = run;
+  off.presses[3][0].x_mm = 45;  // the 30 mm sheet ends at 30
+  EXPECT_THROW(calibrate(s, off), InvalidInput);
+}
+
+TEST(SheetCalibration, TravelsInTheCalibrationFile) {
+  const std::string dir = test::temp_folder("sheet_calibration_json");
+  FitCalibration written;
+  written.contact_law = ContactLaw{41000, -1.2, 0.001};
+  SheetCorrection correction;
+  correction.lower_mm = {0, 0}, correction.upper_mm = {60, 60};
+  correction.log_conductance = {-0.2, 0.01, 0.02, -0.003, 0.004};
+  written.sheet_correction = correction;
+  write_calibration(dir + "/c.json", written);
+  const Calibration loaded = load_calibration(dir + "/c.json");
+  ASSERT_TRUE(std::holds_alternative<FitCalibration>(loaded));
+  const FitCalibration& read = std::get<FitCalibration>(loaded);
+  EXPECT_EQ(read.contact_law.alpha_ohm_mm2, 41000);
+  ASSERT_TRUE(read.sheet_correction);
+  EXPECT_EQ(read.sheet_correction->log_conductance, correction.log_conductance);
+  EXPECT_EQ(read.sheet_correction->factor({13, 47}), correction.factor({13, 47}));
+  // A key it does not know is an error naming the key, not something silently ignored.
+  std::ofstream(dir + "/bad.json") << R"({"alpha_ohm_mm2": 4e4, "gamma": -1.2, "sheet_correction": )"
+                                   << R"({"box_mm": [0, 0, 60, 60], "log_conductance": [0, 0, 0, 0, 0], "order": 2}})";
+  try {
+    load_calibration(dir + "/bad.json");
+    FAIL() << "an unknown key was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("sheet_correction: order: unknown key"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace emit

@@ -1,0 +1,403 @@
+// End to end: the emit CLI run as a user runs it, on good and on bad input.
+#include <filesystem>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "emit/io/contacts_jsonl.hpp"
+#include "emit/io/frames_csv.hpp"
+#include "emit/io/presses_csv.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include "emit/render/image.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_emit;
+using test::source_path;
+
+std::string last_line_of(const std::string& text) {
+  const std::string trimmed = text.substr(0, text.find_last_not_of('\n') + 1);
+  return trimmed.substr(trimmed.find_last_of('\n') == std::string::npos ? 0 : trimmed.find_last_of('\n') + 1);
+}
+
+int occurrences(const std::string& text, const std::string& what) {
+  int count = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
+}
+
+TEST(Cli, SimulatesOnePress) {
+  const std::string dir = test::temp_folder("cli_one");
+  const auto r = run_emit("simulate --press 30,30,5,10 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/f.csv", 16);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].diagonal().cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(frames[0].maxCoeff(), 0.1);  // a 10 N press reads hundreds of mV
+  const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_EQ(truth[0][0].force_N, 10.0);
+}
+
+TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
+  const std::string dir = test::temp_folder("cli_grid");
+  const auto r = run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
+                          " --script grid --spacing-mm 10 --radius-mm 3 --out " + dir + "/g.csv --truth " + dir + "/t.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/g.csv", 16);
+  const auto truth = read_presses_csv(dir + "/t.csv");
+  EXPECT_EQ(frames.size(), 9u);  // 30 mm sheet, 10 mm pitch, 3 mm margin: a 3 × 3 grid
+  EXPECT_EQ(truth.size(), frames.size());
+}
+
+TEST(Cli, TwoFingerAndMovingScripts) {
+  const std::string dir = test::temp_folder("cli_scripts");
+  auto r = run_emit("simulate --script two-finger --frames 3 --separation-mm 12,40 --force-N 5,20 --out " + dir + "/two.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto two = read_presses_csv(dir + "/two_presses.csv");
+  ASSERT_EQ(two.size(), 3u);
+  for (const auto& frame : two) {
+    ASSERT_EQ(frame.size(), 2u);
+    const double separation = std::hypot(frame[0].x_mm - frame[1].x_mm, frame[0].y_mm - frame[1].y_mm);
+    EXPECT_GE(separation, 12.0 - 1e-3);
+    EXPECT_LE(separation, 40.0 + 1e-3);
+  }
+  r = run_emit("simulate --script moving --from 10,10 --to 50,50 --frames 5 --out " + dir + "/move.csv --images " + dir + "/img");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_frames_csv(dir + "/move.csv", 16).size(), 5u);
+  EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
+}
+
+// A user's round: references, calibration presses, test presses; calibrate, reconstruct.
+TEST(Cli, CalibrateThenReconstruct) {
+  const std::string d = test::temp_folder("cli_reconstruct");
+  const std::string cache = " --cache " + d + "/cache";
+  ASSERT_EQ(run_emit("simulate --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --script random --frames 12 --force-N 2,30 --seed 3 --out " + d + "/cal.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --press 21,37,5,12 --out " + d + "/one.csv").exit_code, 0);
+  const std::string calibrate = "calibrate --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d + "/cal_presses.csv";
+  auto r = run_emit(calibrate + " --out " + d + "/calib.json" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("alpha ="), std::string::npos) << "the default method, fit, calibrates the contact law";
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d +
+               "/c.jsonl --calibration " + d + "/calib.json --images " + d + "/img" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  long frame = -1;
+  auto contacts = parse_contacts_line(test::read_text(d + "/c.jsonl"), &frame);
+  EXPECT_EQ(frame, 0);
+  ASSERT_EQ(contacts.size(), 1u);
+  // Contact fitting: issue 4's targets, p95 0.6 mm and a pressure error of 0.02 N/mm².
+  EXPECT_LE(std::hypot(contacts[0].x_mm - 21, contacts[0].y_mm - 37), 0.6);
+  EXPECT_NEAR(contacts[0].pressure_N_per_mm2, 12 / (std::numbers::pi * 25), 0.02);
+  // Reported with the calibration presses' indenter (radius 5 mm): the force is the press's, to
+  // the same 0.02 N/mm² over its 78.5 mm².
+  EXPECT_NEAR(contacts[0].area_mm2, std::numbers::pi * 25, 1e-3);  // contacts.jsonl keeps 6 digits
+  EXPECT_NEAR(contacts[0].force_N, 12, 0.02 * std::numbers::pi * 25);
+  // With its uncertainty: a 1σ between a hundredth and a few tenths of a millimetre (the fit's
+  // errors on the twin are ~0.1 mm), and the frame's misfit near the 1 mV noise of the readings.
+  EXPECT_GT(contacts[0].x_std_mm, 0.005);
+  EXPECT_LT(contacts[0].x_std_mm, 0.3);
+  const std::string line = test::read_text(d + "/c.jsonl");
+  const auto misfit_at = line.find("\"fit_misfit_mV\": ");
+  ASSERT_NE(misfit_at, std::string::npos) << line;
+  EXPECT_LT(std::stod(line.substr(misfit_at + 17)), 3.0) << line;
+  EXPECT_GT(read_png(d + "/img/frame_0.png").width(), 100);
+  // A second run loads the (seeding) operator from the cache.
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("operator from the cache"), std::string::npos) << r.err;
+
+  // The paper's method: eq. 8; its error is a few mm (p95 ≈ 8 mm on the 60 mm sheet, emit eval).
+  r = run_emit(calibrate + " --method paper --out " + d + "/calib_paper.json" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("a3 ="), std::string::npos);
+  r = run_emit("reconstruct --method paper --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d +
+               "/c3.jsonl --calibration " + d + "/calib_paper.json" + cache);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  contacts = parse_contacts_line(test::read_text(d + "/c3.jsonl"), &frame);
+  ASSERT_GE(contacts.size(), 1u);
+  EXPECT_LE(std::hypot(contacts[0].x_mm - 21, contacts[0].y_mm - 37), 8.0);
+  // A calibration made for the other method is refused, naming the fix.
+  r = run_emit("reconstruct --method paper --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d +
+               "/c4.jsonl --calibration " + d + "/calib.json" + cache);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("emit calibrate --method paper"), std::string::npos) << r.err;
+}
+
+// A sheet 20 % more resistive on one side than the other (the reconstruction is told the nominal
+// one): `emit calibrate` fits the variation from the calibration presses, and a press elsewhere
+// is found within issue 4's 0.2 mm for the 30 mm sheet; without the correction it is millimetres off.
+TEST(Cli, CalibrationCorrectsANonUniformSheet) {
+  const std::string d = test::temp_folder("cli_sheet");
+  const std::string twin = " --sensor " + source_path("examples/sensors/square30.json") + " --sheet-variation 0.2";
+  const std::string sensor = " --sensor " + source_path("examples/sensors/square30.json") + " --cache " + d + "/cache";
+  ASSERT_EQ(run_emit("simulate" + twin + " --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate" + twin + " --script random --frames 12 --force-N 0.5,8 --radius-mm 2.5 --seed 3 --out " + d +
+                     "/cal.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate" + twin + " --press 9,20,2.5,3 --out " + d + "/one.csv").exit_code, 0);
+  auto r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
+                    "/cal_presses.csv --out " + d + "/calib.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  double low = 0, high = 0;
+  const auto at = r.out.find("its conductance is ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "its conductance is %lf to %lf", &low, &high), 2) << r.out;
+  EXPECT_NEAR(low, 1 / 1.2, 0.02) << "the twin's sheet: 1/(1 ± 0.2) of the nominal conductance";
+  EXPECT_NEAR(high, 1 / 0.8, 0.02);
+  const auto error_mm = [&](const std::string& calibration) {
+    const auto run = run_emit("reconstruct" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " +
+                              d + "/c.jsonl" + calibration);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const auto contacts = parse_contacts_line(test::read_text(d + "/c.jsonl"), nullptr);
+    return contacts.empty() ? 1e9 : std::hypot(contacts[0].x_mm - 9, contacts[0].y_mm - 20);
+  };
+  EXPECT_LT(error_mm(" --calibration " + d + "/calib.json"), 0.2);
+  EXPECT_GT(error_mm(""), 1.0);
+}
+
+// emit eval as a user runs it, on one sheet: contact fitting meets issue 4's target for the 30 mm
+// sheet (0.2 mm) on the twin, and the plots are drawn.
+TEST(Cli, EvalMeasuresContactFitting) {
+  const std::string d = test::temp_folder("cli_eval");
+  const auto r = run_emit("eval --quick --sheet 30 --methods fit --no-mismatches --plots " + d + "/plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto row = r.out.find("\n  fit ");
+  ASSERT_NE(row, std::string::npos) << r.out;
+  double mean_mm = -1, std_mm = -1;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + row, "\n  fit %*s %lf +/- %lf", &mean_mm, &std_mm), 2) << r.out;
+  EXPECT_GE(mean_mm, 0.0);
+  EXPECT_LT(mean_mm, 0.2) << r.out;
+}
+
+// A disconnected electrode: a one-line warning, its measurements left out, contacts still found.
+TEST(Cli, ReconstructLeavesOutADeadElectrode) {
+  const std::string d = test::temp_folder("cli_dead");
+  ASSERT_EQ(run_emit("simulate --script none --frames 3 --out " + d + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --script grid --spacing-mm 20 --dead-electrode 9 --out " + d + "/f.csv").exit_code, 0);
+  const auto r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/f.csv --contacts " + d +
+                          "/c.jsonl --no-cache");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("emit: warning: electrode 9 reads 0 V as the sensed electrode"), std::string::npos) << r.err;
+  EXPECT_EQ(occurrences(test::read_text(d + "/c.jsonl"), "\"frame\""), 9);
+}
+
+TEST(Cli, MeshWritesAFileAndReportsQuality) {
+  const std::string dir = test::temp_folder("cli_mesh");
+  const auto r = run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("triangles"), std::string::npos);
+  EXPECT_NE(r.out.find("min angle"), std::string::npos);
+  EXPECT_EQ(read_msh(dir + "/c.msh").electrode_count(), 16);
+}
+
+// `emit bench` times each stage in a process of its own: one row per case, the mesh sized as
+// asked, the operator's rank that of a truncated R (below M), the stages adding up to the frame.
+TEST(Cli, BenchPrintsARowPerCase) {
+  // Under AddressSanitizer (the test build) the peak would also hold ASan's quarantine of freed
+  // blocks, 256 MiB by default, which is not emit's memory: the bench runs with a 16 MiB one
+  // (measured at 3k: 347 MiB with the default, 133 MiB with 16, 35 MiB in a Release build).
+  const auto r = run_emit("bench --sizes 3k --electrodes 16 --no-baselines", "ASAN_OPTIONS=\"$ASAN_OPTIONS:quarantine_size_mb=16\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string row = last_line_of(r.out);
+  long triangles = 0;
+  int electrodes = 0, rank = 0;
+  double mesh_s, assembly_s, factor_s, jacobian_s, operator_s, offline_s, load_ms, product_us, pressure_us, contacts_us,
+      frame_us, read_us, peak_MiB;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%ld %d %d | %lf %lf %lf %lf %lf %lf %lf | %lf %lf %lf %lf %lf | %lf", &triangles,
+                        &electrodes, &rank, &mesh_s, &assembly_s, &factor_s, &jacobian_s, &operator_s, &offline_s,
+                        &load_ms, &product_us, &pressure_us, &contacts_us, &frame_us, &read_us, &peak_MiB),
+            16)
+      << row;
+  // The correction aims at 5 %, but counts come in steps (the frontal mesher's layers: 2840, then
+  // 3228 on the default sensor near 3k), so the closest can be a step away: 8 % holds both.
+  EXPECT_NEAR(static_cast<double>(triangles), 3000.0, 0.08 * 3000);
+  EXPECT_EQ(electrodes, 16);
+  EXPECT_GT(rank, 0);
+  EXPECT_LT(rank, 240);
+  EXPECT_NEAR(offline_s, mesh_s + jacobian_s + operator_s, 0.002);  // rounding of three printed figures
+  // The times themselves are the benchmark's to judge, not a test's; here only that each was taken.
+  for (double us : {product_us, pressure_us, contacts_us, frame_us, read_us}) EXPECT_GT(us, 0.0);
+  // A 3k-triangle case holds a few MB of matrices; the process's peak includes Gmsh and the libraries.
+  EXPECT_LT(peak_MiB, 300.0);
+}
+
+// A sensor whose shape is a mesh file written by `emit mesh` simulates like the original.
+TEST(Cli, MeshFileSensor) {
+  const std::string dir = test::temp_folder("cli_mesh_sensor");
+  ASSERT_EQ(run_emit("mesh --element-size-mm 2 --out " + dir + "/sheet.msh").exit_code, 0);
+  std::ofstream(dir + "/sensor.json") << R"({"shape": {"type": "mesh", "file": "sheet.msh"}})";
+  const auto r = run_emit("simulate --sensor " + dir + "/sensor.json --press 30,30,5,10 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_frames_csv(dir + "/f.csv", 16).size(), 1u);
+}
+
+TEST(Cli, DemoWritesFramesAndPicturesThenGoesLive) {
+  const std::string dir = test::temp_folder("cli_demo");
+  const auto r = run_emit("demo --out " + dir + "/demo --serve 127.0.0.1:0 --seconds 4");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The live part: the viewer's address, and the frames it reconstructed, written and recorded.
+  EXPECT_NE(r.out.find("viewer: http://127.0.0.1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("latency mean"), std::string::npos) << r.out;
+  EXPECT_FALSE(test::read_text(dir + "/demo/live_contacts.jsonl").empty());
+  EXPECT_TRUE(std::filesystem::exists(dir + "/demo/live.emitrec"));
+  EXPECT_EQ(read_frames_csv(dir + "/demo/frames.csv", 16).size(), 4u);
+  for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/demo/frame_" + std::to_string(f) + ".png").height(), 100);
+  // It found every press, two fingers included, where issue 4 wants it (p95 0.6 mm).
+  const PressSequence truth = read_presses_csv(dir + "/demo/presses.csv");
+  std::istringstream lines(test::read_text(dir + "/demo/contacts.jsonl"));
+  std::string line;
+  for (std::size_t f = 0; std::getline(lines, line); ++f) {
+    long frame = -1;
+    const auto contacts = parse_contacts_line(line, &frame);
+    ASSERT_LT(f, truth.size());
+    EXPECT_EQ(contacts.size(), truth[f].size()) << "frame " << f;
+    for (const Press& p : truth[f]) {
+      double nearest = 1e9;
+      for (const Contact& c : contacts) nearest = std::min(nearest, std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm));
+      EXPECT_LT(nearest, 0.6) << "frame " << f << ", press at " << p.x_mm << ", " << p.y_mm;
+    }
+  }
+}
+
+// A live session recorded, then replayed from the file as fast as it goes: the baseline's 10
+// capture frames and the 20 reconstructed ones are all in the recording, and the replay finds the
+// press where the simulator held it (live_loop_test's 0.5 mm), ending by itself at the file's end.
+TEST(Cli, LiveRecordsAndReplaysAFile) {
+  const std::string d = test::temp_folder("cli_live_record");
+  auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --record " + d + "/r.emitrec --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("recorded 30 frames"), std::string::npos) << r.out;
+  r = run_emit("live --source file:" + d + "/r.emitrec --fps 0 --contacts " + d + "/c.jsonl --cache " + d + " --record " +
+               d + "/again.emitrec");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
+  // The replay recorded again holds the packets it read, byte for byte (recorded what the board
+  // sent, not volts quantised again); only the header's start time differs.
+  const std::string first = test::read_text(d + "/r.emitrec"), again = test::read_text(d + "/again.emitrec");
+  ASSERT_EQ(first.size(), again.size());
+  EXPECT_EQ(first.substr(0, 24), again.substr(0, 24));
+  EXPECT_TRUE(first.substr(32) == again.substr(32)) << "the packets differ";
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  std::string line;
+  int pressed = 0;
+  while (std::getline(lines, line))
+    for (const Contact& c : parse_contacts_line(line)) {
+      EXPECT_LT(std::hypot(c.x_mm - 20, c.y_mm - 40), 0.5) << line;
+      ++pressed;
+    }
+  EXPECT_GE(pressed, 10);  // the script holds the press from its 16th frame on (frames 15..29)
+}
+
+// emit live on the simulator holding one press: one JSON line per reconstructed frame (the
+// baseline's 10 capture frames write none), numbered by the source; no contact while the script
+// leaves the sheet untouched (its first 15 frames), then one within live_loop_test's 0.5 mm.
+TEST(Cli, LiveWritesTheScriptedPressAsJsonLines) {
+  const std::string d = test::temp_folder("cli_live");
+  const auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --contacts " + d + "/c.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("latency mean"), std::string::npos) << r.out;
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  std::string line;
+  long count = 0, frame = -1;
+  for (; std::getline(lines, line); ++count) {
+    const auto contacts = parse_contacts_line(line, &frame);
+    EXPECT_EQ(frame, 10 + count);
+    if (frame < 15) {
+      EXPECT_TRUE(contacts.empty()) << line;
+    } else {
+      ASSERT_EQ(contacts.size(), 1u) << line;
+      EXPECT_LT(std::hypot(contacts[0].x_mm - 20, contacts[0].y_mm - 40), 0.5) << line;
+    }
+  }
+  EXPECT_EQ(count, 20);
+}
+
+// Bad input: one line on stderr that starts with "emit: ", a non-zero exit, and the output
+// file — here one that already holds good data — left exactly as it was.
+struct BadRun {
+  const char* what;
+  std::string arguments;  // OUT stands for the output file
+  const char* message_contains;
+};
+
+void PrintTo(const BadRun& run, std::ostream* os) { *os << run.what; }
+
+class CliBadInput : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
+  const std::string dir = test::temp_folder("cli_bad");
+  const std::string out = dir + "/out.csv";
+  std::ofstream(out) << "GOOD\n";
+  std::ofstream(dir + "/unknown_key.json") << R"({"shape": {"type": "circle", "radius_mm": 20}, "electrodes": {"count": 8, "width_mm": 2}, "colour": 1})";
+  std::ofstream(dir + "/bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\ngarbage\n";
+  std::ofstream(dir + "/msh_sensor.json") << R"({"shape": {"type": "mesh", "file": "bad.msh"}})";
+  auto csv_row = [](int count, const std::string& special, int at) {
+    std::string row;
+    for (int i = 0; i < count; ++i) row += (i ? "," : "") + (i == at ? special : std::string("0.1"));
+    return row + "\n";
+  };
+  std::ofstream(dir + "/ref.csv") << csv_row(256, "0", -1);
+  std::ofstream(dir + "/nan.csv") << csv_row(256, "0", -1) << csv_row(256, "nan", 17);
+  std::ofstream(dir + "/text.csv") << csv_row(256, "volts", 3);
+  std::ofstream(dir + "/short.csv") << csv_row(255, "0", -1);
+  std::ofstream(dir + "/ref8.csv") << csv_row(64, "0", -1);
+  std::string arguments = GetParam().arguments;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
+    for (std::size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
+  const auto r = run_emit(arguments);
+  EXPECT_NE(r.exit_code, 0);
+  // Progress lines may come first; the error is the last line and the only one saying "emit: ".
+  const std::string last_line = last_line_of(r.err);
+  EXPECT_EQ(last_line.rfind("emit: ", 0), 0u) << r.err;
+  EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
+  EXPECT_NE(last_line.find(GetParam().message_contains), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_text(out), "GOOD\n");
+  EXPECT_FALSE(fs::exists(dir + "/out_presses.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Errors, CliBadInput,
+    ::testing::Values(
+        BadRun{"missing sensor file", "simulate --sensor DIR/none.json --press 30,30,5,10 --out OUT", "none.json"},
+        BadRun{"unknown key", "simulate --sensor DIR/unknown_key.json --press 20,20,5,10 --out OUT", "colour: unknown key"},
+        BadRun{"press off the sheet", "simulate --press 70,30,5,10 --out OUT", "off the sheet"},
+        BadRun{"press not numbers", "simulate --press 30,thirty,5,10 --out OUT", "\"thirty\" is not a number"},
+        BadRun{"negative force", "simulate --press 30,30,5,-1 --out OUT", "force must not be negative"},
+        BadRun{"malformed msh", "simulate --sensor DIR/msh_sensor.json --press 30,30,5,10 --out OUT", "bad.msh"},
+        BadRun{"missing msh", "mesh --sensor DIR/none.json --out OUT", "none.json"},
+        BadRun{"unknown script", "simulate --script zigzag --out OUT", "unknown script"},
+        BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
+        BadRun{"unknown option", "simulate --pres 30,30,5,10 --out OUT", "--pres"},
+        BadRun{"NaN in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/nan.csv --contacts OUT --no-cache",
+               "nan.csv:2: value 18 is nan"},
+        BadRun{"text in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/text.csv --contacts OUT --no-cache",
+               "text.csv:1: value 4 \"volts\" is not a number"},
+        BadRun{"wrong value count", "reconstruct --reference DIR/ref.csv --frames DIR/short.csv --contacts OUT --no-cache",
+               "short.csv:1: 255 values, expected 256"},
+        BadRun{"reference from another sensor",
+               "reconstruct --reference DIR/ref8.csv --frames DIR/ref.csv --contacts OUT --no-cache",
+               "ref8.csv:1: 64 values, expected 256"},
+        BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
+               "needs --reference, --frames, --truth and --out"},
+        BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
+        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads"},
+        BadRun{"unknown live source", "live --source zigzag --frames 1", "source \"zigzag\": unknown"},
+        BadRun{"live serve address without a port", "live --serve 127.0.0.1 --frames 1 --cache DIR/cache",
+               "is not HOST:PORT"}),
+    [](const auto& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
+
+}  // namespace
+}  // namespace emit

@@ -1,0 +1,141 @@
+// The model contact fitting fits: the smoothed disc's contact matrices (their total, their
+// centre, their derivatives) and the Woodbury frame predictor against the sparse forward model.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "emit/fem/forward_model.hpp"
+#include "emit/frame/disc_contact.hpp"
+#include "emit/frame/frame_predictor.hpp"
+#include "emit/model/green_function.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/press_contact.hpp"
+#include "tolerances.hpp"
+
+namespace emit {
+namespace {
+
+const Mesh& default_mesh() {
+  static const Mesh mesh = generate_mesh(default_sensor(), reconstruction_mesh_options(default_sensor()));
+  return mesh;
+}
+
+/// ∫ g s dA and ∫ g s x dA of a disc load (Σ of the local matrices' entries: Σ_ij φ_i φ_j = 1).
+std::pair<double, Vector2> total_and_moment(const Mesh& mesh, const DiscLoad& load) {
+  double total = 0;
+  Vector2 moment = Vector2::Zero();
+  for (std::size_t i = 0; i < load.triangles.size(); ++i) {
+    total += load.local_S[i].sum();
+    moment += load.local_S[i].sum() * mesh.triangle_centroid_mm(load.triangles[i]).head<2>();
+  }
+  return {total, moment};
+}
+
+TEST(DiscContact, CarriesTheDiscsConductanceCentredOnIt) {
+  const Mesh& mesh = default_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3);
+  const Disc disc{21.3, 34.7, 4.0, 2e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load);
+  const auto [total, moment] = total_and_moment(mesh, load);
+  // The smoothstep is odd about the rim, so the area is π r² up to O(edge²/r²) = 0.6 %; the
+  // quadrature on cut triangles (pieces 1/8 of an element) adds a fraction of that.
+  const double exact = disc.conductance_S_per_mm2 * std::numbers::pi * disc.radius_mm * disc.radius_mm;
+  EXPECT_NEAR(total, exact, 0.01 * exact);
+  // The centre: element centroids weight the moment, exact for the inner elements, off by at
+  // most an element's size times the rim's share of the total.
+  const Vector2 centre = moment / total;
+  EXPECT_NEAR(centre.x(), disc.x_mm, 0.05);
+  EXPECT_NEAR(centre.y(), disc.y_mm, 0.05);
+}
+
+TEST(DiscContact, DerivativesMatchFiniteDifferences) {
+  const Mesh& mesh = default_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3);
+  const Disc disc{30.4, 28.1, 3.3, 1e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load, true);
+  // The total's derivative in x and y vanishes (translation); in r it is 2π r g.
+  std::array<double, 3> d_total{};
+  for (const auto& d : load.d_local_S)
+    for (int k = 0; k < 3; ++k) d_total[k] += d[k].sum();
+  const double scale = 2 * std::numbers::pi * disc.radius_mm * disc.conductance_S_per_mm2;
+  EXPECT_NEAR(d_total[2], scale, 0.02 * scale);
+  // Each entry against a central difference of step 1e-5 mm (the smoothstep is C¹ with second
+  // derivative ~ g·A/edge², so the difference's error is far below the tolerance).
+  const double step = 1e-5;
+  for (int k = 0; k < 3; ++k) {
+    Disc plus = disc, minus = disc;
+    double* plus_value = k == 0 ? &plus.x_mm : k == 1 ? &plus.y_mm : &plus.radius_mm;
+    double* minus_value = k == 0 ? &minus.x_mm : k == 1 ? &minus.y_mm : &minus.radius_mm;
+    *plus_value += step;
+    *minus_value -= step;
+    DiscLoad a, b;
+    integrator.integrate(plus, a);
+    integrator.integrate(minus, b);
+    ASSERT_EQ(a.triangles, load.triangles) << "a step this small keeps the same triangles";
+    ASSERT_EQ(b.triangles, load.triangles);
+    double worst = 0;
+    for (std::size_t i = 0; i < load.triangles.size(); ++i)
+      worst = std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
+    EXPECT_LT(worst, 1e-6 * scale) << "parameter " << k;
+  }
+}
+
+TEST(FramePredictor, AgreesWithTheSparseForwardModel) {
+  const Mesh& mesh = default_mesh();
+  const Sensor sensor = default_sensor();
+  const DenseGreenFunction green = dense_green_function(mesh, sensor.sheet_resistance_ohm_per_sq);
+  const ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
+  FramePredictor predictor(mesh, green);
+  // One press in the middle, two presses, and one touching electrode 1's border.
+  for (const std::vector<Press>& presses : {std::vector<Press>{{30, 30, 5, 8}},
+                                            std::vector<Press>{{15, 20, 4, 5}, {45, 40, 3, 2}},
+                                            std::vector<Press>{{22.5, 2, 3, 4}}}) {
+    const ContactLoad load = press_contact_load(mesh, presses, sensor.contact);
+    const Frame exact = model.solve_frame(load, sensor.drive_voltage_V);
+    Frame predicted;
+    predictor.predict(load.triangles, load.local_S, sensor.drive_voltage_V, predicted);
+    // Two exact identities evaluated in different orders: solution round-off (cond ~1e5).
+    EXPECT_LT((predicted - exact).cwiseAbs().maxCoeff(), test::solve_roundoff * exact.cwiseAbs().maxCoeff())
+        << presses.size() << " presses at " << presses[0].x_mm << ", " << presses[0].y_mm;
+  }
+}
+
+TEST(FramePredictor, DerivativeMatchesFiniteDifferences) {
+  const Mesh& mesh = default_mesh();
+  const Sensor sensor = default_sensor();
+  static const DenseGreenFunction green = dense_green_function(mesh, sensor.sheet_resistance_ohm_per_sq);
+  FramePredictor predictor(mesh, green);
+  const DiscContactIntegrator integrator(mesh, 0.3);
+  const Disc disc{17.2, 41.9, 4.0, 5e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load, true);
+  Frame frame, d_frame;
+  predictor.predict(load.triangles, load.local_S, sensor.drive_voltage_V, frame);
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Eigen::Matrix3d> direction;
+    for (const auto& d : load.d_local_S) direction.push_back(d[k]);
+    predictor.derivative(load.triangles, direction, d_frame);
+    // Central difference of the frame in x, y or r, step 1e-4 mm: its error, O(step²) times the
+    // frame's third derivative, is far below 1e-4 of the derivative's size.
+    const double step = 1e-4;
+    Disc plus = disc, minus = disc;
+    (k == 0 ? plus.x_mm : k == 1 ? plus.y_mm : plus.radius_mm) += step;
+    (k == 0 ? minus.x_mm : k == 1 ? minus.y_mm : minus.radius_mm) -= step;
+    DiscLoad a, b;
+    integrator.integrate(plus, a);
+    integrator.integrate(minus, b);
+    Frame fa, fb;
+    predictor.predict(a.triangles, a.local_S, sensor.drive_voltage_V, fa);
+    predictor.predict(b.triangles, b.local_S, sensor.drive_voltage_V, fb);
+    const Frame difference = (fa - fb) / (2 * step);
+    EXPECT_LT((d_frame - difference).cwiseAbs().maxCoeff(), 1e-4 * difference.cwiseAbs().maxCoeff()) << "parameter " << k;
+    predictor.predict(load.triangles, load.local_S, sensor.drive_voltage_V, frame);  // restore the state
+  }
+}
+
+}  // namespace
+}  // namespace emit

@@ -1,0 +1,193 @@
+// The live path end to end in one process: the simulator's frames through the baseline and the
+// fit to contacts at the scripted presses; the server's WebSocket delivers the mesh, frames and
+// commands; a port in use is a clear error.
+#include "emit/live/live_loop.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <thread>
+
+#include <utility>  // before Boost 1.74's Asio, which uses std::exchange without it under C++20
+
+#include <boost/asio.hpp>
+#include <boost/beast.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "emit/twin/sim_source.hpp"
+#include "emit/live/open_source.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/io/contacts_jsonl.hpp"
+#include "emit/live/live_server.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+/// contact_fitter_test's bound for a press tracked frame to frame is 0.2 mm (the cold fit's
+/// accuracy is ~0.1 mm, README); a moving finger tracked at 50 frames/s gets the same margin
+/// again: 0.5 mm.
+constexpr double live_fit_tolerance_mm = 0.5;
+
+struct LiveBench {
+  Sensor sensor = default_sensor();
+  Pipeline pipeline{sensor, {.method = Method::fit, .cache_dir = test::temp_folder("live_cache")}};
+};
+
+LiveBench& bench() {
+  static LiveBench b;
+  return b;
+}
+
+SourceOptions unpaced() {
+  SourceOptions options;
+  options.frames_per_s = 0;  // as fast as the twin goes; the script keeps its 50 frames/s clock
+  return options;
+}
+
+TEST(SimSource, ScriptsStartUntouchedAndStayOnTheSheet) {
+  const Sensor sensor = default_sensor();
+  SourceOptions options = unpaced();
+  SimSource loop(sensor, parse_sim_script("sim"), options);
+  for (std::uint64_t s = 0; s < static_cast<std::uint64_t>(options.untouched_frames); ++s) EXPECT_TRUE(loop.presses_of(s).empty());
+  int pressed = 0;
+  for (std::uint64_t s = options.untouched_frames; s < 1000; ++s)  // 20 s: the figure-eight and its lift-offs
+    for (const Press& p : loop.presses_of(s)) {
+      ++pressed;
+      EXPECT_NO_THROW(validate_press(sensor, p, "frame " + std::to_string(s)));
+    }
+  EXPECT_GT(pressed, 700);  // 6 s pressed of every 7
+  EXPECT_LT(pressed, 1000 - options.untouched_frames);
+  SourceFrame frame;
+  ASSERT_TRUE(loop.next(frame, std::chrono::seconds(30)));
+  EXPECT_EQ(frame.sequence, 0u);
+  EXPECT_EQ(frame.volts.rows(), 16);
+}
+
+TEST(SimSource, BadSpecsNameThemselves) {
+  const Sensor sensor = default_sensor();
+  EXPECT_THROW(parse_sim_script("sim:zigzag"), InvalidInput);
+  EXPECT_THROW(parse_sim_script("sim:fixed:30"), InvalidInput);
+  try {
+    parse_sim_script("sim:fixed:30,abc");
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("\"abc\""), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(SimSource(sensor, parse_sim_script("sim:fixed:80,30"), unpaced()), InvalidInput);  // off the sheet
+  EXPECT_THROW(open_source("serial", sensor, unpaced()), InvalidInput);
+}
+
+// The scripted figure-eight, reconstructed live by contact fitting: every pressed frame gives one
+// contact at the press, every untouched frame none; the JSON Lines carry the source's numbers.
+TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
+  LiveBench& b = bench();
+  SimSource source(b.sensor, parse_sim_script("sim"), unpaced());
+  LiveOptions options;
+  options.max_frames = 40;
+  LiveLoop loop(source, b.pipeline, options);
+  std::ostringstream lines;
+  loop.write_contacts_to(&lines);
+  int pressed = 0;
+  loop.on_frame([&](const SourceFrame& frame, const std::vector<Contact>& contacts) {
+    const std::vector<Press> presses = source.presses_of(frame.sequence);
+    ASSERT_EQ(contacts.size(), presses.size()) << "frame " << frame.sequence;
+    if (presses.empty()) return;
+    ++pressed;
+    EXPECT_LT(std::hypot(contacts[0].x_mm - presses[0].x_mm, contacts[0].y_mm - presses[0].y_mm), live_fit_tolerance_mm)
+        << "frame " << frame.sequence;
+  });
+  const std::atomic<bool> stop{false};
+  const LiveStats stats = loop.run(stop);
+  EXPECT_EQ(stats.frames, 40u);
+  EXPECT_EQ(stats.capture_frames, static_cast<std::uint64_t>(BaselineOptions{}.capture_frames));
+  EXPECT_EQ(pressed, 40 - (unpaced().untouched_frames - BaselineOptions{}.capture_frames));
+  EXPECT_EQ(stats.latency.count(), 40u);
+  std::istringstream in(lines.str());
+  std::string line;
+  long expected_frame = BaselineOptions{}.capture_frames, frame = -1;
+  for (; std::getline(in, line); ++expected_frame) {
+    parse_contacts_line(line, &frame);
+    EXPECT_EQ(frame, expected_frame);
+  }
+  EXPECT_EQ(expected_frame, BaselineOptions{}.capture_frames + 40);
+}
+
+// A WebSocket client as the page is one: the mesh first, then frames (binary: header + one float
+// per triangle); its "recapture" reaches the loop, which captures the baseline again.
+TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
+  namespace beast = boost::beast;
+  namespace net = boost::asio;
+  LiveBench& b = bench();
+  SimSource source(b.sensor, parse_sim_script("sim:fixed:20,40"), unpaced());
+  LiveLoop loop(source, b.pipeline);
+  LiveServer server("127.0.0.1:0", b.pipeline.model().mesh, b.sensor.name, [&](const std::string& c) { loop.command(c); });
+  loop.add_publisher(&server);
+  std::atomic<bool> stop{false};
+  std::thread runner([&] { loop.run(stop); });
+
+  net::io_context io;
+  net::ip::tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+  beast::websocket::stream<net::ip::tcp::socket> ws(std::move(socket));
+  ws.handshake("127.0.0.1", "/ws");
+  beast::flat_buffer buffer;
+  ws.read(buffer);
+  ASSERT_TRUE(ws.got_text());
+  const auto mesh = nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
+  buffer.consume(buffer.size());
+  EXPECT_EQ(mesh["type"], "mesh");
+  const auto triangles = static_cast<std::size_t>(b.pipeline.model().mesh.triangle_count());
+  EXPECT_EQ(mesh["triangles"].size(), 3 * triangles);
+  EXPECT_EQ(mesh["electrodes"].size(), 16u);
+
+  auto read_frame = [&] {
+    ws.read(buffer);
+    EXPECT_TRUE(ws.got_binary());
+    const std::string bytes = beast::buffers_to_string(buffer.data());
+    buffer.consume(buffer.size());
+    ws.text(true);
+    ws.write(net::buffer(std::string("ack")));  // the next frame may come
+    std::uint32_t header = 0;
+    std::memcpy(&header, bytes.data(), 4);
+    EXPECT_EQ(bytes.size(), 4 + header + 4 * triangles);
+    return nlohmann::json::parse(bytes.substr(4, header));
+  };
+  nlohmann::json frame;
+  do frame = read_frame();
+  while (frame["capturing_baseline"].get<bool>() || frame["contacts"].empty());
+  EXPECT_NEAR(frame["contacts"][0]["x_mm"].get<double>(), 20, live_fit_tolerance_mm);
+  EXPECT_NEAR(frame["contacts"][0]["y_mm"].get<double>(), 40, live_fit_tolerance_mm);
+  EXPECT_EQ(frame["baseline_captures"], 1);
+
+  ws.write(net::buffer(std::string("recapture")));
+  do frame = read_frame();
+  while (frame["baseline_captures"].get<int>() != 2);
+  EXPECT_EQ(frame["commands"], 1);
+  EXPECT_EQ(server.commands_received(), 1u);
+
+  // The client goes away; the loop keeps going and the server forgets it.
+  ws.close(beast::websocket::close_code::normal);
+  for (int wait = 0; wait < 200 && server.clients() > 0; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(server.clients(), 0u);
+  stop = true;
+  runner.join();
+}
+
+TEST(LiveServer, PortInUseIsAClearError) {
+  const Mesh& mesh = bench().pipeline.model().mesh;
+  LiveServer first("127.0.0.1:0", mesh, "a", {});
+  try {
+    LiveServer second("127.0.0.1:" + std::to_string(first.port()), mesh, "b", {});
+    FAIL() << "a second server on the same port";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("in use"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(LiveServer("127.0.0.1", mesh, "c", {}), InvalidInput);
+  EXPECT_THROW(LiveServer("127.0.0.1:99999", mesh, "c", {}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace emit

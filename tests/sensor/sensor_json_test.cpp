@@ -1,0 +1,159 @@
+// Sensor descriptions: the default layout rule, the examples, and every validation error.
+#include "emit/sensor/sensor_json.hpp"
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "emit/core/errors.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+using nlohmann::json;
+
+// README, "Sensor description": 4 per side centred at 7.5, 22.5, 37.5, 52.5 mm, counter-clockwise from the bottom
+// side's leftmost (bottom L→R, right B→T, top R→L, left T→B).
+TEST(Sensor, DefaultLayoutFollowsThePaper) {
+  const Sensor s = default_sensor();
+  ASSERT_EQ(s.electrode_count(), 16);
+  const double c[4] = {7.5, 22.5, 37.5, 52.5};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR((s.electrodes[i].center_mm - Vector2(c[i], 0)).norm(), 0, 1e-12);
+    EXPECT_NEAR((s.electrodes[4 + i].center_mm - Vector2(60, c[i])).norm(), 0, 1e-12);
+    EXPECT_NEAR((s.electrodes[8 + i].center_mm - Vector2(c[3 - i], 60)).norm(), 0, 1e-12);
+    EXPECT_NEAR((s.electrodes[12 + i].center_mm - Vector2(0, c[3 - i])).norm(), 0, 1e-12);
+  }
+  for (const auto& e : s.electrodes) EXPECT_EQ(e.width_mm, 3.0);
+}
+
+TEST(Sensor, CircleLayoutStartsAtAngleZeroCounterClockwise) {
+  const Sensor s = load_sensor(test::source_path("examples/sensors/circle40.json"));
+  EXPECT_NEAR((s.electrodes[0].center_mm - Vector2(80, 40)).norm(), 0, 1e-12);
+  EXPECT_NEAR((s.electrodes[4].center_mm - Vector2(40, 80)).norm(), 0, 1e-12);  // a quarter turn on
+}
+
+// The conformance files' explicit lists land on the same electrodes as our default rule.
+TEST(Sensor, ExplicitListsMatchTheDefaultRule) {
+  const Sensor square = load_sensor(test::source_path("tests/data/conformance/square60_sensor.json"));
+  const Sensor circle = load_sensor(test::source_path("tests/data/conformance/circle40_sensor.json"));
+  const Sensor square_default = default_sensor();
+  const Sensor circle_default = load_sensor(test::source_path("examples/sensors/circle40.json"));
+  for (int e = 0; e < 16; ++e) {
+    EXPECT_NEAR(square.electrodes[e].center_s_mm, square_default.electrodes[e].center_s_mm, 1e-9);
+    EXPECT_NEAR(circle.electrodes[e].center_s_mm, circle_default.electrodes[e].center_s_mm, 1e-9);
+  }
+}
+
+TEST(Sensor, AllExamplesLoad) {
+  for (const char* name : {"default60", "square30", "circle40", "square120_32", "hexagon"}) {
+    const Sensor s = load_sensor(test::source_path(std::string("examples/sensors/") + name + ".json"));
+    EXPECT_GE(s.electrode_count(), 12) << name;
+    EXPECT_TRUE(s.border.has_value()) << name;
+  }
+  EXPECT_EQ(load_sensor(test::source_path("examples/sensors/square120_32.json")).electrode_count(), 32);
+}
+
+TEST(Sensor, ContactLawFollowsEquation2) {
+  ContactLaw law;  // r_c = 2e5 · P^-1.2
+  EXPECT_NEAR(law.conductance_S_per_mm2(0.1), 1.0 / (2e5 * std::pow(0.1, -1.2)), 1e-20);
+  EXPECT_EQ(law.conductance_S_per_mm2(0.001), 0.0);  // below the separator's minimum
+  EXPECT_LT(law.conductance_S_per_mm2(0.1), law.conductance_S_per_mm2(0.2));
+}
+
+json base_sensor() {
+  return json::parse(R"({"shape": {"type": "rectangle", "width_mm": 60, "height_mm": 60},
+                         "electrodes": {"count": 16, "width_mm": 3}})");
+}
+
+struct BadCase {
+  const char* what;
+  std::function<void(json&)> edit;
+  const char* message_contains;
+};
+
+void PrintTo(const BadCase& bad, std::ostream* os) { *os << bad.what; }
+
+class SensorValidation : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SensorValidation, NamesTheKeyAndSaysWhy) {
+  json j = base_sensor();
+  GetParam().edit(j);
+  try {
+    parse_sensor(j, "s.json");
+    FAIL() << GetParam().what << ": expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("s.json: ", 0), 0u) << message;
+    EXPECT_NE(message.find(GetParam().message_contains), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+  }
+}
+
+json explicit_electrodes(std::vector<std::array<double, 3>> list) {
+  json electrodes = json::array();
+  for (const auto& [x, y, w] : list) electrodes.push_back({{"x_mm", x}, {"y_mm", y}, {"width_mm", w}});
+  return electrodes;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Errors, SensorValidation,
+    ::testing::Values(
+        BadCase{"unknown top-level key", [](json& j) { j["colour"] = "red"; }, "colour: unknown key"},
+        BadCase{"unknown nested key", [](json& j) { j["adc"] = {{"bitz", 12}}; }, "adc.bitz: unknown key"},
+        BadCase{"missing shape", [](json& j) { j.erase("shape"); }, "shape: missing"},
+        BadCase{"unknown shape", [](json& j) { j["shape"] = {{"type", "star"}}; }, "shape.type: must be"},
+        BadCase{"negative resistance", [](json& j) { j["probing_sheet_resistance_ohm_per_sq"] = -5; },
+                "probing_sheet_resistance_ohm_per_sq: must be positive"},
+        BadCase{"negative width", [](json& j) { j["shape"]["width_mm"] = -60; }, "shape.width_mm: must be positive"},
+        BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; }, "drive_voltage_V: must be a number"},
+        BadCase{"fewer than 3 electrodes", [](json& j) { j["electrodes"]["count"] = 2; }, "at least 3 electrodes"},
+        BadCase{"fewer than 3 explicit", [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}}); },
+                "at least 3 electrodes"},
+        BadCase{"count not a multiple of 4", [](json& j) { j["electrodes"]["count"] = 10; }, "multiple of 4"},
+        BadCase{"electrode off the border",
+                [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}, {30, 31, 3}}); },
+                "electrodes[2]: centre"},
+        BadCase{"overlapping electrodes",
+                [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {12, 0, 3}, {60, 30, 3}}); },
+                "overlap"},
+        BadCase{"electrodes too wide to fit", [](json& j) { j["electrodes"]["width_mm"] = 16; }, "overlap"},
+        BadCase{"positive gamma", [](json& j) { j["contact_law"] = {{"gamma", 1.2}}; }, "contact_law.gamma: must be negative"},
+        BadCase{"degenerate polygon",
+                [](json& j) { j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {1, 1}, {2, 2}}}}; },
+                "zero area"},
+        BadCase{"adc bits out of range", [](json& j) { j["adc"] = {{"bits", 40}}; }, "adc.bits: must be between"},
+        BadCase{"mesh coarser than the sheet", [](json& j) { j["mesh"] = {{"element_size_mm", 40}}; },
+                "mesh.element_size_mm"}),
+    [](const auto& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
+
+TEST(Sensor, MissingFileIsAnIoError) { EXPECT_THROW(load_sensor("/nonexistent/sensor.json"), IoError); }
+
+TEST(Sensor, MalformedJsonNamesTheFile) {
+  const std::string path = test::temp_folder("bad_json") + "/bad.json";
+  std::ofstream(path) << "{\"shape\": ";
+  try {
+    load_sensor(path);
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": not valid JSON", 0), 0u) << e.what();
+  }
+}
+
+TEST(Sensor, RoundTripsThroughJson) {
+  const Sensor s = load_sensor(test::source_path("examples/sensors/hexagon.json"));
+  const Sensor back = parse_sensor(sensor_to_json(s));
+  ASSERT_EQ(back.electrode_count(), s.electrode_count());
+  for (int e = 0; e < s.electrode_count(); ++e)
+    EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace emit

@@ -1,0 +1,79 @@
+// Press scripts: every press on the sheet and inside its margin, counts, separations, seeds.
+#include "emit/twin/press_scripts.hpp"
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+void expect_inside_margin(const Sensor& sensor, const PressSequence& sequence, double margin_mm) {
+  for (const auto& frame : sequence)
+    for (const Press& p : frame) {
+      const Vector2 c(p.x_mm, p.y_mm);
+      EXPECT_TRUE(sensor.border->contains(c)) << p.x_mm << ", " << p.y_mm;
+      EXPECT_GE(sensor.border->distance_to_border_mm(c), margin_mm - 1e-12) << p.x_mm << ", " << p.y_mm;
+    }
+}
+
+TEST(PressScripts, GridCoversTheSheetAtItsPitch) {
+  const Sensor sensor = default_sensor();
+  PressStyle style;
+  style.margin_mm = 5;
+  const PressSequence grid = grid_script(sensor, 10, 0, style);
+  // Centred 10 mm grid on 60 mm: nodes at 0, 10, …, 60; those ≥ 5 mm inside are 10 … 50: 5 × 5.
+  EXPECT_EQ(grid.size(), 25u);
+  expect_inside_margin(sensor, grid, 5);
+  const PressSequence jittered = grid_script(sensor, 10, 2, style);
+  ASSERT_EQ(jittered.size(), grid.size());
+  double largest_shift = 0;
+  for (std::size_t f = 0; f < grid.size(); ++f) {
+    const double shift = std::max(std::abs(jittered[f][0].x_mm - grid[f][0].x_mm), std::abs(jittered[f][0].y_mm - grid[f][0].y_mm));
+    EXPECT_LE(shift, 2.0);
+    largest_shift = std::max(largest_shift, shift);
+  }
+  EXPECT_GT(largest_shift, 0.5);  // the jitter does move presses
+}
+
+TEST(PressScripts, RandomPressesStayInsideAndFollowTheSeed) {
+  const Sensor sensor = load_sensor(test::source_path("examples/sensors/circle40.json"));
+  PressStyle style;
+  style.margin_mm = 6;
+  style.min_force_N = 2, style.max_force_N = 20;
+  const PressSequence a = random_script(sensor, 200, style);
+  ASSERT_EQ(a.size(), 200u);
+  expect_inside_margin(sensor, a, 6);
+  for (const auto& frame : a) {
+    EXPECT_GE(frame[0].force_N, 2.0);
+    EXPECT_LE(frame[0].force_N, 20.0);
+  }
+  EXPECT_EQ(random_script(sensor, 200, style)[17][0].x_mm, a[17][0].x_mm);  // same seed, same presses
+  style.seed = 2;
+  EXPECT_NE(random_script(sensor, 200, style)[17][0].x_mm, a[17][0].x_mm);
+}
+
+TEST(PressScripts, TwoFingersAreTheAskedDistanceApart) {
+  const Sensor sensor = default_sensor();
+  const PressSequence two = two_finger_script(sensor, 100, 12, 40, PressStyle{});
+  expect_inside_margin(sensor, two, PressStyle{}.margin_mm);
+  for (const auto& frame : two) {
+    ASSERT_EQ(frame.size(), 2u);
+    const double d = std::hypot(frame[0].x_mm - frame[1].x_mm, frame[0].y_mm - frame[1].y_mm);
+    EXPECT_GE(d, 12 - 1e-9);
+    EXPECT_LE(d, 40 + 1e-9);
+  }
+}
+
+TEST(PressScripts, MovingPressFollowsAStraightLine) {
+  const PressSequence path = moving_script(default_sensor(), 5, Vector2(10, 10), Vector2(50, 30), PressStyle{});
+  ASSERT_EQ(path.size(), 5u);
+  EXPECT_DOUBLE_EQ(path[2][0].x_mm, 30);
+  EXPECT_DOUBLE_EQ(path[2][0].y_mm, 20);
+  EXPECT_THROW(moving_script(default_sensor(), 5, Vector2(10, 10), Vector2(70, 30), PressStyle{}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace emit
