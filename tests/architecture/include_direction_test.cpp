@@ -125,11 +125,14 @@ TEST(IncludeDirection, EveryIncludePointsDown) {
 TEST(IncludeDirection, EveryFolderOfTheLibraryIsOnAFloor) {
   const fs::path root = EMIT_SOURCE_DIR;
   const auto floor_of = read_floors(root / "src/floors.txt");
-  for (const char* top : {"include/emit", "src"})
-    for (const auto& entry : fs::directory_iterator(root / top))
-      if (entry.is_directory())
+  for (const char* top : {"include/emit", "src"}) {
+    for (const auto& entry : fs::directory_iterator(root / top)) {
+      if (entry.is_directory()) {  // braces: EXPECT_TRUE expands to an if-else (gcc's -Wdangling-else)
         EXPECT_TRUE(floor_of.count(entry.path().filename().string()))
             << top << "/" << entry.path().filename().string() << " is on no floor of src/floors.txt";
+      }
+    }
+  }
 }
 
 // The check itself: a tree with one upward include and one sideways include on a shared floor

@@ -33,7 +33,7 @@ constexpr double live_fit_tolerance_mm = 0.5;
 
 struct LiveBench {
   Sensor sensor = default_sensor();
-  Pipeline pipeline{sensor, {.method = Method::fit, .cache_dir = test::temp_folder("live_cache")}};
+  Pipeline pipeline{sensor, {.method = Method::fit, .cache_dir = test::temp_folder("live_cache"), .excluded = {}}};
 };
 
 LiveBench& bench() {
