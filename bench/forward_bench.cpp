@@ -32,29 +32,29 @@ const Mesh& reconstruction_mesh() {
 const std::vector<Press> centre_press = {{30, 30, 5, 10}};
 
 void BM_MeshReconstruction(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(generate_mesh(sensor(), reconstruction_mesh_options(sensor())));
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(generate_mesh(sensor(), reconstruction_mesh_options(sensor())));
   state.counters["triangles"] = static_cast<double>(reconstruction_mesh().triangle_count());
 }
 
 void BM_MeshTwin(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(generate_mesh(sensor(), twin_mesh_options(sensor())));
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(generate_mesh(sensor(), twin_mesh_options(sensor())));
   state.counters["triangles"] = static_cast<double>(twin_mesh().triangle_count());
 }
 
 void BM_AssembleAndAnalyse(benchmark::State& state, const Mesh& (*mesh)()) {
-  for (auto _ : state) benchmark::DoNotOptimize(ForwardModel(mesh(), sensor().sheet_resistance_ohm_per_sq));
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(ForwardModel(mesh(), sensor().sheet_resistance_ohm_per_sq));
   state.counters["triangles"] = static_cast<double>(mesh().triangle_count());
 }
 
 void BM_PressContact(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(press_contact_load(twin_mesh(), centre_press, sensor().contact));
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(press_contact_load(twin_mesh(), centre_press, sensor().contact));
 }
 
 // One frame: one factorisation, N solves (the regrounding trick).
 void BM_Frame(benchmark::State& state, const Mesh& (*mesh)()) {
   const ForwardModel model(mesh(), sensor().sheet_resistance_ohm_per_sq);
   const ContactLoad contact = press_contact_load(mesh(), centre_press, sensor().contact);
-  for (auto _ : state) benchmark::DoNotOptimize(model.solve_frame(contact, sensor().drive_voltage_V));
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(model.solve_frame(contact, sensor().drive_voltage_V));
   state.counters["triangles"] = static_cast<double>(mesh().triangle_count());
 }
 
@@ -67,7 +67,7 @@ void BM_FrameNaive(benchmark::State& state, const Mesh& (*mesh)()) {
   const SparseMatrix F = K + C;
   const Vector b = sensor().drive_voltage_V * (C * Vector::Ones(dofs.dof_count));
   const int n = dofs.dof_count, N = dofs.electrode_count;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     for (int l = 0; l < N; ++l) {
       // The system with dof l removed: reduced index r = d − (d > l).
       std::vector<Eigen::Triplet<double, int>> grounded;

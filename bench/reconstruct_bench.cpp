@@ -47,7 +47,7 @@ void BM_PaperFrame(benchmark::State& state) {
   Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
 }
 
 /// The paper method's image alone, δφ = R·δV: the compact operator the per-frame path applies
@@ -62,7 +62,7 @@ void BM_PaperImageCompact(benchmark::State& state) {
   const Vector dV = bench_difference();
   Vector image(b.model.op.rows());
   CompactOperatorScratch scratch = b.model.op.scratch();
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     b.model.op.apply(dV, image, scratch);
     benchmark::DoNotOptimize(image.data());
   }
@@ -75,7 +75,7 @@ void BM_PaperImageDense(benchmark::State& state) {
   const Matrix R = build_reconstruction_operator(compute_jacobian(b.model.mesh, b.model.measurements), b.model.mesh,
                                                  b.model.options);
   Vector image(R.rows());
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     image.noalias() = R * dV;
     benchmark::DoNotOptimize(image.data());
   }
@@ -92,7 +92,7 @@ void fit_frames(benchmark::State& state, const std::vector<Frame>& frames, bool 
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   double evaluations = 0, contacts = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const std::size_t back_and_forth = f++ % (2 * frames.size());
     const std::size_t i = back_and_forth < frames.size() ? back_and_forth : 2 * frames.size() - 1 - back_and_forth;
     contacts += static_cast<double>(reconstructor.process(frames[i]).size());
@@ -117,7 +117,7 @@ void BM_PredictWoodbury(benchmark::State& state) {
   FramePredictor predictor(b.fit_model.mesh, b.fit_model.green);
   const ContactLoad load = fit_sized_contact();
   Frame frame;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     predictor.predict(load.triangles, load.local_S, b.sensor.drive_voltage_V, frame);
     benchmark::DoNotOptimize(frame.data());
   }
@@ -128,7 +128,7 @@ void BM_PredictSparse(benchmark::State& state) {
   Bench& b = bench();
   const ForwardModel model(b.fit_model.mesh, b.sensor.sheet_resistance_ohm_per_sq);
   const ContactLoad load = fit_sized_contact();
-  for (auto _ : state) benchmark::DoNotOptimize(model.solve_frame(load, b.sensor.drive_voltage_V).data());
+  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(model.solve_frame(load, b.sensor.drive_voltage_V).data());
 }
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);

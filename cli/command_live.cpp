@@ -23,13 +23,16 @@ class StopOnSignals {
     sigaction(SIGINT, &action, &old_int_);
     sigaction(SIGTERM, &action, &old_term_);
   }
+  StopOnSignals(const StopOnSignals&) = delete;  // one owner restores the old handlers, once
+  StopOnSignals& operator=(const StopOnSignals&) = delete;
   ~StopOnSignals() {
     sigaction(SIGINT, &old_int_, nullptr);
     sigaction(SIGTERM, &old_term_, nullptr);
   }
 
  private:
-  struct sigaction old_int_ {}, old_term_ {};
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
 };
 
 struct LiveArgs {
@@ -46,7 +49,7 @@ void run_live(const LiveJob& job) {
   std::fprintf(say, "source: %s\n", session.source_description().c_str());
   if (!job.serve.empty()) std::fprintf(say, "viewer: %s\n", session.viewer_url().c_str());
   const std::string stopping = job.frames    ? "stopping after " + std::to_string(job.frames) + " frames"
-                               : job.seconds ? "stopping after " + std::to_string(static_cast<int>(job.seconds)) + " s (Ctrl-C stops sooner)"
+                               : job.seconds != 0 ? "stopping after " + std::to_string(static_cast<int>(job.seconds)) + " s (Ctrl-C stops sooner)"
                                              : std::string("Ctrl-C stops");
   std::fprintf(say, "reconstructing with the %s method; %s\n", method_name(job.method), stopping.c_str());
   std::fflush(say);

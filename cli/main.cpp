@@ -8,7 +8,9 @@
 #include "emit/core/errors.hpp"
 #include "emit/core/threads.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
                "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
   app.name("emit");
@@ -46,4 +48,20 @@ int main(int argc, char** argv) {
     return 3;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // What the command line's set-up throws (CLI11's construction errors, bad_alloc) ends here as an
+  // internal error, not in std::terminate.
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "emit: internal error: %s\n", e.what());
+    return 3;
+  } catch (...) {
+    std::fprintf(stderr, "emit: internal error\n");
+    return 3;
+  }
 }

@@ -33,7 +33,7 @@ SerialSource::SerialSource(std::string path, unsigned baud, const Sensor& sensor
       queue_(queue_capacity) {
   for (SourceFrame& slot : queue_) {
     slot.volts.resize(electrode_count_, electrode_count_);
-    slot.raw.counts.resize(static_cast<std::size_t>(electrode_count_ * electrode_count_));
+    slot.raw.counts.resize(static_cast<std::size_t>(electrode_count_) * static_cast<std::size_t>(electrode_count_));
   }
   port_.open(path_, baud_);
 }

@@ -31,7 +31,7 @@ ContactLawFit fit_contact_law(const std::vector<double>& pressure, const std::ve
       throw InvalidInput("pair " + std::to_string(i) + ": pressure and resistance must be positive");
   // Log-linear start, then the relative-error fit.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(pressure.size());
+  const auto n = static_cast<double>(pressure.size());
   for (std::size_t i = 0; i < pressure.size(); ++i) {
     const double x = std::log(pressure[i]), y = std::log(resistance[i]);
     sx += x, sy += y, sxx += x * x, sxy += x * y;

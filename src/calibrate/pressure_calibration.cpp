@@ -88,7 +88,7 @@ PressureFit fit_pressure_calibration(const std::vector<PressureSample>& samples)
     const double x = std::log(mean_dphi(s)), y = std::log(s.true_pressure_N_per_mm2);
     sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
-  const double n = static_cast<double>(samples.size());
+  const auto n = static_cast<double>(samples.size());
   const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   const double intercept = (sy - slope * sx) / n;
   double a3 = slope > 0.05 ? -slope : -1.0;

@@ -1,5 +1,6 @@
 #include "emit/eval/evaluation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace emit {
@@ -8,6 +9,7 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
   SimulatedRun run;
   run.presses = presses;
   std::vector<Frame> references;
+  references.reserve(static_cast<std::size_t>(std::max(reference_frames, 0)));
   for (int i = 0; i < reference_frames; ++i) references.push_back(twin.frame({}));
   run.reference = average_frames(references);
   for (const auto& frame_presses : presses) run.frames.push_back(twin.frame(frame_presses));

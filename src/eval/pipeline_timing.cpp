@@ -97,6 +97,7 @@ void time_per_frame(const ReconstructionModel& model, const Sensor& sensor, cons
   const int N = model.measurements.electrode_count;
   reconstructor.set_reference(Frame::Zero(N, N));
   std::vector<Frame> full_frames;
+  full_frames.reserve(frames.size());
   for (const Vector& dV : frames) full_frames.push_back(as_frame(model.measurements, dV));
   CompactOperatorScratch scratch = model.op.scratch();
   const auto count = frames.size();

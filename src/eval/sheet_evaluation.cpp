@@ -1,5 +1,7 @@
 #include "emit/eval/sheet_evaluation.hpp"
 
+#include "emit/core/errors.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -108,6 +110,7 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
   }
   for (const SweepPoint& point : result.sweep)
     if (!best || point.image_centroid.mean < best->image_centroid.mean) best = &point;
+  if (!best) throw InvalidInput("eval: no λ² to sweep");  // an empty --lambda2 list, or lambdas_per_decade < 0
   result.lambda2 = best->lambda2;
   result.position = best->image_centroid;
   result.strongest_contact = best->strongest_contact;
@@ -222,33 +225,33 @@ std::string file_stem(const std::string& name) {
 
 }  // namespace
 
-SheetEvaluation evaluate_sheet(const EvalCase& c, const EvalOptions& options, const Progress& progress) {
+SheetEvaluation evaluate_sheet(const EvalCase& eval_case, const EvalOptions& options, const Progress& progress) {
   SheetEvaluation evaluation;
   progress.say("  simulating");
-  const Runs runs = simulate_case(c, options);
+  const Runs runs = simulate_case(eval_case, options);
   evaluation.grid_presses = runs.grid.presses.size();
   ReconstructionModel model;
-  model.mesh = generate_mesh(c.sensor, reconstruction_mesh_options(c.sensor));
+  model.mesh = generate_mesh(eval_case.sensor, reconstruction_mesh_options(eval_case.sensor));
   model.measurements = make_measurement_set(model.mesh.electrode_count());
-  model.uncalibrated = LinearCalibration::uncalibrated(c.sensor);
+  model.uncalibrated = LinearCalibration::uncalibrated(eval_case.sensor);
   evaluation.triangles = static_cast<long>(model.mesh.triangle_count());
   const Matrix J = compute_jacobian(model.mesh, model.measurements);
   for (Method method : options.methods) {
     progress.say(std::string("  ") + method_name(method));
-    evaluation.methods.push_back(method == Method::fit ? evaluate_fit(c, runs, model, J)
-                                                       : evaluate_linear(c, runs, model, J, method, options));
+    evaluation.methods.push_back(method == Method::fit ? evaluate_fit(eval_case, runs, model, J)
+                                                       : evaluate_linear(eval_case, runs, model, J, method, options));
     if (method == Method::paper) evaluation.mismatch_lambda2 = evaluation.methods.back().lambda2;
   }
-  if (c.pressure_and_two_press && evaluation.mismatch_lambda2 > 0 && options.mismatches) {
+  if (eval_case.pressure_and_two_press && evaluation.mismatch_lambda2 > 0 && options.mismatches) {
     const bool with_fit = std::find(options.methods.begin(), options.methods.end(), Method::fit) != options.methods.end();
-    const std::optional<FitModel> fit_model = with_fit ? std::optional<FitModel>(build_fit_model(c.sensor)) : std::nullopt;
+    const std::optional<FitModel> fit_model = with_fit ? std::optional<FitModel>(build_fit_model(eval_case.sensor)) : std::nullopt;
     evaluation.mismatches =
-        evaluate_mismatches(c, evaluation.mismatch_lambda2, options, fit_model ? &*fit_model : nullptr, progress);
+        evaluate_mismatches(eval_case, evaluation.mismatch_lambda2, options, fit_model ? &*fit_model : nullptr, progress);
   }
   return evaluation;
 }
 
-std::vector<std::string> write_sweep_plots(const EvalCase& c, const SheetEvaluation& evaluation, const std::string& dir) {
+std::vector<std::string> write_sweep_plots(const EvalCase& eval_case, const SheetEvaluation& evaluation, const std::string& dir) {
   std::vector<PlotSeries> errors, l_curves;
   for (std::size_t i = 0; i < evaluation.methods.size(); ++i) {
     const MethodEvaluation& m = evaluation.methods[i];
@@ -264,21 +267,21 @@ std::vector<std::string> write_sweep_plots(const EvalCase& c, const SheetEvaluat
       char label[24] = "";
       if (std::abs(decade - std::round(decade)) < 1e-9 && static_cast<long>(std::round(decade)) % 2 == 0)
         std::snprintf(label, sizeof label, "1e%ld", static_cast<long>(std::round(decade)));
-      l.point_labels.push_back(label);
+      l.point_labels.emplace_back(label);
     }
     errors.push_back(error);
     l_curves.push_back(l);
   }
   if (errors.empty()) return {};  // no method with a λ (fit alone): nothing to plot
   std::filesystem::create_directories(dir);
-  const std::string stem = dir + "/" + file_stem(c.name);
+  const std::string stem = dir + "/" + file_stem(eval_case.name);
   PlotOptions options;
-  options.title = c.name + ": positional error versus λ²";
+  options.title = eval_case.name + ": positional error versus λ²";
   options.x_label = "λ²";
   options.y_label = "mean error (mm)";
   options.log_x = true;
   write_png(render_line_plot(errors, options), stem + "_error_vs_lambda.png");
-  options.title = c.name + ": L-curve (labels: λ²)";
+  options.title = eval_case.name + ": L-curve (labels: λ²)";
   options.x_label = "misfit |J·δφ - δV| (V)";
   options.y_label = "image norm |δφ| (V)";
   options.log_x = options.log_y = true;

@@ -146,7 +146,7 @@ SparseMatrix SupernodalCholesky::selected_inverse() const {
   const Supernodes sn(L);
   const auto* l = static_cast<const double*>(L.x);
   // Z on the factor's blocks, same layout as L (26 MB at 93k triangles: huge pages, as J's).
-  Vector z = large_matrix<Vector>(static_cast<Index>(L.xsize), 1);
+  auto z = large_matrix<Vector>(static_cast<Index>(L.xsize), 1);
   std::vector<double> Y, Zrr;  // scratch: L_RC L_CC⁻¹ and Z(R, R)
   std::vector<int> position(L.n);
   // Block Takahashi, supernodes from the last: for columns C and the rows R below them,

@@ -92,11 +92,11 @@ void DiscContactIntegrator::bucket_triangles() {
   for (const Vector2& c : centroid_mm_) origin_mm_ = origin_mm_.cwiseMin(c), top = top.cwiseMax(c);
   columns_ = 1 + static_cast<int>((top.x() - origin_mm_.x()) / cell_mm_);
   rows_ = 1 + static_cast<int>((top.y() - origin_mm_.y()) / cell_mm_);
-  cell_start_.assign(static_cast<std::size_t>(columns_ * rows_ + 1), 0);
+  cell_start_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_) + 1, 0);
   const auto cell_of = [&](const Vector2& c) {
     return static_cast<int>((c.y() - origin_mm_.y()) / cell_mm_) * columns_ + static_cast<int>((c.x() - origin_mm_.x()) / cell_mm_);
   };
-  for (const Vector2& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c) + 1)];
+  for (const Vector2& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c)) + 1];
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
   cell_triangles_.resize(centroid_mm_.size());
   std::vector<int> filled(cell_start_.begin(), cell_start_.end() - 1);
@@ -113,9 +113,11 @@ void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool deri
   };
   const int x0 = cell(center.x() - reach, origin_mm_.x(), columns_), x1 = cell(center.x() + reach, origin_mm_.x(), columns_);
   const int y0 = cell(center.y() - reach, origin_mm_.y(), rows_), y1 = cell(center.y() + reach, origin_mm_.y(), rows_);
-  for (int row = y0; row <= y1; ++row)
-    for (int k = cell_start_[static_cast<std::size_t>(row * columns_ + x0)]; k < cell_start_[static_cast<std::size_t>(row * columns_ + x1 + 1)]; ++k)
+  for (int row = y0; row <= y1; ++row) {
+    const auto first_cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_);
+    for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)]; k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
       add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, out, derivatives);
+  }
 }
 
 void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLoad& out, bool derivatives) const {
@@ -127,7 +129,7 @@ void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLo
   const double area = mesh_->triangle_area_mm2(tri);
   out.triangles.push_back(tri);
   if (d + reach_mm_[t] <= r - h) {  // wholly inside: s = 1
-    out.local_S.push_back(g * area * uniform_integral());
+    out.local_S.emplace_back(g * area * uniform_integral());
     if (derivatives) out.d_local_S.push_back({Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()});
     return;
   }
@@ -150,7 +152,7 @@ void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLo
       d_local[2] += scale * piece.integral;
     }
   }
-  out.local_S.push_back(g * area * local);
+  out.local_S.emplace_back(g * area * local);
   if (derivatives) out.d_local_S.push_back({g * area * d_local[0], g * area * d_local[1], g * area * d_local[2]});
 }
 

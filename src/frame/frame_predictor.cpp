@@ -32,7 +32,8 @@ void FramePredictor::assemble_on_patch(const std::vector<Index>& triangles, cons
 }
 
 void FramePredictor::predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
-                             double E, Frame& frame) {
+                             double drive_voltage_V, Frame& frame) {
+  const double E = drive_voltage_V;
   const int N = green_.dofs.electrode_count;  // electrode e is dof e
   frame.setZero(N, N);
   if (triangles.empty()) return;

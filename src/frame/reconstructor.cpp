@@ -22,7 +22,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
     throw InvalidInput("threshold must be a fraction between 0 and 1, got " + std::to_string(options.threshold_fraction));
 }
 
-Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, FitCalibration calibration,
+Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
                              FrameOptions options)
     : Reconstructor(model, model.uncalibrated, options) {
   fitter_ = &fitter;

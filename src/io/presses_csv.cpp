@@ -40,6 +40,9 @@ PressSequence read_presses_csv(const std::string& path) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     long frame = -1;
     Press p;
+    // glibc's sscanf converts as strtol and strtod do (saturating on overflow); the field count
+    // rejects a malformed line, the check below a negative frame.
+    // NOLINTNEXTLINE(cert-err34-c)
     if (std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf", &frame, &p.x_mm, &p.y_mm, &p.radius_mm, &p.force_N) != 5 ||
         frame < 0)
       throw InvalidInput(path + ":" + std::to_string(line_number) + ": expected frame,x_mm,y_mm,radius_mm,force_N");

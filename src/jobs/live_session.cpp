@@ -64,7 +64,7 @@ bool LiveSession::calibrated() const { return impl_->pipeline->calibrated(); }
 std::uint64_t LiveSession::recorded_frames() const { return impl_->recorder ? impl_->recorder->frames() : 0; }
 
 LiveStats LiveSession::run(const std::atomic<bool>& stop) {
-  const LiveStats stats = impl_->loop->run(stop);
+  LiveStats stats = impl_->loop->run(stop);  // not const: returned by move
   if (impl_->recorder) impl_->recorder->close();
   return stats;
 }

@@ -27,6 +27,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void write_image(const Reconstructor& reconstructor, const std::vector<Contact>& contacts, std::size_t frame,
                  Method method, const std::string& dir) {
   std::vector<Circle> outlines;
+  outlines.reserve(contacts.size());
   for (const Contact& c : contacts) outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi)});
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");

@@ -49,7 +49,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
  public:
   WebSocketSession(tcp::socket socket, ServerState& state) : ws_(std::move(socket)), state_(state) {}
 
-  void start(http::request<http::string_body> request) {
+  void start(const http::request<http::string_body>& request) {  // async_accept reads it before returning
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
@@ -136,7 +136,7 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     const std::string target(request_.target());
     if (websocket::is_upgrade(request_) && target == "/ws") {
       stream_.expires_never();
-      std::make_shared<WebSocketSession>(stream_.release_socket(), state_)->start(std::move(request_));
+      std::make_shared<WebSocketSession>(stream_.release_socket(), state_)->start(request_);
       return;
     }
     const bool page = target == "/" || target == "/index.html";

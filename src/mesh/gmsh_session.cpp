@@ -4,6 +4,7 @@
 #include <map>
 #include <cctype>
 #include <optional>
+#include <ranges>
 
 #include <gmsh.h>
 
@@ -35,9 +36,9 @@ GmshSession::~GmshSession() {
 std::string GmshSession::last_error() {
   std::vector<std::string> log;
   gmsh::logger::get(log);
-  for (auto it = log.rbegin(); it != log.rend(); ++it)
-    if (it->rfind("Error", 0) == 0) {
-      std::string message = it->substr(it->find(':') == std::string::npos ? 0 : it->find(':') + 1);
+  for (const std::string& line : std::views::reverse(log))  // the last error first
+    if (line.rfind("Error", 0) == 0) {
+      std::string message = line.substr(line.find(':') == std::string::npos ? 0 : line.find(':') + 1);
       message.erase(0, message.find_first_not_of(' '));
       return message;
     }

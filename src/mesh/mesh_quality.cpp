@@ -27,7 +27,7 @@ MeshQuality measure_mesh_quality(const Mesh& mesh) {
     q.min_area_mm2 = std::min(q.min_area_mm2, area);
     q.total_area_mm2 += area;
   }
-  if (mesh.triangle_count() > 0) q.mean_edge_mm = edge_sum / (3.0 * mesh.triangle_count());
+  if (mesh.triangle_count() > 0) q.mean_edge_mm = edge_sum / (3.0 * static_cast<double>(mesh.triangle_count()));
   return q;
 }
 

@@ -44,7 +44,7 @@ DenseGreenFunction dense_green_function(const Mesh& mesh, const Vector& element_
   for (int first = 0; first < solved; first += block) {
     const int count = std::min(block, solved - first);
     Matrix unit = Matrix::Zero(n - 1, count);
-    for (int k = 0; k < count; ++k) unit(columns[static_cast<std::size_t>(1 + first + k)] - 1, k) = 1.0;
+    for (int k = 0; k < count; ++k) unit(columns[1 + static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] - 1, k) = 1.0;
     green.G0.block(1, 1 + first, n - 1, count) = cholesky.solve(unit);
     if (progress) progress(static_cast<double>(first + count) / solved);
   }

@@ -118,7 +118,7 @@ Eigen::MatrixXf OperatorFamily::prior_inverse_jt_times_in_float(const Matrix& X)
   // matrix is held (at 24k triangles its first touch alone took ~0.1 s; large_matrix.hpp).
   const Index rows = prior_ == Prior::identity ? J_.cols() : QiJt_.rows();
   constexpr Index block_rows = 2048;
-  Eigen::MatrixXf result = large_matrix<Eigen::MatrixXf>(rows, X.cols());
+  auto result = large_matrix<Eigen::MatrixXf>(rows, X.cols());
   Matrix block(std::min(block_rows, rows), X.cols());
   for (Index start = 0; start < rows; start += block_rows) {
     const Index n = std::min(block_rows, rows - start);

@@ -180,7 +180,7 @@ Image read_png(const std::string& path) {
   Image image(static_cast<int>(width), static_cast<int>(height));
   for (png_uint_32 y = 0; y < height; ++y)
     for (png_uint_32 x = 0; x < width; ++x) {
-      const png_byte* p = rows[y] + 3 * x;
+      const png_byte* p = rows[y] + 3 * std::size_t{x};
       image.set(static_cast<int>(x), static_cast<int>(y), {p[0], p[1], p[2]});
     }
   return image;

@@ -75,7 +75,7 @@ Border Border::rectangle(double width_mm, double height_mm) {
   return border;
 }
 
-Border Border::circle(Vector2 center_mm, double radius_mm) {
+Border Border::circle(const Vector2& center_mm, double radius_mm) {
   Border border;
   // Four quarter arcs: every piece spans less than π, as Gmsh's circle arcs require.
   for (int quarter = 0; quarter < 4; ++quarter)

@@ -70,7 +70,7 @@ class ObjectReader {
   static Vector2 check_point(const std::string& key_path, const json& v) {
     if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
       fail(key_path, "must be a point [x, y] in mm, got " + v.dump());
-    const Vector2 p(v[0].get<double>(), v[1].get<double>());
+    Vector2 p(v[0].get<double>(), v[1].get<double>());  // not const: returned by move
     if (!p.allFinite()) fail(key_path, "must be finite");
     return p;
   }

@@ -23,7 +23,8 @@ double segment_distance(const Vector2& p, const Vector2& a, const Vector2& b) {
 
 bool inside_triangle(const Vector2& p, const std::array<Vector2, 3>& t) {
   auto side = [&](int i) {
-    const Vector2 a = t[i], b = t[(i + 1) % 3];
+    const Vector2& a = t[i];
+    const Vector2& b = t[(i + 1) % 3];
     return (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
   };
   const double s0 = side(0), s1 = side(1), s2 = side(2);

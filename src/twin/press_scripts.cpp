@@ -39,7 +39,7 @@ class Sampler {
   bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
   Vector2 random_point() {
     for (int attempt = 0; attempt < 100000; ++attempt) {
-      const Vector2 p(uniform(box_.min().x(), box_.max().x()), uniform(box_.min().y(), box_.max().y()));
+      Vector2 p(uniform(box_.min().x(), box_.max().x()), uniform(box_.min().y(), box_.max().y()));
       if (admissible(p)) return p;
     }
     throw InvalidInput("no room for a press " + std::to_string(style_.margin_mm) + " mm from the border");

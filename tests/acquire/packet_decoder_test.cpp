@@ -23,9 +23,9 @@ using Bytes = std::vector<std::uint8_t>;
 
 /// Counts of frame `sequence`: distinct per frame and position, < 2^12.
 std::vector<std::uint16_t> counts_of(int n, std::uint32_t sequence) {
-  std::vector<std::uint16_t> counts(static_cast<std::size_t>(n * n));
+  std::vector<std::uint16_t> counts(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < counts.size(); ++i)
-    counts[i] = static_cast<std::uint16_t>((sequence * 131 + i * 7) % 4096);
+    counts[i] = static_cast<std::uint16_t>((std::size_t{sequence} * 131 + i * 7) % 4096);
   return counts;
 }
 
@@ -246,17 +246,17 @@ TEST(PacketDecoder, ImpossibleHeadersRejectedEvenWithAValidCrc) {
     reseal(p);
     return p;
   };
-  bad.push_back({"version 2", with(2, 2)});
-  bad.push_back({"N = 1", with(3, 1)});
-  bad.push_back({"N = 5 with length 32", with(3, 5)});
-  bad.push_back({"length 34", with(6, 34)});
-  bad.push_back({"0 ADC bits", with(4, 0)});
-  bad.push_back({"17 ADC bits", with(4, 17)});
-  bad.push_back({"oversampling 0", with(5, 0)});
+  bad.emplace_back("version 2", with(2, 2));
+  bad.emplace_back("N = 1", with(3, 1));
+  bad.emplace_back("N = 5 with length 32", with(3, 5));
+  bad.emplace_back("length 34", with(6, 34));
+  bad.emplace_back("0 ADC bits", with(4, 0));
+  bad.emplace_back("17 ADC bits", with(4, 17));
+  bad.emplace_back("oversampling 0", with(5, 0));
   Bytes high = packet(1, 4);  // a count of 4096 in a 12-bit frame
-  fw::store_u16_le(high.data() + 16 + 2 * 5, 4096);
+  fw::store_u16_le(high.data() + 16 + 2 * std::ptrdiff_t{5}, 4096);
   reseal(high);
-  bad.push_back({"count 4096 at 12 bits", high});
+  bad.emplace_back("count 4096 at 12 bits", high);
   for (const auto& [what, p] : bad) {
     Bytes stream = packet(0, 4);
     append(stream, p);

@@ -34,7 +34,7 @@ std::vector<RawFrame> board_like_frames(const Sensor& sensor, int count) {
     f.electrode_count = sensor.electrode_count();
     f.adc_bits = sensor.adc.bits;
     f.oversampling = 1 + k % 4;
-    f.counts.resize(static_cast<std::size_t>(f.electrode_count * f.electrode_count));
+    f.counts.resize(static_cast<std::size_t>(f.electrode_count) * static_cast<std::size_t>(f.electrode_count));
     for (auto& c : f.counts) c = static_cast<std::uint16_t>(code(rng));
     f.sequence = static_cast<std::uint32_t>(k);
     f.timestamp_us = 7'000'000u + 20'000u * static_cast<std::uint32_t>(k);

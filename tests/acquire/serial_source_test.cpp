@@ -182,6 +182,7 @@ TEST(SerialEndToEnd, GarbageMidStreamLosesOnlyTheFramesItTouches) {
   EXPECT_FALSE(source->next(extra, milliseconds(200)));  // nothing more arrives
 
   std::vector<std::uint64_t> sequences;
+  sequences.reserve(frames.size());
   for (const SourceFrame& f : frames) sequences.push_back(f.sequence);
   // Packets 5 (bytes inside) and 7 (bit flipped) are lost; the cut packet costs its neighbour nothing.
   EXPECT_EQ(sequences, (std::vector<std::uint64_t>{0, 1, 2, 3, 4, 6, 8, 9}));

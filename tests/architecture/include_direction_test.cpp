@@ -38,7 +38,7 @@ std::map<std::string, int> read_floors(const fs::path& path) {
 /// top folder (cli, bench).
 std::string folder_of(const fs::path& relative) {
   auto part = relative.begin();
-  const std::string top = part->string();
+  std::string top = part->string();
   if (top == "include" || top == "src") {
     if (top == "include") ++part;  // emit/
     ++part;

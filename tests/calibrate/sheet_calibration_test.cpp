@@ -96,7 +96,7 @@ TEST(SheetCalibration, TravelsInTheCalibrationFile) {
   write_calibration(dir + "/c.json", written);
   const Calibration loaded = load_calibration(dir + "/c.json");
   ASSERT_TRUE(std::holds_alternative<FitCalibration>(loaded));
-  const FitCalibration& read = std::get<FitCalibration>(loaded);
+  const auto& read = std::get<FitCalibration>(loaded);
   EXPECT_EQ(read.contact_law.alpha_ohm_mm2, 41000);
   ASSERT_TRUE(read.sheet_correction);
   EXPECT_EQ(read.sheet_correction->log_conductance, correction.log_conductance);

@@ -240,6 +240,7 @@ std::vector<int> reference_component_sizes(const Mesh& mesh, const std::vector<s
   for (int t = 0; t < mesh.triangle_count(); ++t)
     if (selected[t]) ++sizes[root(t)];
   std::vector<int> result;
+  result.reserve(sizes.size());
   for (const auto& [r, n] : sizes) result.push_back(n);
   std::sort(result.begin(), result.end());
   return result;
@@ -258,6 +259,7 @@ TEST(Contacts, RandomSelectionsMatchAReferenceLabelling) {
       if (coin(random)) frame.select(t, pressure(random));
     const auto& contacts = finder.find(frame.selected, frame.pressure, frame.weight);
     std::vector<int> sizes;
+    sizes.reserve(contacts.size());
     for (const Contact& c : contacts) sizes.push_back(c.element_count);
     std::sort(sizes.begin(), sizes.end());
     EXPECT_EQ(sizes, reference_component_sizes(mesh, frame.selected)) << "density " << density;

@@ -40,7 +40,7 @@ Mesh shuffled(const Mesh& mesh) {
 /// A triangle as its three corner positions, starting from the smallest so that a rotation of
 /// the same triangle compares equal (orientation is kept: no reflection).
 std::array<double, 6> corners(const Mesh& mesh, Index t) {
-  std::array<std::array<double, 2>, 3> p;
+  std::array<std::array<double, 2>, 3> p{};
   for (int k = 0; k < 3; ++k) p[k] = {mesh.nodes_mm(mesh.triangles(t, k), 0), mesh.nodes_mm(mesh.triangles(t, k), 1)};
   std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
   return {p[0][0], p[0][1], p[1][0], p[1][1], p[2][0], p[2][1]};

@@ -92,7 +92,7 @@ TEST_P(SensorValidation, NamesTheKeyAndSaysWhy) {
   }
 }
 
-json explicit_electrodes(std::vector<std::array<double, 3>> list) {
+json explicit_electrodes(const std::vector<std::array<double, 3>>& list) {
   json electrodes = json::array();
   for (const auto& [x, y, w] : list) electrodes.push_back({{"x_mm", x}, {"y_mm", y}, {"width_mm", w}});
   return electrodes;

@@ -3,7 +3,7 @@
 // path (/dev/pts/N) is what the host opens as a serial port. Raw mode, so every byte crosses
 // unchanged (no echo, no CR/LF mapping, no XON/XOFF).
 #include <fcntl.h>
-#include <stdlib.h>
+#include <stdlib.h>  // NOLINT(modernize-deprecated-headers): POSIX's posix_openpt, grantpt, ptsname
 #include <termios.h>
 #include <unistd.h>
 

@@ -12,11 +12,11 @@ namespace emit::test {
 
 Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny) {
   Mesh mesh;
-  mesh.nodes_mm.resize((nx + 1) * (ny + 1), 3);
+  mesh.nodes_mm.resize(Index{nx + 1} * (ny + 1), 3);
   auto node = [&](int i, int j) { return j * (nx + 1) + i; };
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) mesh.nodes_mm.row(node(i, j)) << width_mm * i / nx, height_mm * j / ny, 0.0;
-  mesh.triangles.resize(2 * nx * ny, 3);
+  mesh.triangles.resize(Index{2} * nx * ny, 3);
   int t = 0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {

@@ -167,7 +167,7 @@ TEST(Adc, QuantisesClipsAndAddsNoise) {
   Frame many = Frame::Constant(100, 100, 1.0);
   apply_adc(adc, many, rng);
   const double mean = many.mean();
-  const double sd = std::sqrt((many.array() - mean).square().sum() / (many.size() - 1));
+  const double sd = std::sqrt((many.array() - mean).square().sum() / static_cast<double>(many.size() - 1));
   const double expected = std::sqrt(0.001 * 0.001 + step * step / 12);
   EXPECT_NEAR(sd, expected, 5 * expected / std::sqrt(2.0 * many.size()));
 }

@@ -30,6 +30,8 @@ class ForwardModel {
   ~ForwardModel();
   ForwardModel(ForwardModel&&) noexcept;
   ForwardModel& operator=(ForwardModel&&) noexcept;
+  ForwardModel(const ForwardModel&) = delete;  // move-only: it owns its factor
+  ForwardModel& operator=(const ForwardModel&) = delete;
 
   const Mesh& mesh() const;
   int electrode_count() const;

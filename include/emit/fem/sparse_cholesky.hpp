@@ -20,6 +20,8 @@ class SparseCholesky {
   ~SparseCholesky();
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
+  SparseCholesky(const SparseCholesky&) = delete;  // move-only: it owns its factor
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
 
   /// Symbolic analysis of a symmetric matrix's pattern (only its lower triangle is read).
   void analyze(const SparseMatrix& pattern);

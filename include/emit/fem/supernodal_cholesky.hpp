@@ -23,6 +23,8 @@ class SupernodalCholesky {
   ~SupernodalCholesky();
   SupernodalCholesky(SupernodalCholesky&&) noexcept;
   SupernodalCholesky& operator=(SupernodalCholesky&&) noexcept;
+  SupernodalCholesky(const SupernodalCholesky&) = delete;  // move-only: it owns its factor
+  SupernodalCholesky& operator=(const SupernodalCholesky&) = delete;
 
   /// Analyse and factorise a symmetric positive definite matrix (only its lower triangle is
   /// read). \throw SolverError if it is not positive definite.

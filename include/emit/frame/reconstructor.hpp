@@ -35,7 +35,7 @@ class Reconstructor {
   /// the calibration's indenter area. `fitter`, built with the calibration's contact law and sheet
   /// (pipeline/pipeline.hpp does both) and on the model's measurements, must outlive this; one
   /// reconstructor at a time may use it. \throw InvalidInput for a bad option.
-  Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, FitCalibration calibration,
+  Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
                 FrameOptions options = {});
 
   /// The no-contact reference frame. \throw InvalidInput if it is not N×N or not finite.

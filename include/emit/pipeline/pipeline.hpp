@@ -52,6 +52,7 @@ class Pipeline {
            const std::string& calibration_source = "calibration");
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
+  ~Pipeline() = default;
 
   Method method() const { return method_; }
   bool calibrated() const { return calibrated_; }

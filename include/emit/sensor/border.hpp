@@ -27,7 +27,7 @@ class Border {
   /// Rectangle [0,w]×[0,h]; s = 0 at the bottom-left corner (the sensor description's origin).
   static Border rectangle(double width_mm, double height_mm);
   /// Circle; s = 0 at angle 0 (the +x point), as the default electrode layout numbers from there.
-  static Border circle(Vector2 center_mm, double radius_mm);
+  static Border circle(const Vector2& center_mm, double radius_mm);
   /// Simple polygon; s = 0 at points[0]. Clockwise input is reversed (then s = 0 is still points[0]).
   /// \throw InvalidInput if fewer than 3 points, zero area, or repeated consecutive points.
   static Border polygon(const std::vector<Vector2>& points_mm);
