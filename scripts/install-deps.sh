@@ -15,6 +15,7 @@ packages=(
   libgtest-dev libbenchmark-dev         # tests, benchmarks
   zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC
   clang libclang-rt-14-dev              # libFuzzer (clang++ -fsanitize=fuzzer) for the decoder's fuzz test
+  gcovr                                 # line coverage (scripts/coverage.sh)
   libboost-dev                          # the serial port and the live viewer's server (Boost.Asio, Beast)
   chromium                              # the live viewer's browser test (headless)
 )
