@@ -1,7 +1,8 @@
 // `emit eval` on one sheet (eval/sheet_evaluation.hpp), in-process on a coarse 30 mm sheet with
-// the paper method over a two-point λ² sweep and the sensor mismatches: the cases, the sweep, the
-// mismatches (the dead electrode found), and the plots. (Contact fitting's evaluation runs end to
-// end in tests/cli/cli_test.cpp, Cli.EvalMeasuresContactFitting.)
+// the paper method over a two-point λ² sweep: the cases, the sweep, pressure and two presses, and
+// the plots. (Contact fitting's evaluation runs end to end in tests/cli/cli_test.cpp,
+// Cli.EvalMeasuresContactFitting; the mismatches themselves are tests/twin/sensor_mismatch_test.cpp's,
+// their evaluation, five more twins, is left to `emit eval` to keep the suite quick.)
 #include "emit/eval/sheet_evaluation.hpp"
 
 #include <cstdio>
@@ -36,12 +37,13 @@ EvalCase coarse_30mm_case() {
   return c;
 }
 
-TEST(SheetEvaluation, PaperMethodSweepMismatchesAndPlots) {
+TEST(SheetEvaluation, PaperMethodSweepAndPlots) {
   const EvalCase c = coarse_30mm_case();
   EvalOptions options;
   options.methods = {Method::paper};
   options.lambda2 = {1e3, 1e4};
   options.quick = true;
+  options.mismatches = false;
   const SheetEvaluation e = evaluate_sheet(c, options);
   EXPECT_GT(e.grid_presses, 0u);
   EXPECT_GT(e.triangles, 0);
@@ -51,7 +53,7 @@ TEST(SheetEvaluation, PaperMethodSweepMismatchesAndPlots) {
               paper.lambda2, paper.position.mean, paper.position.std, paper.position.count,
               paper.pressure_error_N_per_mm2.value_or(-1));
   ASSERT_EQ(paper.sweep.size(), 2u);
-  // The best of the sweep is kept, and used for the mismatches.
+  // The best of the sweep is kept, and would be used for the mismatches.
   EXPECT_EQ(paper.position.mean, std::min(paper.sweep[0].image_centroid.mean, paper.sweep[1].image_centroid.mean));
   EXPECT_EQ(e.mismatch_lambda2, paper.lambda2);
   // The paper reports 1.74 mm on its 30 mm sheet; a coarse mesh may do worse, but a broken
@@ -71,13 +73,7 @@ TEST(SheetEvaluation, PaperMethodSweepMismatchesAndPlots) {
   ASSERT_TRUE(paper.two_press.has_value());
   EXPECT_EQ(paper.two_press->frames, 10);  // quick: 10 two-finger frames
 
-  // The five mismatches; only the disconnected electrode is found dead, and without fit none is fitted.
-  ASSERT_EQ(e.mismatches.size(), 5u);
-  for (const MismatchEvaluation& m : e.mismatches) {
-    EXPECT_EQ(m.dead_electrode_found, m.name == "electrode 5 disconnected") << m.name;
-    EXPECT_FALSE(m.fit.has_value());
-    EXPECT_EQ(m.paper.missed, 0) << m.name;
-  }
+  EXPECT_TRUE(e.mismatches.empty());
 
   const std::string dir = test::temp_folder("sheet_evaluation") + "/plots";
   const auto plots = write_sweep_plots(c, e, dir);

@@ -6,14 +6,19 @@
 
 #include <atomic>
 #include <cstring>
-#include <functional>
 #include <stdexcept>
 #include <thread>
 
 #include <utility>  // before Boost 1.74's Asio, which uses std::exchange without it under C++20
 
+// g++ 12 at -O2 with the sanitizers warns, wrongly, that a boost::optional in Beast's HTTP response
+// parser (basic_parser::content_length_unchecked, reached by the WebSocket client's handshake)
+// may be used uninitialised; the warning is Boost's, not this file's.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/asio.hpp>
 #include <boost/beast.hpp>
+#pragma GCC diagnostic pop
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -26,34 +31,32 @@ namespace emit {
 namespace {
 
 namespace beast = boost::beast;
-namespace http = beast::http;
 namespace net = boost::asio;
 using tcp = net::ip::tcp;
 
+// Two requests on one connection, the second asking to close it: the page, then 404, read as the
+// raw bytes the server sends.
 TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
   LiveServer server("localhost:0", mesh, "strip", {});
   EXPECT_EQ(server.url(), "http://localhost:" + std::to_string(server.port()) + "/");
   net::io_context io;
-  beast::tcp_stream stream(io);
-  stream.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())));
-  auto get = [&](const std::string& target) {
-    http::request<http::empty_body> request(http::verb::get, target, 11);
-    request.set(http::field::host, "localhost");
-    request.keep_alive(true);
-    http::write(stream, request);
-    beast::flat_buffer buffer;
-    http::response<http::string_body> response;
-    http::read(stream, buffer, response);
-    return response;
-  };
-  const auto page = get("/");
-  EXPECT_EQ(page.result(), http::status::ok);
-  EXPECT_EQ(page[http::field::content_type], "text/html; charset=utf-8");
-  EXPECT_EQ(page.body(), std::string(viewer_page()));
-  const auto missing = get("/favicon.ico");  // the same connection, kept alive
-  EXPECT_EQ(missing.result(), http::status::not_found);
-  EXPECT_EQ(missing.body(), "not found: /favicon.ico\n");
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+  net::write(socket, net::buffer(std::string("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n"
+                                             "GET /favicon.ico HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")));
+  std::string text;
+  beast::error_code ec;
+  net::read(socket, net::dynamic_buffer(text), ec);  // until the server closes the connection
+  EXPECT_EQ(ec, net::error::eof);
+  EXPECT_EQ(text.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << text.substr(0, 200);
+  const auto page = text.find(viewer_page());
+  ASSERT_NE(page, std::string::npos);
+  EXPECT_NE(text.substr(0, page).find("Content-Type: text/html; charset=utf-8\r\n"), std::string::npos);
+  const std::string rest = text.substr(page + viewer_page().size());
+  EXPECT_EQ(rest.rfind("HTTP/1.1 404 Not Found\r\n", 0), 0u) << rest;
+  const std::string body = "\r\n\r\nnot found: /favicon.ico\n";
+  EXPECT_EQ(rest.substr(rest.size() - std::min(rest.size(), body.size())), body) << rest;
   EXPECT_EQ(server.clients(), 0u);  // HTTP clients are not viewers
 }
 
