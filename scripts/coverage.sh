@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measures the test suite's line coverage of the library (src/ only): installs what emit needs
 # (gcovr included), builds with gcc's --coverage (-Og, no sanitizers) in build-coverage/, runs the
-# suite there, and prints a table per file with the total; the HTML report goes to
+# suite there, and prints a table per file (the lowest last) and the total; the HTML report goes to
 # build-coverage/coverage/index.html. Left out of the run: the decoder's fuzz test (a separate
 # clang++ build, which writes no gcc coverage) and the browser test (the viewer's JavaScript; the
 # server it drives is covered by tests/live/live_server_test.cpp).
