@@ -16,6 +16,7 @@ packages=(
   zlib1g-dev                            # zlib's crc32: the tests' independent check of the packet CRC
   clang libclang-rt-14-dev              # libFuzzer (clang++ -fsanitize=fuzzer) for the decoder's fuzz test
   clang-format clang-tidy               # scripts/lint.sh: formatting and static analysis
+  gcovr                                 # line coverage (scripts/coverage.sh)
   libboost-dev                          # the serial port and the live viewer's server (Boost.Asio, Beast)
   chromium                              # the live viewer's browser test (headless)
 )

@@ -11,6 +11,7 @@
 #include "emit/acquire/device_source.hpp"
 #include "emit/acquire/file_source.hpp"
 #include "emit/acquire/recorder.hpp"
+#include "emit/acquire/recording.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/adc.hpp"
@@ -194,6 +195,35 @@ TEST(Recording, MalformedFilesAreOneLineErrorsNamingTheFile) {
   eight.electrodes.resize(8);
   EXPECT_EQ(replay_error(good, eight), good + ": recorded with 16 electrodes, but the sensor has 8");
   EXPECT_THROW(open_device_source("file:" + folder + "/missing.bin", sensor, {}), IoError);
+}
+
+// The 32-byte header round trips exactly (vref as the double's own bits), and each field that
+// cannot be is named.
+TEST(Recording, HeaderRoundTripsAndImpossibleFieldsAreNamed) {
+  const RecordingHeader header{32, 10, 3.3, 1'700'000'000'123'456u};
+  std::uint8_t bytes[recording_header_size];
+  encode_recording_header(header, bytes);
+  const RecordingHeader back = decode_recording_header(bytes, "r.emitrec");
+  EXPECT_EQ(back.electrode_count, 32);
+  EXPECT_EQ(back.adc_bits, 10);
+  EXPECT_EQ(back.vref_V, 3.3);
+  EXPECT_EQ(back.start_unix_us, header.start_unix_us);
+  auto error_of = [](RecordingHeader h, std::uint16_t version, std::uint16_t size) -> std::string {
+    std::uint8_t b[recording_header_size];
+    encode_recording_header(h, b);
+    b[8] = static_cast<std::uint8_t>(version), b[9] = 0, b[10] = static_cast<std::uint8_t>(size), b[11] = 0;
+    try {
+      decode_recording_header(b, "r.emitrec");
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(error_of(header, 2, 32), "r.emitrec: recording format version 2; this emit reads version 1");
+  EXPECT_EQ(error_of(header, 1, 40), "r.emitrec: recording header size 40 bytes; version 1 has 32");
+  EXPECT_EQ(error_of({65, 10, 3.3, 0}, 1, 32), "r.emitrec: recording header: electrode count 65 is outside 2..64");
+  EXPECT_EQ(error_of({16, 17, 3.3, 0}, 1, 32), "r.emitrec: recording header: ADC bits 17 outside 1..16");
+  EXPECT_EQ(error_of({16, 12, -3.3, 0}, 1, 32), "r.emitrec: recording header: the ADC reference voltage is not a positive number");
 }
 
 }  // namespace

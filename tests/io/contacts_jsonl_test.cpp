@@ -1,0 +1,86 @@
+// Contacts as JSON Lines (io/contacts_jsonl.hpp), beside tests/frame/contacts_test.cpp's round
+// trips: the documented line byte for byte, unknown keys ignored, and the exact message for each
+// way a line is not contacts.
+#include "emit/io/contacts_jsonl.hpp"
+
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+namespace {
+
+Contact linear_contact() {
+  Contact c;
+  c.x_mm = 21.5;
+  c.y_mm = 37.25;
+  c.area_mm2 = 78.5;
+  c.pressure_N_per_mm2 = 0.125;
+  c.peak_pressure_N_per_mm2 = 0.25;
+  c.force_N = 9.8125;
+  return c;
+}
+
+// The README's format, byte for byte: the values above have at most 6 significant digits, so %.6g
+// prints them as they are.
+TEST(ContactsJsonl, WritesTheDocumentedLine) {
+  std::ostringstream out;
+  write_contacts_line(out, 7, {linear_contact()});
+  EXPECT_EQ(out.str(),
+            "{\"frame\": 7, \"contacts\": [{\"x_mm\": 21.5, \"y_mm\": 37.25, \"area_mm2\": 78.5, "
+            "\"pressure_N_per_mm2\": 0.125, \"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125}]}\n");
+  std::ostringstream empty;
+  write_contacts_line(empty, 0, {});
+  EXPECT_EQ(empty.str(), "{\"frame\": 0, \"contacts\": []}\n");
+}
+
+// A non-finite contact field is tests/frame/contacts_test.cpp's; a non-finite misfit is refused too.
+TEST(ContactsJsonl, RefusesANonFiniteMisfit) {
+  std::ostringstream out;
+  try {
+    write_contacts_line(out, 4, {}, std::numeric_limits<double>::infinity());
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "contacts of frame 4: the fit's misfit is not finite");
+  }
+  EXPECT_TRUE(out.str().empty()) << "no half line";
+}
+
+// A reader keeps working when the format gains a key.
+TEST(ContactsJsonl, UnknownKeysAreIgnored) {
+  const auto read = parse_contacts_line(
+      R"({"frame": 2, "new": true, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "colour": "red"}]})");
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_EQ(read[0].force_N, 6.0);
+}
+
+class ContactsJsonlBad : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(ContactsJsonlBad, SaysWhatIsWrong) {
+  try {
+    parse_contacts_line(GetParam().first);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), GetParam().second);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Errors, ContactsJsonlBad,
+    ::testing::Values(
+        std::pair{"[1]", "contacts line: not a JSON object"},
+        std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
+        std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
+        std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
+        std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
+        std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})", "contacts line: contact 0: missing \"y_mm\""},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
+                  "contacts line: contact 0: \"x_mm\" is not a finite number"}));
+
+}  // namespace
+}  // namespace emit

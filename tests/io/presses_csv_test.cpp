@@ -1,0 +1,60 @@
+// Ground truth as CSV (io/presses_csv.hpp): simultaneous presses share a frame, frames without a
+// press stay empty, and a malformed file names its line.
+#include "emit/io/presses_csv.hpp"
+
+#include <fstream>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+// Positions with 4 decimals and forces with 6 are written exactly for these values (binary
+// fractions), so they read back equal.
+TEST(PressesCsv, RoundTripKeepsFramesAndSimultaneousPresses) {
+  const std::string path = test::temp_folder("presses_csv") + "/p.csv";
+  const PressSequence sequence = {{{10.5, 20.25, 5, 12.5}}, {}, {{1, 2, 3, 4}, {5.75, 6, 2.5, 0.5}}};
+  write_presses_csv(path, sequence);
+  const std::string text = test::read_text(path);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2");
+  // The pressure column is force / (π r²): 12.5 / (25π) = 0.159155 to 6 decimals.
+  EXPECT_NE(text.find("0,10.5000,20.2500,5.0000,12.500000,0.159155\n"), std::string::npos) << text;
+  const PressSequence read = read_presses_csv(path);
+  ASSERT_EQ(read.size(), 3u);
+  ASSERT_EQ(read[0].size(), 1u);
+  EXPECT_TRUE(read[1].empty());
+  ASSERT_EQ(read[2].size(), 2u);
+  EXPECT_EQ(read[2][1].x_mm, 5.75);
+  EXPECT_EQ(read[2][1].radius_mm, 2.5);
+  EXPECT_EQ(read[2][1].force_N, 0.5);
+  EXPECT_EQ(read[0][0].y_mm, 20.25);
+  EXPECT_NEAR(read[0][0].pressure_N_per_mm2(), 12.5 / (std::numbers::pi * 25), 1e-15);
+}
+
+std::string error_of(const std::string& path) {
+  try {
+    read_presses_csv(path);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(PressesCsv, ErrorsNameTheLine) {
+  const std::string dir = test::temp_folder("presses_csv_bad");
+  std::ofstream(dir + "/header.csv") << "x,y\n";
+  EXPECT_EQ(error_of(dir + "/header.csv"),
+            dir + "/header.csv:1: expected the header \"frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\"");
+  std::ofstream(dir + "/row.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4\n\n1,1,2,three,4\n";
+  EXPECT_EQ(error_of(dir + "/row.csv"), dir + "/row.csv:4: expected frame,x_mm,y_mm,radius_mm,force_N");
+  std::ofstream(dir + "/negative.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n-1,1,2,3,4\n";
+  EXPECT_EQ(error_of(dir + "/negative.csv"), dir + "/negative.csv:2: expected frame,x_mm,y_mm,radius_mm,force_N");
+  EXPECT_EQ(error_of(dir + "/none.csv"), dir + "/none.csv: cannot open presses file (No such file or directory)");
+}
+
+}  // namespace
+}  // namespace emit

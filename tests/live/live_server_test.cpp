@@ -1,0 +1,139 @@
+// The viewer's server (live/live_server.hpp) with a small mesh and no loop: the page over HTTP
+// (and 404 elsewhere) on one kept-alive connection; over the WebSocket the mesh message, frames
+// one at a time with a newer waiting frame replacing an older one, and commands, a failing one
+// included; addresses that are not HOST:PORT refused naming the part.
+#include "emit/live/live_server.hpp"
+
+#include <atomic>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+#include <utility>  // before Boost 1.74's Asio, which uses std::exchange without it under C++20
+
+// g++ 12 at -O2 with the sanitizers warns, wrongly, that a boost::optional in Beast's HTTP response
+// parser (basic_parser::content_length_unchecked, reached by the WebSocket client's handshake)
+// may be used uninitialised; the warning is Boost's, not this file's.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/asio.hpp>
+#include <boost/beast.hpp>
+#pragma GCC diagnostic pop
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "emit/core/errors.hpp"
+#include "emit/live/viewer_messages.hpp"
+#include "emit/live/viewer_page.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+namespace beast = boost::beast;
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+// Two requests on one connection, the second asking to close it: the page, then 404, read as the
+// raw bytes the server sends.
+TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  LiveServer server("localhost:0", mesh, "strip", {});
+  EXPECT_EQ(server.url(), "http://localhost:" + std::to_string(server.port()) + "/");
+  net::io_context io;
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+  net::write(socket, net::buffer(std::string("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n"
+                                             "GET /favicon.ico HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")));
+  std::string text;
+  beast::error_code ec;
+  net::read(socket, net::dynamic_buffer(text), ec);  // until the server closes the connection
+  EXPECT_EQ(ec, net::error::eof);
+  EXPECT_EQ(text.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << text.substr(0, 200);
+  const auto page = text.find(viewer_page());
+  ASSERT_NE(page, std::string::npos);
+  EXPECT_NE(text.substr(0, page).find("Content-Type: text/html; charset=utf-8\r\n"), std::string::npos);
+  const std::string rest = text.substr(page + viewer_page().size());
+  EXPECT_EQ(rest.rfind("HTTP/1.1 404 Not Found\r\n", 0), 0u) << rest;
+  const std::string body = "\r\n\r\nnot found: /favicon.ico\n";
+  EXPECT_EQ(rest.substr(rest.size() - std::min(rest.size(), body.size())), body) << rest;
+  EXPECT_EQ(server.clients(), 0u);  // HTTP clients are not viewers
+}
+
+// A viewer: the mesh exactly as mesh_message writes it; then a frame; while it is unacknowledged
+// two more are published, and after "ack" only the newer comes (the older was replaced).
+TEST(LiveServer, OneFrameInFlightAndTheNewestWaiting) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  std::atomic<int> commands{0};
+  LiveServer server("127.0.0.1:0", mesh, "strip", [&](const std::string& command) {
+    ++commands;
+    if (command == "fail") throw std::runtime_error("a command that fails");
+  });
+  net::io_context io;
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+  beast::websocket::stream<tcp::socket> ws(std::move(socket));
+  ws.handshake("127.0.0.1", "/ws");
+  beast::flat_buffer buffer;
+  ws.read(buffer);
+  EXPECT_TRUE(ws.got_text());
+  EXPECT_EQ(beast::buffers_to_string(buffer.data()), mesh_message(mesh, "strip"));
+  buffer.consume(buffer.size());
+  EXPECT_EQ(server.clients(), 1u);  // counted before the mesh was sent
+
+  const std::vector<Contact> contacts;
+  const Vector pressure = Vector::Zero(mesh.triangle_count());
+  LiveFrame frame;
+  frame.contacts = &contacts;
+  frame.pressure_N_per_mm2 = &pressure;
+  auto index_of_next = [&] {
+    ws.read(buffer);
+    EXPECT_TRUE(ws.got_binary());
+    const std::string bytes = beast::buffers_to_string(buffer.data());
+    buffer.consume(buffer.size());
+    std::uint32_t header = 0;
+    std::memcpy(&header, bytes.data(), 4);
+    return nlohmann::json::parse(bytes.substr(4, header))["index"].get<int>();
+  };
+  frame.index = 1;
+  server.publish(frame);
+  EXPECT_EQ(index_of_next(), 1);
+  frame.index = 2;
+  server.publish(frame);
+  frame.index = 3;
+  server.publish(frame);
+  ws.text(true);
+  ws.write(net::buffer(std::string("ack")));
+  EXPECT_EQ(index_of_next(), 3);
+
+  // Commands reach the callback; one that throws leaves the server serving the next.
+  ws.write(net::buffer(std::string("fail")));
+  ws.write(net::buffer(std::string("recapture")));
+  for (int wait = 0; wait < 500 && commands < 2; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(commands, 2);
+  EXPECT_EQ(server.commands_received(), 2u);
+  ws.write(net::buffer(std::string("ack")));
+  frame.index = 4;
+  server.publish(frame);
+  EXPECT_EQ(index_of_next(), 4);
+  ws.close(beast::websocket::close_code::normal);
+}
+
+TEST(LiveServer, AddressErrorsNameThePart) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  auto error_of = [&](const std::string& address) -> std::string {
+    try {
+      LiveServer server(address, mesh, "strip", {});
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(error_of(":8080"), "--serve: \":8080\" is not HOST:PORT (e.g. 127.0.0.1:8080)");
+  EXPECT_EQ(error_of("127.0.0.1:80x"), "--serve: port \"80x\" is not a number from 0 to 65535");
+  EXPECT_EQ(error_of("127.0.0.1:http"), "--serve: port \"http\" is not a number from 0 to 65535");
+  EXPECT_EQ(error_of("sheet.local:0"), "--serve: \"sheet.local\" is not an IP address (e.g. 127.0.0.1 or 0.0.0.0)");
+}
+
+}  // namespace
+}  // namespace emit

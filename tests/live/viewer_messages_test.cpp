@@ -1,0 +1,73 @@
+// What the viewer reads (live/viewer_messages.hpp): the mesh as JSON, and a frame as a length,
+// a JSON header padded to 4 bytes and a float32 per triangle, decoded here as the page decodes it.
+#include "emit/live/viewer_messages.hpp"
+
+#include <cstring>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+// A 4 × 2 mm strip of 2 × 1 cells: 6 nodes, 4 triangles, 6 border edges; electrode 0 is the
+// bottom side (nodes 0..2, centre (2, 0)), electrode 1 the top (centre (2, 2)).
+TEST(ViewerMessages, MeshMessageHoldsTheMeshAndItsBorder) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  const auto j = nlohmann::json::parse(mesh_message(mesh, "strip"));
+  EXPECT_EQ(j["type"], "mesh");
+  EXPECT_EQ(j["name"], "strip");
+  ASSERT_EQ(j["nodes_mm"].size(), 12u);
+  EXPECT_EQ(j["nodes_mm"][2], 2.0);  // node 1 at (2, 0)
+  ASSERT_EQ(j["triangles"].size(), 12u);
+  for (int t = 0; t < 4; ++t)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(j["triangles"][3 * t + k], mesh.triangles(t, k));
+  EXPECT_EQ(j["outline_mm"].size(), 6u * 4);  // six segments of two points
+  ASSERT_EQ(j["electrodes"].size(), 2u);
+  EXPECT_EQ(j["electrodes"][0]["x_mm"], 2.0);
+  EXPECT_EQ(j["electrodes"][0]["y_mm"], 0.0);
+  EXPECT_EQ(j["electrodes"][1]["y_mm"], 2.0);
+  EXPECT_EQ(j["electrodes"][1]["segments_mm"].size(), 2u * 4);  // the top side's two edges
+}
+
+TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
+  std::vector<Contact> contacts(1);
+  contacts[0].x_mm = 12.5;
+  contacts[0].force_N = 3.25;
+  Vector pressure(3);
+  pressure << 0.0, 0.125, 0.1;
+  LiveFrame frame;
+  frame.index = 41;
+  frame.sequence = 1234;
+  frame.baseline_captures = 1;
+  frame.contacts = &contacts;
+  frame.pressure_N_per_mm2 = &pressure;
+  frame.frames_per_s = 50;
+  frame.latency_s = 0.002;
+  const std::string message = frame_message(frame, 7);
+  std::uint32_t header_bytes = 0;
+  std::memcpy(&header_bytes, message.data(), 4);
+  EXPECT_EQ(header_bytes % 4, 0u);
+  ASSERT_EQ(message.size(), 4 + header_bytes + 4 * 3u);
+  const auto header = nlohmann::json::parse(message.substr(4, header_bytes));  // trailing spaces are JSON whitespace
+  EXPECT_EQ(header["type"], "frame");
+  EXPECT_EQ(header["index"], 41);
+  EXPECT_EQ(header["sequence"], 1234);
+  EXPECT_EQ(header["capturing_baseline"], false);
+  EXPECT_EQ(header["commands"], 7);
+  EXPECT_DOUBLE_EQ(header["latency_ms"].get<double>(), 2.0);
+  EXPECT_EQ(header["max_pressure_N_per_mm2"], 0.125);
+  ASSERT_EQ(header["contacts"].size(), 1u);
+  EXPECT_EQ(header["contacts"][0]["x_mm"], 12.5);
+  EXPECT_EQ(header["contacts"][0]["force_N"], 3.25);
+  float values[3];
+  std::memcpy(values, message.data() + 4 + header_bytes, sizeof values);
+  EXPECT_EQ(values[0], 0.0f);
+  EXPECT_EQ(values[1], 0.125f);
+  EXPECT_EQ(values[2], 0.1f);  // float32: the value rounded once
+}
+
+}  // namespace
+}  // namespace emit

@@ -1,0 +1,57 @@
+// A press (sensor/press.hpp): parsed from "x,y,r,F", its pressure F/(π r²), and checked against
+// the sheet with one-line messages.
+#include "emit/sensor/press.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+namespace {
+
+TEST(Press, ParsesFourNumbersAndGivesItsPressure) {
+  const Press p = parse_press(" 12.5,40, 2.5 ,7");
+  EXPECT_EQ(p.x_mm, 12.5);
+  EXPECT_EQ(p.y_mm, 40.0);
+  EXPECT_EQ(p.radius_mm, 2.5);
+  EXPECT_EQ(p.force_N, 7.0);
+  EXPECT_DOUBLE_EQ(p.pressure_N_per_mm2(), 7 / (std::numbers::pi * 6.25));
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Press, ParseErrorsNameTheText) {
+  EXPECT_EQ(error_of([] { parse_press("1,2,3"); }),
+            "press \"1,2,3\": expected 4 values x_mm,y_mm,radius_mm,force_N, got 3");
+  EXPECT_EQ(error_of([] { parse_press("1,2,3mm,4"); }),
+            "press \"1,2,3mm,4\": \"3mm\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+  EXPECT_EQ(error_of([] { parse_press("1,,3,4"); }),
+            "press \"1,,3,4\": \"\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+}
+
+TEST(Press, ValidationNamesWhatIsWrong) {
+  const Sensor sensor = default_sensor();  // 60 × 60 mm from the origin
+  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 5, 10}, "press 1"); }), "no error");
+  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, std::nan(""), 5, 10}, "press 1"); }),
+            "press 1: values must be finite numbers");
+  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 0, 10}, "press 2"); }), "press 2: radius must be positive");
+  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 5, -1}, "press 3"); }), "press 3: force must not be negative");
+  EXPECT_EQ(error_of([&] { validate_press(sensor, {-1, 30, 5, 1}, "press 4"); }),
+            "press 4: centre (-1, 30) mm is off the sheet");
+}
+
+}  // namespace
+}  // namespace emit
