@@ -4,7 +4,6 @@
 #include <map>
 #include <cctype>
 #include <optional>
-#include <ranges>
 
 #include <gmsh.h>
 
@@ -36,13 +35,12 @@ GmshSession::~GmshSession() {
 std::string GmshSession::last_error() {
   std::vector<std::string> log;
   gmsh::logger::get(log);
-  for (const std::string& line : std::views::reverse(log))  // the last error first
-    if (line.rfind("Error", 0) == 0) {
-      std::string message = line.substr(line.find(':') == std::string::npos ? 0 : line.find(':') + 1);
-      message.erase(0, message.find_first_not_of(' '));
-      return message;
-    }
-  return {};
+  // The last error first.
+  const auto line = std::find_if(log.rbegin(), log.rend(), [](const std::string& l) { return l.rfind("Error", 0) == 0; });
+  if (line == log.rend()) return {};
+  std::string message = line->substr(line->find(':') == std::string::npos ? 0 : line->find(':') + 1);
+  message.erase(0, message.find_first_not_of(' '));
+  return message;
 }
 
 namespace {

@@ -33,7 +33,7 @@ TEST(FirmwareScan, VisitsEveryPairGroundMajorWithBothMultiplexersEnabled) {
   ASSERT_EQ(reads.size(), 256u);  // 16 × 16 pairs, one reading each
   for (int g = 0; g < 16; ++g)
     for (int s = 0; s < 16; ++s) {
-      const auto& read = reads[static_cast<std::size_t>(g * 16 + s)];
+      const auto& read = reads[static_cast<std::size_t>(g) * 16 + static_cast<std::size_t>(s)];
       EXPECT_EQ(read.ground, (MuxControl{static_cast<std::uint8_t>(g), true})) << g << "," << s;
       EXPECT_EQ(read.sense, (MuxControl{static_cast<std::uint8_t>(s), true})) << g << "," << s;
       // The fake reads 100·g + s; stored at [g·N + s].
@@ -55,7 +55,7 @@ TEST(FirmwareScan, AddressesEachElectrodesChannelFromTheMap) {
   ASSERT_EQ(reads.size(), 64u);
   for (int g = 0; g < 8; ++g)
     for (int s = 0; s < 8; ++s) {
-      const auto& read = reads[static_cast<std::size_t>(g * 8 + s)];
+      const auto& read = reads[static_cast<std::size_t>(g) * 8 + static_cast<std::size_t>(s)];
       EXPECT_EQ(read.ground.address, 15 - 2 * g);
       EXPECT_EQ(read.sense.address, 15 - 2 * s);
       EXPECT_EQ(scanner.counts()[g * 8 + s], 100 * (15 - 2 * g) + (15 - 2 * s));

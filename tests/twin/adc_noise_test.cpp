@@ -42,7 +42,7 @@ TEST(AdcNoise, NoiseHasTheSpreadAsked) {
   std::mt19937_64 rng(7);
   apply_adc(adc, frame, rng);
   const double mean = frame.mean();
-  const double std = std::sqrt((frame.array() - mean).square().sum() / (frame.size() - 1));
+  const double std = std::sqrt((frame.array() - mean).square().sum() / static_cast<double>(frame.size() - 1));
   EXPECT_NEAR(mean, 1.65, 5e-4);
   EXPECT_NEAR(std, 0.01, 0.05 * 0.01);
 }
