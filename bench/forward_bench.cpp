@@ -32,7 +32,8 @@ const Mesh& reconstruction_mesh() {
 const std::vector<Press> centre_press = {{30, 30, 5, 10}};
 
 void BM_MeshReconstruction(benchmark::State& state) {
-  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(generate_mesh(sensor(), reconstruction_mesh_options(sensor())));
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(generate_mesh(sensor(), reconstruction_mesh_options(sensor())));
   state.counters["triangles"] = static_cast<double>(reconstruction_mesh().triangle_count());
 }
 
@@ -42,12 +43,14 @@ void BM_MeshTwin(benchmark::State& state) {
 }
 
 void BM_AssembleAndAnalyse(benchmark::State& state, const Mesh& (*mesh)()) {
-  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(ForwardModel(mesh(), sensor().sheet_resistance_ohm_per_sq));
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(ForwardModel(mesh(), sensor().sheet_resistance_ohm_per_sq));
   state.counters["triangles"] = static_cast<double>(mesh().triangle_count());
 }
 
 void BM_PressContact(benchmark::State& state) {
-  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(press_contact_load(twin_mesh(), centre_press, sensor().contact));
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(press_contact_load(twin_mesh(), centre_press, sensor().contact));
 }
 
 // One frame: one factorisation, N solves (the regrounding trick).

@@ -5,15 +5,15 @@
 // in the same run.
 #include <benchmark/benchmark.h>
 
-#include "emit/model/method.hpp"
-#include "emit/fem/forward_model.hpp"
-#include "emit/model/fit_model.hpp"
-#include "emit/frame/frame_predictor.hpp"
-#include "emit/model/jacobian.hpp"
-#include "emit/model/reconstruction_model.hpp"
-#include "emit/frame/reconstructor.hpp"
-#include "emit/sensor/sensor_json.hpp"
 #include "emit/core/threads.hpp"
+#include "emit/fem/forward_model.hpp"
+#include "emit/frame/frame_predictor.hpp"
+#include "emit/frame/reconstructor.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/model/jacobian.hpp"
+#include "emit/model/method.hpp"
+#include "emit/model/reconstruction_model.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/press_contact.hpp"
 #include "emit/twin/twin.hpp"
 
@@ -25,7 +25,11 @@ struct Bench {
   Sensor sensor = default_sensor();
   ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
   FitModel fit_model = build_fit_model(sensor);
-  Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 3; return o; }()};
+  Twin twin{sensor, [] {
+              TwinOptions o;
+              o.mesh_seed = 3;
+              return o;
+            }()};
   Frame reference = twin.frame({});
   std::vector<Frame> frames;  // single presses across the sheet
   std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
@@ -47,7 +51,8 @@ void BM_PaperFrame(benchmark::State& state) {
   Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
-  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
 }
 
 /// The paper method's image alone, δφ = R·δV: the compact operator the per-frame path applies
@@ -128,7 +133,8 @@ void BM_PredictSparse(benchmark::State& state) {
   Bench& b = bench();
   const ForwardModel model(b.fit_model.mesh, b.sensor.sheet_resistance_ohm_per_sq);
   const ContactLoad load = fit_sized_contact();
-  for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(model.solve_frame(load, b.sensor.drive_voltage_V).data());
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(model.solve_frame(load, b.sensor.drive_voltage_V).data());
 }
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);

@@ -37,17 +37,18 @@ std::string ratio_text(double baseline_s, double ours_s) {
 }
 
 void print_header(const std::string& sensor_name) {
-  std::printf("emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
-              "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
-              "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
-              "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
-              "solve per element and grounding, where they finish in reasonable time.\n\n",
-              sensor_name.c_str());
+  std::printf(
+      "emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
+      "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
+      "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
+      "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
+      "solve per element and grounding, where they finish in reasonable time.\n\n",
+      sensor_name.c_str());
   const char* format = "%9s %4s %5s | %6s %6s %6s %6s %6s %7s %6s | %7s %6s %7s %7s %6s | %7s | %14s %14s\n";
-  std::printf(format, "triangles", "el", "rank", "mesh", "assem", "factor", "jacob", "oper", "offline", "load", "product",
-              "eq. 8", "contact", "frame", "read", "peak", "K x K normal", "brute-force J");
-  std::printf(format, "", "", "", "s", "s", "s", "s", "s", "s", "ms", "us", "us", "us", "us", "us", "MiB", "eq. (ratio)",
-              "(ratio)");
+  std::printf(format, "triangles", "el", "rank", "mesh", "assem", "factor", "jacob", "oper", "offline", "load",
+              "product", "eq. 8", "contact", "frame", "read", "peak", "K x K normal", "brute-force J");
+  std::printf(format, "", "", "", "s", "s", "s", "s", "s", "s", "ms", "us", "us", "us", "us", "us", "MiB",
+              "eq. (ratio)", "(ratio)");
 }
 
 void print_row(const BenchRow& row) {
@@ -57,11 +58,12 @@ void print_row(const BenchRow& row) {
     return;
   }
   const PipelineTiming& t = row.timing;
-  std::printf("%9ld %4d %5d | %6.3f %6.3f %6.3f %6.3f %6.3f %7.3f %6.1f | %7.1f %6.1f %7.1f %7.1f %6.1f | %7.0f | %14s %14s\n",
-              t.triangles, t.electrodes, t.rank, t.mesh_s, t.assembly_s, t.factorisation_s, t.jacobian_s, t.operator_s,
-              t.offline_s(), 1e3 * t.load_s, t.product_us, t.pressure_us, t.contacts_us, t.frame_us, t.operator_read_us,
-              row.peak_MiB, ratio_text(row.baselines.normal_equations_s, t.operator_s + t.jacobian_s).c_str(),
-              ratio_text(row.baselines.brute_force_jacobian_s, t.jacobian_s).c_str());
+  std::printf(
+      "%9ld %4d %5d | %6.3f %6.3f %6.3f %6.3f %6.3f %7.3f %6.1f | %7.1f %6.1f %7.1f %7.1f %6.1f | %7.0f | %14s %14s\n",
+      t.triangles, t.electrodes, t.rank, t.mesh_s, t.assembly_s, t.factorisation_s, t.jacobian_s, t.operator_s,
+      t.offline_s(), 1e3 * t.load_s, t.product_us, t.pressure_us, t.contacts_us, t.frame_us, t.operator_read_us,
+      row.peak_MiB, ratio_text(row.baselines.normal_equations_s, t.operator_s + t.jacobian_s).c_str(),
+      ratio_text(row.baselines.brute_force_jacobian_s, t.jacobian_s).c_str());
   std::fflush(stdout);
 }
 

@@ -18,13 +18,15 @@ struct CalibrateArgs {
 void print_presses(const CalibrateJob& job, const PressCalibrationResult& r) {
   if (const auto* fit = std::get_if<FitCalibration>(&r.calibration)) {
     if (r.sheet)
-      std::printf("fitted the sheet's resistance on %d presses: its conductance is %.3f to %.3f times the nominal; "
-                  "misfit %.3f mV -> %.3f mV rms\n",
-                  r.sheet->presses, r.sheet_factor_low, r.sheet_factor_high, 1e3 * r.sheet->rms_misfit_nominal_V,
-                  1e3 * r.sheet->rms_misfit_corrected_V);
-    std::printf("fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g; "
-                "contacts will be reported with the presses' mean indenter radius, %.2f mm\n",
-                r.presses, fit->contact_law.alpha_ohm_mm2, fit->contact_law.gamma, fit->indenter_radius_mm);
+      std::printf(
+          "fitted the sheet's resistance on %d presses: its conductance is %.3f to %.3f times the nominal; "
+          "misfit %.3f mV -> %.3f mV rms\n",
+          r.sheet->presses, r.sheet_factor_low, r.sheet_factor_high, 1e3 * r.sheet->rms_misfit_nominal_V,
+          1e3 * r.sheet->rms_misfit_corrected_V);
+    std::printf(
+        "fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g; "
+        "contacts will be reported with the presses' mean indenter radius, %.2f mm\n",
+        r.presses, fit->contact_law.alpha_ohm_mm2, fit->contact_law.gamma, fit->indenter_radius_mm);
   } else {
     const auto& linear = std::get<LinearCalibration>(r.calibration);
     std::printf("fitted P = (a1/dphi + a2)^a3 on %zu presses (%s, lambda2 = %g): a1 = %.6g, a2 = %.6g, a3 = %.6g\n",
@@ -51,15 +53,19 @@ void add_calibrate_command(CLI::App& app) {
   auto a = std::make_shared<CalibrateArgs>();
   CalibrateJob& job = a->job;
   CLI::App* cmd = app.add_subcommand("calibrate", "Fit the pressure calibration (paper eq. 8) from known presses");
-  cmd->footer("Example:\n  emit calibrate --reference ref.csv --frames presses.csv --truth presses_presses.csv --out calib.json");
+  cmd->footer(
+      "Example:\n  emit calibrate --reference ref.csv --frames presses.csv --truth presses_presses.csv --out "
+      "calib.json");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--reference", job.reference_path, "No-contact frames (CSV)")->check(CLI::ExistingFile);
-  cmd->add_option("--frames", job.frames_path, "Frames of single presses of known force (CSV)")->check(CLI::ExistingFile);
+  cmd->add_option("--frames", job.frames_path, "Frames of single presses of known force (CSV)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--truth", job.truth_path, "The presses (CSV: frame,x_mm,y_mm,radius_mm,force_N,...)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", job.out_path, "Calibration to write (JSON)");
-  cmd->add_option("--contact-law", job.contact_law_path, "Also fit eq. 2 from pairs (CSV: pressure_N_per_mm2,resistance_ohm)")
+  cmd->add_option("--contact-law", job.contact_law_path,
+                  "Also fit eq. 2 from pairs (CSV: pressure_N_per_mm2,resistance_ohm)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--method", a->method, "Reconstruction method the calibration is for")
       ->check(CLI::IsMember(method_names()))
@@ -67,8 +73,10 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--lambda2", job.options.lambda2, "lambda^2 (default: the method's)")->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", job.options.threshold_fraction, "Threshold fraction")->capture_default_str();
   cmd->add_flag("!--no-sheet", job.options.fit_sheet,
-                "With --method fit: keep the nominal sheet resistance instead of fitting its variation from the presses");
-  cmd->add_option("--cache", job.options.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
+                "With --method fit: keep the nominal sheet resistance instead of fitting its variation from the "
+                "presses");
+  cmd->add_option("--cache", job.options.cache_dir,
+                  "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->callback([a] { run_calibrate(*a); });
 }
 

@@ -58,8 +58,9 @@ void run_demo(const DemoArgs& args) {
               r.calibration_presses, r.calibration.contact_law.alpha_ohm_mm2, r.calibration.contact_law.gamma);
   std::printf("\n  frame   true x     y  force N   fit x      y  force N   paper x    y\n");
   for (std::size_t f = 0; f < r.presses.size(); ++f) print_found(f, r.presses[f], r.fitted[f], r.paper[f]);
-  std::printf("\nwrote %s/frames.csv, presses.csv, contacts.jsonl, calibration.json and %zu pressure maps frame_*.png\n",
-              args.out_dir.c_str(), r.presses.size());
+  std::
+      printf("\nwrote %s/frames.csv, presses.csv, contacts.jsonl, calibration.json and %zu pressure maps frame_*.png\n",
+             args.out_dir.c_str(), r.presses.size());
 
   std::printf("\nlive: the twin streams a finger moving over the sheet; watch it in a browser at the address below\n");
   LiveJob live;
@@ -71,16 +72,19 @@ void run_demo(const DemoArgs& args) {
   live.seconds = args.live_seconds;
   live.cache_dir = default_cache_dir();
   run_live(live);
-  std::printf("next: emit live --source serial:/dev/ttyUSB0 --serve %s (your board), emit eval (accuracy against the\n"
-              "paper), emit reconstruct --help (your own frames)\n", args.serve.c_str());
+  std::printf(
+      "next: emit live --source serial:/dev/ttyUSB0 --serve %s (your board), emit eval (accuracy against the\n"
+      "paper), emit reconstruct --help (your own frames)\n",
+      args.serve.c_str());
 }
 
 }  // namespace
 
 void add_demo_command(CLI::App& app) {
   auto a = std::make_shared<DemoArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "demo", "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw them, then go live in the browser");
+  CLI::App* cmd = app.add_subcommand("demo",
+                                     "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw "
+                                     "them, then go live in the browser");
   cmd->add_option("--out", a->out_dir, "Folder for the frames, presses, contacts, images and the live recording")
       ->capture_default_str();
   cmd->add_option("--serve", a->serve, "Where the live viewer is served (HOST:PORT; port 0 picks a free one)")

@@ -26,11 +26,12 @@ void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
   char lambda[16] = "-";
   if (is_linear(m.method)) std::snprintf(lambda, sizeof lambda, "%9.3g", m.lambda2);
   const ErrorStats& e = m.position;
-  std::printf("  %-10s %9s  %5.2f +/- %4.2f  %6.2f %6.2f  %6.2f  ", method_name(m.method), lambda, e.mean, e.std, e.median,
-              e.p95, m.strongest_contact.mean);
+  std::printf("  %-10s %9s  %5.2f +/- %4.2f  %6.2f %6.2f  %6.2f  ", method_name(m.method), lambda, e.mean, e.std,
+              e.median, e.p95, m.strongest_contact.mean);
   if (c.pressure_and_two_press && m.pressure_error_N_per_mm2 && m.two_press)
-    std::printf("%7.4f (%4.1f %%)  %5.0f %%  %5.0f %%", *m.pressure_error_N_per_mm2, 100 * *m.pressure_error_N_per_mm2 / 0.5,
-                100 * m.two_press->two_contacts, 100 * m.two_press->both_matched);
+    std::printf("%7.4f (%4.1f %%)  %5.0f %%  %5.0f %%", *m.pressure_error_N_per_mm2,
+                100 * *m.pressure_error_N_per_mm2 / 0.5, 100 * m.two_press->two_contacts,
+                100 * m.two_press->both_matched);
   if (!is_linear(m.method))
     std::printf("  (%.0f ms a frame, %ld mesh nodes; 2 match: within 2 mm)", m.ms_per_frame, m.fit_mesh_nodes);
   std::printf("\n");
@@ -42,10 +43,11 @@ void print_mismatches(const SheetEvaluation& e) {
     std::printf("    %-46s %5.2f +/- %4.2f mm (median %.2f, p95 %.2f)%s\n", m.name.c_str(), m.paper.mean, m.paper.std,
                 m.paper.median, m.paper.p95, m.dead_electrode_found ? ", dead electrode found and left out" : "");
     if (m.fit && m.fit_self_calibrated)
-      std::printf("    %46s fit: %5.2f +/- %4.2f mm (p95 %.2f); sheet self-calibrated (x%.2f..%.2f): %5.2f +/- %4.2f mm "
-                  "(p95 %.2f)\n",
-                  "", m.fit->mean, m.fit->std, m.fit->p95, m.sheet_factor_low, m.sheet_factor_high,
-                  m.fit_self_calibrated->mean, m.fit_self_calibrated->std, m.fit_self_calibrated->p95);
+      std::printf(
+          "    %46s fit: %5.2f +/- %4.2f mm (p95 %.2f); sheet self-calibrated (x%.2f..%.2f): %5.2f +/- %4.2f mm "
+          "(p95 %.2f)\n",
+          "", m.fit->mean, m.fit->std, m.fit->p95, m.sheet_factor_low, m.sheet_factor_high, m.fit_self_calibrated->mean,
+          m.fit_self_calibrated->std, m.fit_self_calibrated->p95);
   }
 }
 
@@ -54,8 +56,9 @@ void run_eval(EvalArgs args) {
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
   std::printf("emit eval: twin on a finer mesh (seed %d), 12-bit ADC, 1 mV noise; %s grid of single presses\n",
               args.options.mesh_seed, args.options.quick ? "a coarse" : "a jittered");
-  std::printf("position: the paper's estimate (centroid of the image above 50 %% of its max); also the strongest\n"
-              "contact's centroid. pressure: after calibration on separate presses, |error| vs 0.5 N/mm2 full scale.\n");
+  std::printf(
+      "position: the paper's estimate (centroid of the image above 50 %% of its max); also the strongest\n"
+      "contact's centroid. pressure: after calibration on separate presses, |error| vs 0.5 N/mm2 full scale.\n");
   for (const EvalCase& c : standard_eval_cases(EMIT_EXAMPLES_DIR)) {
     if (c.name.find(args.sheet) == std::string::npos) continue;
     std::printf("\n%s, %d electrodes (%s; pressure paper: 0.0457 N/mm2)\n", c.name.c_str(), c.sensor.electrode_count(),

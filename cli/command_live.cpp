@@ -48,33 +48,38 @@ void run_live(const LiveJob& job) {
   LiveSession session(job, stderr_progress());
   std::fprintf(say, "source: %s\n", session.source_description().c_str());
   if (!job.serve.empty()) std::fprintf(say, "viewer: %s\n", session.viewer_url().c_str());
-  const std::string stopping = job.frames    ? "stopping after " + std::to_string(job.frames) + " frames"
-                               : job.seconds != 0 ? "stopping after " + std::to_string(static_cast<int>(job.seconds)) + " s (Ctrl-C stops sooner)"
-                                             : std::string("Ctrl-C stops");
+  const std::string stopping = job.frames         ? "stopping after " + std::to_string(job.frames) + " frames"
+                               : job.seconds != 0 ? "stopping after " + std::to_string(static_cast<int>(job.seconds)) +
+                                                        " s (Ctrl-C stops sooner)"
+                                                  : std::string("Ctrl-C stops");
   std::fprintf(say, "reconstructing with the %s method; %s\n", method_name(job.method), stopping.c_str());
   std::fflush(say);
 
   stop_requested = false;
   const StopOnSignals signals;
   const LiveStats stats = session.run(stop_requested);
-  std::fprintf(say, "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
-                    "(from a frame's arrival to its contacts written and published)\n",
+  std::fprintf(say,
+               "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
+               "(from a frame's arrival to its contacts written and published)\n",
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
                1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s());
   if (!job.record_path.empty())
     std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
-                 static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(), job.record_path.c_str());
-  if (!session.calibrated()) std::fprintf(say, "note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
+                 static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(),
+                 job.record_path.c_str());
+  if (!session.calibrated())
+    std::fprintf(say, "note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }
 
 void add_live_command(CLI::App& app) {
   auto a = std::make_shared<LiveArgs>();
   LiveJob& job = a->job;
   CLI::App* cmd = app.add_subcommand("live", "Reconstruct frames as they come from a source; serve a live viewer");
-  cmd->footer("Examples:\n  emit live --source sim --serve 127.0.0.1:8080\n"
-              "  emit live --source serial:/dev/ttyUSB0 --serve 127.0.0.1:8080 --record session.emitrec\n"
-              "  emit live --source file:session.emitrec --contacts - --fps 0\n"
-              "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
+  cmd->footer(
+      "Examples:\n  emit live --source sim --serve 127.0.0.1:8080\n"
+      "  emit live --source serial:/dev/ttyUSB0 --serve 127.0.0.1:8080 --record session.emitrec\n"
+      "  emit live --source file:session.emitrec --contacts - --fps 0\n"
+      "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
   cmd->add_option("--source", job.source,
                   "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], file:REC (a recording), "
                   "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
@@ -82,7 +87,8 @@ void add_live_command(CLI::App& app) {
   cmd->add_option("--record", job.record_path, "Record every frame the source gives to this file (replay with file:)");
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--contacts", job.contacts_path, "Contacts out as JSON Lines: a file, or - for stdout");
-  cmd->add_option("--method", a->method, "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
+  cmd->add_option("--method", a->method,
+                  "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
@@ -93,7 +99,8 @@ void add_live_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--seconds", job.seconds, "Stop after this many seconds (default: run until Ctrl-C)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--fps", job.frames_per_s, "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
+  cmd->add_option("--fps", job.frames_per_s,
+                  "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");

@@ -19,11 +19,12 @@ void add_mesh_command(CLI::App& app) {
   cmd->callback([job] {
     const MeshReport r = run_mesh_job(*job);
     const MeshQuality& q = r.quality;
-    std::printf("%s mesh of %s: %lld triangles, %lld nodes, %d electrodes; min angle %.1f deg, mean edge %.3f mm, "
-                "area %.1f mm2; meshed in %.3f s; wrote %s\n",
-                job->twin ? "twin" : "reconstruction", r.sensor_name.c_str(), static_cast<long long>(q.triangle_count),
-                static_cast<long long>(q.node_count), r.electrodes, q.min_angle_deg, q.mean_edge_mm, q.total_area_mm2,
-                r.seconds, job->out_path.c_str());
+    std::printf(
+        "%s mesh of %s: %lld triangles, %lld nodes, %d electrodes; min angle %.1f deg, mean edge %.3f mm, "
+        "area %.1f mm2; meshed in %.3f s; wrote %s\n",
+        job->twin ? "twin" : "reconstruction", r.sensor_name.c_str(), static_cast<long long>(q.triangle_count),
+        static_cast<long long>(q.node_count), r.electrodes, q.min_angle_deg, q.mean_edge_mm, q.total_area_mm2,
+        r.seconds, job->out_path.c_str());
   });
 }
 

@@ -37,7 +37,8 @@ void add_reconstruct_command(CLI::App& app) {
   auto a = std::make_shared<ReconstructArgs>();
   ReconstructJob& job = a->job;
   CLI::App* cmd = app.add_subcommand("reconstruct", "Reconstruct pressure images and contacts from frames");
-  cmd->footer("Example:\n  emit reconstruct --reference ref.csv --frames frames.csv --contacts contacts.jsonl --images out/");
+  cmd->footer(
+      "Example:\n  emit reconstruct --reference ref.csv --frames frames.csv --contacts contacts.jsonl --images out/");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--reference", job.reference_path, "No-contact frames (CSV; several rows are averaged)")
@@ -47,10 +48,12 @@ void add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame)")->required();
   cmd->add_option("--calibration", job.calibration_path, "Pressure calibration (JSON from 'emit calibrate')")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--method", a->method, "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
+  cmd->add_option("--method", a->method,
+                  "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
-  cmd->add_option("--lambda2", job.lambda2, "Regularisation lambda^2 (default: the method's)")->check(CLI::PositiveNumber);
+  cmd->add_option("--lambda2", job.lambda2, "Regularisation lambda^2 (default: the method's)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--threshold", job.threshold_fraction, "Threshold as a fraction of the image's maximum")
       ->capture_default_str();
   cmd->add_option("--min-area-mm2", job.min_contact_area_mm2, "Drop contacts smaller than this")

@@ -39,7 +39,8 @@ void run_simulate(SimulateArgs a) {
     const auto separation = pair_or_single(a.separation_mm, "--separation-mm");
     script.min_separation_mm = separation[0], script.max_separation_mm = separation[1];
     if (script.kind == PressScript::Kind::moving) {
-      if (a.from_mm.size() != 2 || a.to_mm.size() != 2) throw InvalidInput("--script moving needs --from X,Y and --to X,Y");
+      if (a.from_mm.size() != 2 || a.to_mm.size() != 2)
+        throw InvalidInput("--script moving needs --from X,Y and --to X,Y");
       script.from_mm = {a.from_mm[0], a.from_mm[1]}, script.to_mm = {a.to_mm[0], a.to_mm[1]};
     }
   }
@@ -49,11 +50,11 @@ void run_simulate(SimulateArgs a) {
                static_cast<long long>(r.twin_mesh.triangle_count), static_cast<long long>(r.twin_mesh.node_count),
                r.twin_mesh.min_angle_deg);
   std::printf("wrote %zu frames of %lld electrodes to %s and the presses to %s\n", r.frames.size(),
-              static_cast<long long>(r.frames.empty() ? 0 : r.frames[0].rows()), job.out_path.c_str(), r.truth_path.c_str());
+              static_cast<long long>(r.frames.empty() ? 0 : r.frames[0].rows()), job.out_path.c_str(),
+              r.truth_path.c_str());
   if (a.print_table)
     for (const Frame& frame : r.frames) print_frame_table(frame);
-  else
-    print_frames_summary(r.frames, r.presses);
+  else print_frames_summary(r.frames, r.presses);
   if (!job.images_dir.empty()) std::printf("wrote %zu images to %s/\n", r.frames.size(), job.images_dir.c_str());
 }
 
@@ -74,7 +75,8 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--press", a->presses, "A press x_mm,y_mm,radius_mm,force_N (repeat for simultaneous presses)");
-  cmd->add_option("--script", a->script, "Press script: none (no-contact references), grid, random, two-finger or moving");
+  cmd->add_option("--script", a->script,
+                  "Press script: none (no-contact references), grid, random, two-finger or moving");
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
   cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger and moving scripts")
@@ -89,7 +91,8 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--margin-mm", a->margin_mm, "Smallest distance from a press centre to the border (default: radius)");
   cmd->add_option("--seed", job.twin.noise_seed, "Seed of the scripts' randomness and of the ADC noise");
   cmd->add_option("--mesh-seed", job.twin.mesh_seed, "Seed of the twin's mesh");
-  cmd->add_option("--noise-V", job.noise_V, "Override the ADC noise (standard deviation, V)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--noise-V", job.noise_V, "Override the ADC noise (standard deviation, V)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--exact", a->exact, "No ADC: exact, noise-free volts");
   cmd->add_option("--sheet-variation", job.twin.sheet_resistance_variation,
                   "Sheet resistance varying linearly along x by +/- this fraction (e.g. 0.2)")

@@ -1,8 +1,8 @@
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <unistd.h>
 
 #include "commands.hpp"
 #include "emit/model/operator_cache.hpp"
@@ -31,7 +31,8 @@ Progress stderr_progress(long min_count) {
 }
 
 std::vector<std::string> method_names() {
-  return {method_name(Method::fit), method_name(Method::paper), method_name(Method::noser), method_name(Method::laplacian)};
+  return {method_name(Method::fit), method_name(Method::paper), method_name(Method::noser),
+          method_name(Method::laplacian)};
 }
 
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache) {
@@ -39,7 +40,8 @@ std::string cache_dir_option(const std::string& cache_dir, bool no_cache) {
 }
 
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses) {
-  std::printf("%5s %8s %8s  %-13s  %s\n", "frame", "max V", "mean V", "ground->sense", "presses (x mm, y mm, r mm, F N)");
+  std::printf("%5s %8s %8s  %-13s  %s\n", "frame", "max V", "mean V", "ground->sense",
+              "presses (x mm, y mm, r mm, F N)");
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const Frame& frame = frames[f];
     const Index N = frame.rows();

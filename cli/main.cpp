@@ -11,8 +11,9 @@
 namespace {
 
 int run(int argc, char** argv) {
-  CLI::App app{"emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
-               "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
+  CLI::App app{
+      "emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
+      "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
   app.name("emit");
   app.set_version_flag("--version", "emit 0.1.0");
   app.require_subcommand(1);

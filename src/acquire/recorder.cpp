@@ -23,7 +23,8 @@ Recorder::Recorder(std::string path, const Sensor& sensor)
   header.adc_bits = sensor.adc.bits;
   header.vref_V = sensor.adc.vref_V;
   header.start_unix_us = static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count());
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
   std::array<std::uint8_t, recording_header_size> bytes{};
   encode_recording_header(header, bytes.data());
   stream_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));

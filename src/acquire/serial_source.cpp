@@ -38,9 +38,7 @@ SerialSource::SerialSource(std::string path, unsigned baud, const Sensor& sensor
   port_.open(path_, baud_);
 }
 
-std::string SerialSource::description() const {
-  return "serial:" + path_ + " at " + std::to_string(baud_) + " baud";
-}
+std::string SerialSource::description() const { return "serial:" + path_ + " at " + std::to_string(baud_) + " baud"; }
 
 std::string SerialSource::status() const {
   if (connected()) return "connected";
@@ -102,7 +100,7 @@ void SerialSource::push(const RawFrame& raw, Clock::time_point received) {
   if (raw.electrode_count != electrode_count_) {
     failed_ = true;
     failure_ = description() + ": the board sends frames of " + std::to_string(raw.electrode_count) +
-                         " electrodes but the sensor has " + std::to_string(electrode_count_);
+               " electrodes but the sensor has " + std::to_string(electrode_count_);
     throw IoError(failure_);
   }
   if (queue_size_ == queue_.size()) {  // the consumer fell behind: drop the oldest

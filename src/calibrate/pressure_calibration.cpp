@@ -62,7 +62,8 @@ double mean_dphi(const PressureSample& s) {
 }
 
 void check_samples(const std::vector<PressureSample>& samples) {
-  if (samples.size() < 3) throw InvalidInput("calibration needs at least 3 presses, got " + std::to_string(samples.size()));
+  if (samples.size() < 3)
+    throw InvalidInput("calibration needs at least 3 presses, got " + std::to_string(samples.size()));
   double lowest = samples[0].true_pressure_N_per_mm2, highest = lowest;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (samples[i].dphi_V.empty())

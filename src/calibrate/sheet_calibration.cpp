@@ -18,17 +18,21 @@ namespace {
 /// a 1-D Gauss–Newton on its log conductance, warm-started from the last evaluation.
 class PressesMisfit {
  public:
-  PressesMisfit(const Sensor& sensor, const Mesh& mesh, const MeasurementSet& measurements, const std::vector<Vector>& dV,
-                const std::vector<Vector2>& centres_mm, const FitOptions& options)
-      : sensor_(sensor), mesh_(mesh), measurements_(measurements), dV_(dV), noise_V_(reading_noise_V(sensor.adc)),
+  PressesMisfit(const Sensor& sensor, const Mesh& mesh, const MeasurementSet& measurements,
+                const std::vector<Vector>& dV, const std::vector<Vector2>& centres_mm, const FitOptions& options)
+      : sensor_(sensor),
+        mesh_(mesh),
+        measurements_(measurements),
+        dV_(dV),
+        noise_V_(reading_noise_V(sensor.adc)),
         box_(SheetCorrection::identity_over(mesh)) {
     const DiscContactIntegrator integrator(mesh, options.edge_mm);
     const ElectrodeDofs dofs = number_electrode_dofs(mesh);
     for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
     for (const Vector2& c : centres_mm) {
       if (!mesh.contains_xy(c))
-        throw InvalidInput("sheet calibration: a press centre (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) +
-                           ") mm is off the sheet");
+        throw InvalidInput("sheet calibration: a press centre (" + std::to_string(c.x()) + ", " +
+                           std::to_string(c.y()) + ") mm is off the sheet");
       DiscLoad load;
       integrator.integrate({c.x(), c.y(), options.prior_radius_mm, 1.0}, load);  // g = 1: C is linear in g
       for (Index t : load.triangles)
@@ -155,13 +159,14 @@ SheetCalibration calibrate_sheet(const Sensor& sensor, const Mesh& fit_mesh, con
 
   ceres::NumericDiffOptions difference;
   difference.relative_step_size = 1e-4;  // θ starts at 0: Ceres then steps by this much absolutely
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<PressesMisfit, ceres::FORWARD>(misfit, ceres::TAKE_OWNERSHIP, difference);
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<PressesMisfit, ceres::FORWARD>(misfit, ceres::TAKE_OWNERSHIP,
+                                                                                        difference);
   cost->AddParameterBlock(SheetCorrection::terms);
   cost->SetNumResiduals(misfit->residual_count());
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, theta.data());
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CorrectionPrior, SheetCorrection::terms, SheetCorrection::terms>(
-                               new CorrectionPrior),
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CorrectionPrior, SheetCorrection::terms,
+                                                           SheetCorrection::terms>(new CorrectionPrior),
                            nullptr, theta.data());
   for (int k = 0; k < SheetCorrection::terms; ++k) {  // a factor of e² either way at most
     problem.SetParameterLowerBound(theta.data(), k, -2);

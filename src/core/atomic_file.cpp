@@ -1,10 +1,10 @@
 #include "emit/core/atomic_file.hpp"
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <unistd.h>
 
 #include "emit/core/errors.hpp"
 

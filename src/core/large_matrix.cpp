@@ -12,7 +12,8 @@ void advise_huge_pages(void* data, std::size_t bytes) {
   const std::uintptr_t first = (start + huge_page - 1) & ~(huge_page - 1);
   const std::uintptr_t last = (start + bytes) & ~(huge_page - 1);
   // The first whole huge page as a pointer into the same block (no integer-to-pointer cast).
-  if (last > first) ::madvise(static_cast<char*>(data) + (first - start), last - first, MADV_HUGEPAGE);  // advice: result ignored
+  if (last > first)
+    ::madvise(static_cast<char*>(data) + (first - start), last - first, MADV_HUGEPAGE);  // advice: result ignored
 }
 
 }  // namespace emit

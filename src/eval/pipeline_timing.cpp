@@ -1,22 +1,22 @@
-#include "emit/model/method.hpp"
 #include "emit/eval/pipeline_timing.hpp"
+#include "emit/model/method.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
-#include <Eigen/Cholesky>
 #include <cblas.h>
+#include <Eigen/Cholesky>
 
 #include "emit/core/errors.hpp"
 #include "emit/fem/electrode_dofs.hpp"
-#include "emit/fem/supernodal_cholesky.hpp"
 #include "emit/fem/stiffness.hpp"
+#include "emit/fem/supernodal_cholesky.hpp"
+#include "emit/frame/reconstructor.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/operator_cache.hpp"
-#include "emit/frame/reconstructor.hpp"
 
 namespace emit {
 
@@ -102,7 +102,8 @@ void time_per_frame(const ReconstructionModel& model, const Sensor& sensor, cons
   CompactOperatorScratch scratch = model.op.scratch();
   const auto count = frames.size();
   std::vector<Vector> images(count), pressures(count, Vector(model.op.rows()));
-  std::vector<std::vector<std::uint8_t>> selections(count, std::vector<std::uint8_t>(static_cast<std::size_t>(model.op.rows())));
+  std::vector<std::vector<std::uint8_t>> selections(count, std::vector<std::uint8_t>(
+                                                               static_cast<std::size_t>(model.op.rows())));
   for (std::size_t i = 0; i < count; ++i) {
     model.op.apply(frames[i], images[i], scratch);
     calibration.pressure_map(images[i], 0.5 * images[i].maxCoeff(), pressures[i], selections[i]);
@@ -142,7 +143,8 @@ double normal_equations_seconds(const Matrix& J, double lambda2) {
 
 PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
   if (options.target_triangles < 100 || options.target_triangles > 2'000'000)
-    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " + std::to_string(options.target_triangles));
+    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " +
+                       std::to_string(options.target_triangles));
   Sensor sensor = sensor_in;
   PipelineTiming timing;
   const Mesh mesh = mesh_of_size(sensor, options, timing.mesh_s);
@@ -180,7 +182,8 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
   if (!options.cache_dir.empty()) {
     timing.store_s = seconds([&] { store_cached_operator(options.cache_dir, "bench", model.op); });
     timing.load_s = seconds([&] {
-      if (!load_cached_operator(options.cache_dir, "bench")) throw IoError(options.cache_dir + ": cached operator did not load back");
+      if (!load_cached_operator(options.cache_dir, "bench"))
+        throw IoError(options.cache_dir + ": cached operator did not load back");
     });
   }
   time_per_frame(model, sensor, frames, options.seconds_per_figure, timing);
@@ -195,7 +198,8 @@ BaselineTiming time_baselines(const Sensor& sensor_in, const PipelineTimingOptio
   const MeasurementSet measurements = make_measurement_set(mesh.electrode_count());
   BaselineTiming timing;
   if (normal_equations)
-    timing.normal_equations_s = normal_equations_seconds(compute_jacobian(mesh, measurements), operator_options(Method::paper).lambda2);
+    timing.normal_equations_s =
+        normal_equations_seconds(compute_jacobian(mesh, measurements), operator_options(Method::paper).lambda2);
   if (brute_force_jacobian)
     timing.brute_force_jacobian_s = seconds([&] { compute_jacobian_brute_force(mesh, measurements); });
   return timing;

@@ -6,8 +6,8 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <tuple>
 
@@ -106,7 +106,8 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
     model.op = family.compact_operator_for(lambda2, model.options.rank_cutoff);
     Reconstructor reconstructor(model, LinearCalibration::uncalibrated(c.sensor));
     const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
-    result.sweep.push_back({lambda2, r.image_centroid, r.strongest_contact, l_curve_point(J, model.op, model.measurements, runs.grid)});
+    result.sweep.push_back(
+        {lambda2, r.image_centroid, r.strongest_contact, l_curve_point(J, model.op, model.measurements, runs.grid)});
   }
   for (const SweepPoint& point : result.sweep)
     if (!best || point.image_centroid.mean < best->image_centroid.mean) best = &point;
@@ -118,7 +119,8 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
     model.options.lambda2 = result.lambda2;
     model.op = family.compact_operator_for(result.lambda2, model.options.rank_cutoff);
     Reconstructor reconstructor(model, LinearCalibration::uncalibrated(c.sensor));
-    result.pressure_error_N_per_mm2 = pressure_errors(reconstructor, runs.calibration, runs.test, 0.5).error_N_per_mm2.mean;
+    result.pressure_error_N_per_mm2 =
+        pressure_errors(reconstructor, runs.calibration, runs.test, 0.5).error_N_per_mm2.mean;
     result.two_press = two_press_rates(reconstructor, runs.two_press, 0.4 * c.radius_mm * 4);
   }
   return result;
@@ -134,9 +136,10 @@ std::vector<double> true_pressures(const SimulatedRun& run) {
 /// mean |error| on the test run.
 double fit_pressure_error(Reconstructor& reconstructor, const ReconstructionModel& model, ContactFitter& fitter,
                           const EvalCase& c, const Runs& runs) {
-  const ContactLaw law = calibrate_fitted_contact_law(model, fitter, runs.calibration.reference, runs.calibration.frames,
-                                                      true_pressures(runs.calibration), c.sensor.contact)
-                             .law;
+  const ContactLaw law =
+      calibrate_fitted_contact_law(model, fitter, runs.calibration.reference, runs.calibration.frames,
+                                   true_pressures(runs.calibration), c.sensor.contact)
+          .law;
   reconstructor.set_reference(runs.test.reference);
   const std::vector<double> truth = true_pressures(runs.test);
   std::vector<double> errors;
@@ -198,10 +201,11 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
       ContactFitter fitter(c.sensor, fit_model->mesh, fit_model->green, model.measurements);
       Reconstructor fitting(model, fitter, FitCalibration::uncalibrated(c.sensor));
       result.fit = localisation_errors(fitting, run, 0.5).strongest_contact;
-      const SimulatedRun calibration = simulate_run(
-          twin, pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
-      const SheetCorrection correction = calibrate_sheet(c.sensor, fit_model->mesh, model.measurements, calibration.frames,
-                                                         calibration.reference, calibration.presses)
+      const SimulatedRun calibration =
+          simulate_run(twin,
+                       pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
+      const SheetCorrection correction = calibrate_sheet(c.sensor, fit_model->mesh, model.measurements,
+                                                         calibration.frames, calibration.reference, calibration.presses)
                                              .correction;
       const DenseGreenFunction green = fit_green_function(fit_model->mesh, c.sensor, &correction);
       ContactFitter corrected(c.sensor, fit_model->mesh, green, model.measurements);
@@ -217,7 +221,8 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
 std::string file_stem(const std::string& name) {
   std::string stem;
   for (char ch : name)
-    if (std::isalnum(static_cast<unsigned char>(ch))) stem += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (std::isalnum(static_cast<unsigned char>(ch)))
+      stem += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     else if (!stem.empty() && stem.back() != '_') stem += '_';
   while (!stem.empty() && stem.back() == '_') stem.pop_back();
   return stem;
@@ -243,15 +248,18 @@ SheetEvaluation evaluate_sheet(const EvalCase& eval_case, const EvalOptions& opt
     if (method == Method::paper) evaluation.mismatch_lambda2 = evaluation.methods.back().lambda2;
   }
   if (eval_case.pressure_and_two_press && evaluation.mismatch_lambda2 > 0 && options.mismatches) {
-    const bool with_fit = std::find(options.methods.begin(), options.methods.end(), Method::fit) != options.methods.end();
-    const std::optional<FitModel> fit_model = with_fit ? std::optional<FitModel>(build_fit_model(eval_case.sensor)) : std::nullopt;
-    evaluation.mismatches =
-        evaluate_mismatches(eval_case, evaluation.mismatch_lambda2, options, fit_model ? &*fit_model : nullptr, progress);
+    const bool with_fit =
+        std::find(options.methods.begin(), options.methods.end(), Method::fit) != options.methods.end();
+    const std::optional<FitModel> fit_model =
+        with_fit ? std::optional<FitModel>(build_fit_model(eval_case.sensor)) : std::nullopt;
+    evaluation.mismatches = evaluate_mismatches(eval_case, evaluation.mismatch_lambda2, options,
+                                                fit_model ? &*fit_model : nullptr, progress);
   }
   return evaluation;
 }
 
-std::vector<std::string> write_sweep_plots(const EvalCase& eval_case, const SheetEvaluation& evaluation, const std::string& dir) {
+std::vector<std::string> write_sweep_plots(const EvalCase& eval_case, const SheetEvaluation& evaluation,
+                                           const std::string& dir) {
   std::vector<PlotSeries> errors, l_curves;
   for (std::size_t i = 0; i < evaluation.methods.size(); ++i) {
     const MethodEvaluation& m = evaluation.methods[i];

@@ -31,10 +31,8 @@ struct CoupledEntries {
   Vector& drive;
   void add(int row, int column, bool column_fed, double c) const {
     if (row < 0) return;
-    if (column_fed)
-      drive[row] -= c;
-    else
-      entries.emplace_back(row, column, c);
+    if (column_fed) drive[row] -= c;
+    else entries.emplace_back(row, column, c);
   }
 };
 
@@ -75,10 +73,10 @@ CoupledSystem CoupledAssembler::system(const ContactLoad& contact) const {
         const double c = contact.local_S[i](a, b);
         const int u_a = dofs_->dof_of_node[v[a]], u_b = dofs_->dof_of_node[v[b]];
         const int d_a = free_index_[v[a]], d_b = free_index_[v[b]];
-        add.add(u_a, u_b, false, c);        // g u on the probing sheet
-        add.add(u_a, d_b, d_b < 0, -c);     // − g v on the probing sheet
-        add.add(d_a, u_b, false, -c);       // − g u on the driving layer
-        add.add(d_a, d_b, d_b < 0, c);      // g v on the driving layer
+        add.add(u_a, u_b, false, c);     // g u on the probing sheet
+        add.add(u_a, d_b, d_b < 0, -c);  // − g v on the probing sheet
+        add.add(d_a, u_b, false, -c);    // − g u on the driving layer
+        add.add(d_a, d_b, d_b < 0, c);   // g v on the driving layer
       }
   }
   s.F.setFromTriplets(entries.begin(), entries.end());

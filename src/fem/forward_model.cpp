@@ -15,7 +15,7 @@ namespace emit {
 struct ForwardModel::Impl {
   Mesh mesh;
   ElectrodeDofs dofs;
-  SparseMatrix stiffness_dof;  ///< K in dof space [S]
+  SparseMatrix stiffness_dof;               ///< K in dof space [S]
   std::optional<CoupledAssembler> driving;  ///< a resistive driving layer; none: an equipotential
   mutable SparseCholesky cholesky;
 

@@ -157,17 +157,20 @@ SparseMatrix SupernodalCholesky::selected_inverse() const {
     double* ZK = z.data() + sn.px[K];
     if (nr > 0) {
       Y.resize(static_cast<std::size_t>(nr) * nc);
-      for (int c = 0; c < nc; ++c) std::copy_n(LK + nc + static_cast<std::ptrdiff_t>(c) * ns, nr, Y.data() + static_cast<std::ptrdiff_t>(c) * nr);
+      for (int c = 0; c < nc; ++c)
+        std::copy_n(LK + nc + static_cast<std::ptrdiff_t>(c) * ns, nr, Y.data() + static_cast<std::ptrdiff_t>(c) * nr);
       cblas_dtrsm(CblasColMajor, CblasRight, CblasLower, CblasNoTrans, CblasNonUnit, nr, nc, 1.0, LK, ns, Y.data(), nr);
       Zrr.resize(static_cast<std::size_t>(nr) * nr);
       gather_below(sn, z.data(), sn.s + sn.pi[K] + nc, nr, position, Zrr.data());
       cblas_dsymm(CblasColMajor, CblasLeft, CblasLower, nr, nc, -1.0, Zrr.data(), nr, Y.data(), nr, 0.0, ZK + nc, ns);
     }
-    for (int c = 0; c < nc; ++c) std::copy_n(LK + static_cast<std::ptrdiff_t>(c) * ns, nc, ZK + static_cast<std::ptrdiff_t>(c) * ns);
+    for (int c = 0; c < nc; ++c)
+      std::copy_n(LK + static_cast<std::ptrdiff_t>(c) * ns, nc, ZK + static_cast<std::ptrdiff_t>(c) * ns);
     int info = 0;
     dpotri_("L", &nc, ZK, &ns, &info);
     if (info != 0) throw SolverError("selected inversion: LAPACK dpotri failed, info " + std::to_string(info));
-    if (nr > 0) cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, nc, nc, nr, -1.0, ZK + nc, ns, Y.data(), nr, 1.0, ZK, ns);
+    if (nr > 0)
+      cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, nc, nc, nr, -1.0, ZK + nc, ns, Y.data(), nr, 1.0, ZK, ns);
   }
   // Back to A's ordering on A's pattern: A⁻¹(Perm[i], Perm[j]) = Z(i, j).
   const auto* perm = static_cast<const int*>(L.Perm);

@@ -9,9 +9,10 @@
 
 namespace emit {
 
-std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model, const LinearCalibration& calibration,
-                                                    const FrameOptions& options, const Frame& reference,
-                                                    const std::vector<Frame>& frames, int threads) {
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
+                                                    const LinearCalibration& calibration, const FrameOptions& options,
+                                                    const Frame& reference, const std::vector<Frame>& frames,
+                                                    int threads) {
   if (threads < 1) throw InvalidInput("batch needs at least 1 thread, got " + std::to_string(threads));
   std::vector<std::vector<Contact>> contacts(frames.size());
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));

@@ -88,8 +88,10 @@ FitOptions resolved_fit_options(FitOptions o, const Sensor& sensor, const Mesh& 
   o.validate();
   if (o.edge_mm == 0) o.edge_mm = sensor.mesh.element_size_mm / 4;
   if (o.prior_radius_mm == 0) o.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
-  const Vector2 extent = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff() - mesh.nodes_mm.leftCols<2>().colwise().minCoeff();
-  if (extent.minCoeff() <= 2 * sensor.mesh.element_size_mm) throw InvalidInput("fit: the sheet is too small for its mesh");
+  const Vector2 extent =
+      mesh.nodes_mm.leftCols<2>().colwise().maxCoeff() - mesh.nodes_mm.leftCols<2>().colwise().minCoeff();
+  if (extent.minCoeff() <= 2 * sensor.mesh.element_size_mm)
+    throw InvalidInput("fit: the sheet is too small for its mesh");
   return o;
 }
 
@@ -181,7 +183,6 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
   return seed;
 }
 
-
 /// A set of discs is presses only if every disc is on the sheet (one pushed off it is the
 /// optimiser using it as a fudge) and none is beside another: two small discs side by side are
 /// one large press, modelled by two (the held radius is smaller than most presses).
@@ -189,7 +190,8 @@ bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
     if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
-      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < plausible_separation_mm()) return false;
+      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < plausible_separation_mm())
+        return false;
   }
   return true;
 }
@@ -212,7 +214,8 @@ void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<doubl
   const int k = static_cast<int>(parameters.size()), M = measurements_.size();
   const FrameMisfit cost(*this, dV, k);
   Vector residuals(M);
-  std::vector<Eigen::Matrix<double, Eigen::Dynamic, disc_parameters, Eigen::RowMajor>> blocks(k, decltype(blocks)::value_type(M, disc_parameters));
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, disc_parameters, Eigen::RowMajor>>
+  blocks(k, decltype(blocks)::value_type(M, disc_parameters));
   std::vector<const double*> values;
   std::vector<double*> jacobians;
   for (int i = 0; i < k; ++i) values.push_back(parameters[i].data()), jacobians.push_back(blocks[i].data());
@@ -222,11 +225,13 @@ void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<doubl
     for (int j = 0; j < disc_parameters; ++j)
       if (j != 2) free.push_back(disc_parameters * i + j);
   Matrix J(M, static_cast<Index>(free.size()));
-  for (std::size_t c = 0; c < free.size(); ++c) J.col(static_cast<Index>(c)) = blocks[free[c] / disc_parameters].col(free[c] % disc_parameters);
+  for (std::size_t c = 0; c < free.size(); ++c)
+    J.col(static_cast<Index>(c)) = blocks[free[c] / disc_parameters].col(free[c] % disc_parameters);
   const Matrix covariance = (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse();
   const double scale = std::max(1.0, chi2 / std::max<double>(1, M - static_cast<double>(free.size())));
   for (std::size_t c = 0; c < free.size(); ++c)
-    covariance_std_[static_cast<std::size_t>(free[c])] = std::sqrt(std::max(0.0, covariance(static_cast<Index>(c), static_cast<Index>(c)) * scale));
+    covariance_std_[static_cast<std::size_t>(free[c])] =
+        std::sqrt(std::max(0.0, covariance(static_cast<Index>(c), static_cast<Index>(c)) * scale));
 }
 
 /// Levenberg–Marquardt on all discs at once. \return the misfit's sum of squares [V²].
@@ -270,17 +275,20 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
 /// settles between them, nearer the stronger; kept there, it leads Levenberg–Marquardt into a
 /// local minimum (a strong disc between the presses, a weak one beyond), and a seed at either press
 /// sits beside it. Mirrored, the pair starts near both presses.
-void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const {
+void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed,
+                               std::vector<std::vector<Disc>>& starts) const {
   const Disc added = clamp_seed(seed);
   starts.push_back(discs);
   starts.back().push_back(added);
   const auto distance = [&](const Disc& d) { return std::hypot(d.x_mm - added.x_mm, d.y_mm - added.y_mm); };
-  const auto nearest = std::min_element(discs.begin(), discs.end(), [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
+  const auto nearest = std::min_element(discs.begin(), discs.end(),
+                                        [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
   // Mirrored less than the plausible separation apart, the pair would be one press anyway.
   if (2 * distance(*nearest) < plausible_separation_mm()) return;
   std::vector<Disc> split = starts.back();
   Disc& moved = split[static_cast<std::size_t>(nearest - discs.begin())];
-  moved = clamp_seed({2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
+  moved = clamp_seed(
+      {2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
   starts.push_back(std::move(split));
 }
 
@@ -327,7 +335,8 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
 bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
   if (discs.size() < 2) return false;
   for (std::size_t i = 0; i < discs.size(); ++i)
-    if (std::hypot(discs[i].x_mm - previous[i].x_mm, discs[i].y_mm - previous[i].y_mm) > plausible_separation_mm()) return true;
+    if (std::hypot(discs[i].x_mm - previous[i].x_mm, discs[i].y_mm - previous[i].y_mm) > plausible_separation_mm())
+      return true;
   return false;
 }
 
@@ -377,7 +386,8 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     if (fresh) {
       fresh = false;
       std::array<Disc, 2> pair;
-      if (discs.size() == 1 && best_atom_pair(dV / noise_V_, pair)) starts.push_back({clamp_seed(pair[0]), clamp_seed(pair[1])});
+      if (discs.size() == 1 && best_atom_pair(dV / noise_V_, pair))
+        starts.push_back({clamp_seed(pair[0]), clamp_seed(pair[1])});
       Disc seed;
       this->misfit(discs, dV, residual);
       if (residual_peak && residual_peak(residual, seed)) add_starts(discs, seed, starts);
@@ -387,7 +397,8 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     return !starts.empty();
   };
   int failed = 0;  // each try costs a fit or few: give up after a few
-  while (static_cast<int>(discs.size()) < options_.max_contacts && !explained(misfit_sq, dV) && failed < 3 && next_starts()) {
+  while (static_cast<int>(discs.size()) < options_.max_contacts && !explained(misfit_sq, dV) && failed < 3 &&
+         next_starts()) {
     std::vector<Disc> more;
     double more_sq = 0;
     if (fit_best_start(dV, starts, more, more_sq) && more_sq <= (1 - new_contact_gain) * misfit_sq) {

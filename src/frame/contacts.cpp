@@ -178,7 +178,7 @@ const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>&
   check_size("the pressure", pressure.size(), element_count());
   check_size("the weight", weight.size(), element_count());
   const FloodFill fill{neighbour_offsets_.data(), neighbours_.data(), areas_mm2_.data(), centroids_mm_.data(),
-                       pressure.data(),           weight.data(),     pending_.data(),   stack_.data()};
+                       pressure.data(),           weight.data(),      pending_.data(),   stack_.data()};
   std::copy(selected.begin(), selected.end(), pending_.begin());
   contacts_.clear();
   for (int seed = 0; seed < static_cast<int>(pending_.size()); ++seed) {

@@ -74,7 +74,8 @@ DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, i
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
     const Vector2 c = mesh.triangle_centroid_mm(t).head<2>();
     double reach = 0;
-    for (int k = 0; k < 3; ++k) reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).head<2>().transpose() - c).norm());
+    for (int k = 0; k < 3; ++k)
+      reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).head<2>().transpose() - c).norm());
     centroid_mm_.push_back(c);
     reach_mm_.push_back(reach);
   }
@@ -94,14 +95,16 @@ void DiscContactIntegrator::bucket_triangles() {
   rows_ = 1 + static_cast<int>((top.y() - origin_mm_.y()) / cell_mm_);
   cell_start_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_) + 1, 0);
   const auto cell_of = [&](const Vector2& c) {
-    return static_cast<int>((c.y() - origin_mm_.y()) / cell_mm_) * columns_ + static_cast<int>((c.x() - origin_mm_.x()) / cell_mm_);
+    return static_cast<int>((c.y() - origin_mm_.y()) / cell_mm_) * columns_ +
+           static_cast<int>((c.x() - origin_mm_.x()) / cell_mm_);
   };
   for (const Vector2& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c)) + 1];
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
   cell_triangles_.resize(centroid_mm_.size());
   std::vector<int> filled(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t t = 0; t < centroid_mm_.size(); ++t)
-    cell_triangles_[static_cast<std::size_t>(filled[static_cast<std::size_t>(cell_of(centroid_mm_[t]))]++)] = static_cast<int>(t);
+    cell_triangles_[static_cast<std::size_t>(filled[static_cast<std::size_t>(cell_of(centroid_mm_[t]))]++)] =
+        static_cast<int>(t);
 }
 
 void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool derivatives) const {
@@ -111,11 +114,13 @@ void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool deri
   const auto cell = [&](double v, double origin, int count) {
     return std::clamp(static_cast<int>(std::floor((v - origin) / cell_mm_)), 0, count - 1);
   };
-  const int x0 = cell(center.x() - reach, origin_mm_.x(), columns_), x1 = cell(center.x() + reach, origin_mm_.x(), columns_);
+  const int x0 = cell(center.x() - reach, origin_mm_.x(), columns_),
+            x1 = cell(center.x() + reach, origin_mm_.x(), columns_);
   const int y0 = cell(center.y() - reach, origin_mm_.y(), rows_), y1 = cell(center.y() + reach, origin_mm_.y(), rows_);
   for (int row = y0; row <= y1; ++row) {
     const auto first_cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_);
-    for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)]; k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
+    for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)];
+         k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
       add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, out, derivatives);
   }
 }
@@ -130,7 +135,8 @@ void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLo
   out.triangles.push_back(tri);
   if (d + reach_mm_[t] <= r - h) {  // wholly inside: s = 1
     out.local_S.emplace_back(g * area * uniform_integral());
-    if (derivatives) out.d_local_S.push_back({Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()});
+    if (derivatives)
+      out.d_local_S.push_back({Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()});
     return;
   }
   Eigen::Matrix<double, 3, 2> corner;

@@ -108,9 +108,9 @@ void FramePredictor::derivative(const std::vector<Index>& triangles, const std::
     dA << da_e[l], dw_e[l], d_drawn, -d_lost;
     const Eigen::Vector2d d_xI = -regrounding_[l].partialPivLu().solve(dA * xI_[l]);
     const Eigen::Vector2d& xI = xI_[l];
-    d_frame.row(l) = (Vector::Constant(N, -d_xI[0]) + d_xI[0] * a_e + xI[0] * da_e + d_xI[1] * W_e_.col(l) +
-                      xI[1] * dw_e)
-                         .transpose();
+    d_frame.row(l) =
+        (Vector::Constant(N, -d_xI[0]) + d_xI[0] * a_e + xI[0] * da_e + d_xI[1] * W_e_.col(l) + xI[1] * dw_e)
+            .transpose();
   }
 }
 

@@ -19,7 +19,8 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
       selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
       operator_scratch_(model.op.scratch()) {
   if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
-    throw InvalidInput("threshold must be a fraction between 0 and 1, got " + std::to_string(options.threshold_fraction));
+    throw InvalidInput("threshold must be a fraction between 0 and 1, got " +
+                       std::to_string(options.threshold_fraction));
 }
 
 Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
@@ -35,7 +36,8 @@ void Reconstructor::set_reference(const Frame& reference) {
     throw InvalidInput("reference frame has " + std::to_string(reference.size()) + " values, expected " +
                        std::to_string(N * N));
   if (!reference.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
-  for (int i = 0; i < model_.measurements.size(); ++i) reference_[i] = reference.data()[model_.measurements.frame_index[i]];
+  for (int i = 0; i < model_.measurements.size(); ++i)
+    reference_[i] = reference.data()[model_.measurements.frame_index[i]];
   previous_discs_.clear();  // a new reference starts a new stream
 }
 

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 
@@ -39,7 +39,8 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
     if (!j.contains(key)) throw InvalidInput(where + ": " + key + ": missing");
   const std::vector<double> box = numbers(where + ".box_mm", j["box_mm"], 4);
   const std::vector<double> theta = numbers(where + ".log_conductance", j["log_conductance"], SheetCorrection::terms);
-  if (!(box[2] > box[0] && box[3] > box[1])) throw InvalidInput(where + ".box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
+  if (!(box[2] > box[0] && box[3] > box[1]))
+    throw InvalidInput(where + ".box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
   SheetCorrection c;
   c.lower_mm = {box[0], box[1]};
   c.upper_mm = {box[2], box[3]};
@@ -58,7 +59,8 @@ Calibration load_calibration(const std::string& path) {
   } catch (const nlohmann::json::parse_error& e) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
   }
-  if (!j.is_object()) throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"} or {\"alpha_ohm_mm2\", \"gamma\"}");
+  if (!j.is_object())
+    throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"} or {\"alpha_ohm_mm2\", \"gamma\"}");
   LinearCalibration linear;
   FitCalibration fit;
   const bool law = j.contains("alpha_ohm_mm2") || j.contains("gamma");
@@ -76,10 +78,13 @@ Calibration load_calibration(const std::string& path) {
     else if (law && item.key() == "alpha_ohm_mm2") fit.contact_law.alpha_ohm_mm2 = v;
     else if (law && item.key() == "gamma") fit.contact_law.gamma = v;
     else if (law && item.key() == "indenter_radius_mm" && v > 0) fit.indenter_radius_mm = v;
-    else if (law && item.key() == "indenter_radius_mm") throw InvalidInput(path + ": indenter_radius_mm must be positive");
-    else throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
+    else if (law && item.key() == "indenter_radius_mm")
+      throw InvalidInput(path + ": indenter_radius_mm must be positive");
+    else
+      throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
   }
-  for (const char* key : law ? std::vector<const char*>{"alpha_ohm_mm2", "gamma"} : std::vector<const char*>{"a1", "a2", "a3"})
+  for (const char* key :
+       law ? std::vector<const char*>{"alpha_ohm_mm2", "gamma"} : std::vector<const char*>{"a1", "a2", "a3"})
     if (!j.contains(key)) throw InvalidInput(path + ": " + key + ": missing");
   if (!law) return linear;
   if (!(fit.contact_law.alpha_ohm_mm2 > 0 && fit.contact_law.gamma < 0))

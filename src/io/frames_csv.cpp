@@ -7,8 +7,8 @@
 #include <cstring>
 #include <fstream>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 
@@ -51,7 +51,8 @@ std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count)
         throw InvalidInput(where + ": value " + std::to_string(count + 1) + " \"" + text + "\" is not a number");
       }
       if (!std::isfinite(value))
-        throw InvalidInput(where + ": value " + std::to_string(count + 1) + " is " + std::string(p, static_cast<std::size_t>(end - p)));
+        throw InvalidInput(where + ": value " + std::to_string(count + 1) + " is " +
+                           std::string(p, static_cast<std::size_t>(end - p)));
       if (count < values_per_frame) frame.data()[count] = value;
       ++count;
       if (*stop == '\0') break;

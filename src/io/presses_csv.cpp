@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 

@@ -24,7 +24,8 @@ constexpr long max_brute_force_triangles = 2500;
 /// The sensor with `count` electrodes by the default layout, at its own electrode width.
 Sensor with_electrodes(const Sensor& sensor, int count) {
   if (count == sensor.electrode_count()) return sensor;
-  if (sensor.shape.kind == ShapeKind::mesh_file) throw InvalidInput("--electrodes: a mesh-file sensor keeps its own electrodes");
+  if (sensor.shape.kind == ShapeKind::mesh_file)
+    throw InvalidInput("--electrodes: a mesh-file sensor keeps its own electrodes");
   nlohmann::json j = sensor_to_json(sensor);
   j["electrodes"] = {{"count", count}, {"width_mm", sensor.electrodes.at(0).width_mm}};
   return parse_sensor(j, "--electrodes " + std::to_string(count));
@@ -72,8 +73,7 @@ ChildReport<Result> run_in_child(Work&& work, double& peak_MiB) {
 
 }  // namespace
 
-int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row,
-                          const Progress& progress) {
+int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row, const Progress& progress) {
   const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
   const std::string scratch =
       (std::filesystem::temp_directory_path() / ("emit-bench-" + std::to_string(::getpid()))).string();
@@ -81,7 +81,8 @@ int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)
   for (int electrodes : job.electrodes) {
     const Sensor case_sensor = with_electrodes(sensor, electrodes);
     for (int size : job.triangles) {
-      progress.say("timing " + std::to_string(electrodes) + " electrodes, about " + std::to_string(size) + " triangles");
+      progress.say("timing " + std::to_string(electrodes) + " electrodes, about " + std::to_string(size) +
+                   " triangles");
       BenchRow row;
       row.sensor_name = sensor.name;
       row.electrodes = electrodes;
@@ -98,8 +99,9 @@ int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)
         const bool brute_force = job.brute_force && ours.result.triangles <= max_brute_force_triangles;
         double baseline_peak_MiB = 0;
         if (normal_equations || brute_force) {
-          const auto baselines = run_in_child<BaselineTiming>(
-              [&] { return time_baselines(case_sensor, options, normal_equations, brute_force); }, baseline_peak_MiB);
+          const auto baselines = run_in_child<
+              BaselineTiming>([&] { return time_baselines(case_sensor, options, normal_equations, brute_force); },
+                              baseline_peak_MiB);
           row.baselines = baselines.result;
           if (baselines.error[0]) progress.warn(std::string("bench: baseline: ") + baselines.error);
         }

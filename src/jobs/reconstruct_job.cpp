@@ -28,7 +28,8 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
                  Method method, const std::string& dir) {
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
-  for (const Contact& c : contacts) outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi)});
+  for (const Contact& c : contacts)
+    outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi)});
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,
@@ -88,7 +89,8 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     for (std::size_t f = 0; f < frames.size(); ++f) {
       const auto& contacts = reconstructor.process(frames[f]);
       const FitResult* fitted = reconstructor.fit_result();
-      write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts, fitted ? 1e3 * fitted->rms_misfit_V : -1);
+      write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts,
+                          fitted ? 1e3 * fitted->rms_misfit_V : -1);
       if (!job.images_dir.empty()) write_image(reconstructor, contacts, f, job.method, job.images_dir);
       progress.step("reconstructing frame", static_cast<long>(f + 1), static_cast<long>(frames.size()));
     }

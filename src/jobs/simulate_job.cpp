@@ -44,7 +44,8 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
   Sensor& sensor = report.sensor;
   if (job.noise_V >= 0) sensor.adc.noise_V = job.noise_V;
   if (!job.presses.empty() && job.script) throw InvalidInput("give --press or --script, not both");
-  if (job.presses.empty() && !job.script) throw InvalidInput("nothing to simulate: give --press x,y,r,F or --script NAME");
+  if (job.presses.empty() && !job.script)
+    throw InvalidInput("nothing to simulate: give --press x,y,r,F or --script NAME");
   report.presses = job.script ? run_script(sensor, *job.script) : PressSequence{job.presses};
   for (std::size_t f = 0; f < report.presses.size(); ++f)
     for (std::size_t i = 0; i < report.presses[f].size(); ++i)

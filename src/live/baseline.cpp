@@ -6,7 +6,8 @@ namespace emit {
 
 Baseline::Baseline(BaselineOptions options) : options_(options) {
   if (options_.capture_frames < 1) throw InvalidInput("baseline: capture frames must be at least 1");
-  if (!(options_.drift_rate >= 0 && options_.drift_rate <= 1)) throw InvalidInput("baseline: drift rate must be in [0, 1]");
+  if (!(options_.drift_rate >= 0 && options_.drift_rate <= 1))
+    throw InvalidInput("baseline: drift rate must be in [0, 1]");
 }
 
 void Baseline::recapture() { captured_ = 0; }

@@ -86,7 +86,8 @@ void LiveLoop::publish(LiveFrame& frame) {
   const auto now = std::chrono::steady_clock::now();
   if (handled_ > 1) {
     const double interval_s = seconds_between(previous_publish_, now);
-    mean_interval_s_ = mean_interval_s_ > 0 ? mean_interval_s_ + rate_smoothing * (interval_s - mean_interval_s_) : interval_s;
+    mean_interval_s_ =
+        mean_interval_s_ > 0 ? mean_interval_s_ + rate_smoothing * (interval_s - mean_interval_s_) : interval_s;
   }
   previous_publish_ = now;
   frame.frames_per_s = mean_interval_s_ > 0 ? 1 / mean_interval_s_ : 0;

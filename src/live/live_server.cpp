@@ -140,8 +140,9 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       return;
     }
     const bool page = target == "/" || target == "/index.html";
-    auto response = std::make_shared<http::response<http::string_body>>(page ? http::status::ok : http::status::not_found,
-                                                                         request_.version());
+    auto response =
+        std::make_shared<http::response<http::string_body>>(page ? http::status::ok : http::status::not_found,
+                                                            request_.version());
     response->set(http::field::server, "emit live");
     response->set(http::field::content_type, page ? "text/html; charset=utf-8" : "text/plain");
     response->set(http::field::cache_control, "no-store");
@@ -194,7 +195,8 @@ tcp::endpoint parse_address(const std::string& address, std::string& host) {
     if (used != port_text.size()) port = -1;
   } catch (const std::exception&) {
   }
-  if (port < 0 || port > 65535) throw InvalidInput("--serve: port \"" + port_text + "\" is not a number from 0 to 65535");
+  if (port < 0 || port > 65535)
+    throw InvalidInput("--serve: port \"" + port_text + "\" is not a number from 0 to 65535");
   beast::error_code ec;
   const auto ip = net::ip::make_address(host == "localhost" ? "127.0.0.1" : host, ec);
   if (ec) throw InvalidInput("--serve: \"" + host + "\" is not an IP address (e.g. 127.0.0.1 or 0.0.0.0)");

@@ -1,8 +1,8 @@
 #include "emit/live/open_source.hpp"
 
 #include "emit/acquire/device_source.hpp"
-#include "emit/twin/sim_source.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/twin/sim_source.hpp"
 
 namespace emit {
 

@@ -37,7 +37,7 @@ std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
     center /= std::max<double>(1.0, static_cast<double>(mesh.electrode_nodes[e].size()));
     electrodes.push_back({{"segments_mm", segments}, {"x_mm", center.x()}, {"y_mm", center.y()}});
   }
-  return json{{"type", "mesh"},       {"name", sheet_name},     {"nodes_mm", nodes},
+  return json{{"type", "mesh"},         {"name", sheet_name},    {"nodes_mm", nodes},
               {"triangles", triangles}, {"outline_mm", outline}, {"electrodes", electrodes}}
       .dump();
 }
@@ -46,8 +46,11 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands) {
   static_assert(std::endian::native == std::endian::little, "the frame message is little-endian");
   json contacts = json::array();
   for (const Contact& c : *frame.contacts)
-    contacts.push_back({{"x_mm", c.x_mm}, {"y_mm", c.y_mm}, {"area_mm2", c.area_mm2},
-                        {"pressure_N_per_mm2", c.pressure_N_per_mm2}, {"force_N", c.force_N}});
+    contacts.push_back({{"x_mm", c.x_mm},
+                        {"y_mm", c.y_mm},
+                        {"area_mm2", c.area_mm2},
+                        {"pressure_N_per_mm2", c.pressure_N_per_mm2},
+                        {"force_N", c.force_N}});
   const Vector& pressure = *frame.pressure_N_per_mm2;
   std::string header = json{{"type", "frame"},
                             {"index", frame.index},

@@ -87,7 +87,8 @@ void build_geometry(const Sensor& sensor, const MeshOptions& options, std::vecto
     if (piece.kind == BorderPiece::Kind::line) {
       curve = gmsh::model::geo::addLine(a, b);
     } else {
-      if (center_tag < 0) center_tag = gmsh::model::geo::addPoint(piece.arc_center_mm.x(), piece.arc_center_mm.y(), 0, h);
+      if (center_tag < 0)
+        center_tag = gmsh::model::geo::addPoint(piece.arc_center_mm.x(), piece.arc_center_mm.y(), 0, h);
       curve = gmsh::model::geo::addCircleArc(a, center_tag, b);
     }
     curve_tags.push_back(curve);

@@ -1,8 +1,8 @@
 #include "gmsh_session.hpp"
 
 #include <algorithm>
-#include <map>
 #include <cctype>
+#include <map>
 #include <optional>
 
 #include <gmsh.h>
@@ -36,7 +36,8 @@ std::string GmshSession::last_error() {
   std::vector<std::string> log;
   gmsh::logger::get(log);
   // The last error first.
-  const auto line = std::find_if(log.rbegin(), log.rend(), [](const std::string& l) { return l.rfind("Error", 0) == 0; });
+  const auto line =
+      std::find_if(log.rbegin(), log.rend(), [](const std::string& l) { return l.rfind("Error", 0) == 0; });
   if (line == log.rend()) return {};
   std::string message = line->substr(line->find(':') == std::string::npos ? 0 : line->find(':') + 1);
   message.erase(0, message.find_first_not_of(' '));
@@ -97,7 +98,8 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
   mesh.nodes_mm.resize(static_cast<Index>(tag_of_index.size()), 3);
   for (std::size_t index = 0; index < tag_of_index.size(); ++index)
     for (int c = 0; c < 3; ++c)
-      mesh.nodes_mm(static_cast<Index>(index), c) = coords[3 * static_cast<std::size_t>(coord_row[tag_of_index[index]]) + c];
+      mesh.nodes_mm(static_cast<Index>(index), c) =
+          coords[3 * static_cast<std::size_t>(coord_row[tag_of_index[index]]) + c];
 
   // A flat sheet's triangles all face +z.
   if (mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() == 0.0)

@@ -11,7 +11,8 @@ double Mesh::triangle_area_mm2(Index t) const {
 }
 
 Vector3 Mesh::triangle_centroid_mm(Index t) const {
-  return (nodes_mm.row(triangles(t, 0)) + nodes_mm.row(triangles(t, 1)) + nodes_mm.row(triangles(t, 2))).transpose() / 3.0;
+  return (nodes_mm.row(triangles(t, 0)) + nodes_mm.row(triangles(t, 1)) + nodes_mm.row(triangles(t, 2))).transpose() /
+         3.0;
 }
 
 bool Mesh::contains_xy(const Vector2& p) const {
@@ -43,7 +44,8 @@ std::vector<std::array<int, 2>> Mesh::electrode_edges(int e) const {
   const auto& nodes = electrode_nodes.at(e);
   std::vector<std::array<int, 2>> edges;
   for (const auto& edge : border_edges())
-    if (std::binary_search(nodes.begin(), nodes.end(), edge[0]) && std::binary_search(nodes.begin(), nodes.end(), edge[1]))
+    if (std::binary_search(nodes.begin(), nodes.end(), edge[0]) &&
+        std::binary_search(nodes.begin(), nodes.end(), edge[1]))
       edges.push_back(edge);
   return edges;
 }

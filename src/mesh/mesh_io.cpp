@@ -5,8 +5,8 @@
 
 #include <gmsh.h>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 #include "gmsh_session.hpp"
 
 namespace emit {

@@ -54,7 +54,7 @@ Mesh sort_for_locality(const Mesh& mesh) {
   std::vector<std::uint32_t> node_keys(static_cast<std::size_t>(mesh.node_count()));
   for (Index v = 0; v < mesh.node_count(); ++v) node_keys[v] = z_order(mesh.nodes_mm.row(v).head<2>().transpose());
   const std::vector<int> node_order = order_by(node_keys);  // new index → old
-  std::vector<int> new_node(node_order.size());              // old index → new
+  std::vector<int> new_node(node_order.size());             // old index → new
   Mesh sorted;
   sorted.nodes_mm.resize(mesh.node_count(), 3);
   for (std::size_t v = 0; v < node_order.size(); ++v) {

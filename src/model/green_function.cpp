@@ -16,7 +16,8 @@ DenseGreenFunction dense_green_function(const Mesh& mesh, double sheet_resistanc
 }
 
 DenseGreenFunction dense_green_function(const Mesh& mesh, const Vector& element_conductance_S,
-                                        const std::vector<int>& only_dofs, const std::function<void(double)>& progress) {
+                                        const std::vector<int>& only_dofs,
+                                        const std::function<void(double)>& progress) {
   if (element_conductance_S.size() != mesh.triangle_count() || !(element_conductance_S.array() > 0).all())
     throw InvalidInput("Green's function: one positive sheet conductance per triangle is needed");
   DenseGreenFunction green{number_electrode_dofs(mesh), {}, {}};
@@ -36,7 +37,8 @@ DenseGreenFunction dense_green_function(const Mesh& mesh, const Vector& element_
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     if (columns.front() < 0 || columns.back() >= n) throw InvalidInput("Green's function: a dof out of range");
     green.column_of_dof.assign(static_cast<std::size_t>(n), -1);
-    for (std::size_t c = 0; c < columns.size(); ++c) green.column_of_dof[static_cast<std::size_t>(columns[c])] = static_cast<int>(c);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      green.column_of_dof[static_cast<std::size_t>(columns[c])] = static_cast<int>(c);
   }
   const int solved = static_cast<int>(columns.size()) - 1;  // column 0 (the ground) stays 0
   green.G0 = Matrix::Zero(n, solved + 1);
@@ -44,7 +46,8 @@ DenseGreenFunction dense_green_function(const Mesh& mesh, const Vector& element_
   for (int first = 0; first < solved; first += block) {
     const int count = std::min(block, solved - first);
     Matrix unit = Matrix::Zero(n - 1, count);
-    for (int k = 0; k < count; ++k) unit(columns[1 + static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] - 1, k) = 1.0;
+    for (int k = 0; k < count; ++k)
+      unit(columns[1 + static_cast<std::size_t>(first) + static_cast<std::size_t>(k)] - 1, k) = 1.0;
     green.G0.block(1, 1 + first, n - 1, count) = cholesky.solve(unit);
     if (progress) progress(static_cast<double>(first + count) / solved);
   }

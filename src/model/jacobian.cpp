@@ -7,10 +7,10 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 
-#include "emit/fem/electrode_dofs.hpp"
-#include "emit/fem/supernodal_cholesky.hpp"
-#include "emit/fem/stiffness.hpp"
 #include "emit/core/large_matrix.hpp"
+#include "emit/fem/electrode_dofs.hpp"
+#include "emit/fem/stiffness.hpp"
+#include "emit/fem/supernodal_cholesky.hpp"
 
 namespace emit {
 
@@ -83,7 +83,7 @@ void jacobian_column(const GroundedGreen& G0, const ElementDofs& element, const 
   for (int i = 0; i < element.size; ++i)
     for (int j = 0; j <= i; ++j) G0_element[i][j] = G0_element[j][i] = G0.between(element.dof[i], element.dof[j]);
   for (int l = 0; l < static_cast<int>(rows.size()); ++l) {
-    if (rows[l].empty()) continue;  // an excluded electrode
+    if (rows[l].empty()) continue;   // an excluded electrode
     std::array<int, 3> S{}, held{};  // held dofs, and their place in `element`
     int size = 0;
     for (int i = 0; i < element.size; ++i)

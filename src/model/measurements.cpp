@@ -23,7 +23,8 @@ MeasurementSet make_measurement_set(int electrode_count, const std::vector<int>&
 Vector frame_difference(const MeasurementSet& set, const Frame& frame, const Frame& reference) {
   Vector dV(set.size());
   for (int i = 0; i < set.size(); ++i)
-    dV[i] = frame.data()[set.frame_index[static_cast<std::size_t>(i)]] - reference.data()[set.frame_index[static_cast<std::size_t>(i)]];
+    dV[i] = frame.data()[set.frame_index[static_cast<std::size_t>(i)]] -
+            reference.data()[set.frame_index[static_cast<std::size_t>(i)]];
   return dV;
 }
 

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/sensor/sensor_json.hpp"
 
 namespace emit {
@@ -76,7 +76,8 @@ void write_value(std::ostream& out, const T& value) {
 }
 
 bool read_floats(std::istream& in, Eigen::MatrixXf& m) {
-  return static_cast<bool>(in.read(reinterpret_cast<char*>(m.data()), static_cast<std::streamsize>(sizeof(float) * m.size())));
+  return static_cast<bool>(
+      in.read(reinterpret_cast<char*>(m.data()), static_cast<std::streamsize>(sizeof(float) * m.size())));
 }
 
 void write_floats(std::ostream& out, const Eigen::MatrixXf& m) {

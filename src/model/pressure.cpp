@@ -29,7 +29,7 @@ double LinearCalibration::pressure_N_per_mm2(double dphi_V) const {
 }
 
 void LinearCalibration::pressure_map(const Vector& dphi_V, double min_dphi_V, Vector& pressure,
-                                       std::vector<std::uint8_t>& selected) const {
+                                     std::vector<std::uint8_t>& selected) const {
   pressure.resize(dphi_V.size());
   selected.resize(static_cast<std::size_t>(dphi_V.size()));
   const auto a1f = static_cast<float>(a1), a2f = static_cast<float>(a2), a3f = static_cast<float>(a3);

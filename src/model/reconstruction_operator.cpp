@@ -9,8 +9,8 @@
 #include <Eigen/Dense>
 
 #include "emit/core/errors.hpp"
-#include "emit/fem/sparse_cholesky.hpp"
 #include "emit/core/large_matrix.hpp"
+#include "emit/fem/sparse_cholesky.hpp"
 #include "emit/model/symmetric_eigen.hpp"
 
 namespace emit {
@@ -38,7 +38,8 @@ SparseMatrix element_laplacian(const Mesh& mesh) {
       entries.emplace_back(it->second, static_cast<int>(t), -1.0);
       degree[t] += 1, degree[it->second] += 1;
     }
-  for (Index t = 0; t < mesh.triangle_count(); ++t) entries.emplace_back(static_cast<int>(t), static_cast<int>(t), degree[t]);
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    entries.emplace_back(static_cast<int>(t), static_cast<int>(t), degree[t]);
   SparseMatrix L(mesh.triangle_count(), mesh.triangle_count());
   L.setFromTriplets(entries.begin(), entries.end());
   return L;
@@ -122,10 +123,8 @@ Eigen::MatrixXf OperatorFamily::prior_inverse_jt_times_in_float(const Matrix& X)
   Matrix block(std::min(block_rows, rows), X.cols());
   for (Index start = 0; start < rows; start += block_rows) {
     const Index n = std::min(block_rows, rows - start);
-    if (prior_ == Prior::identity)
-      block.topRows(n).noalias() = J_.middleCols(start, n).transpose() * X;
-    else
-      block.topRows(n).noalias() = QiJt_.middleRows(start, n) * X;
+    if (prior_ == Prior::identity) block.topRows(n).noalias() = J_.middleCols(start, n).transpose() * X;
+    else block.topRows(n).noalias() = QiJt_.middleRows(start, n) * X;
     result.middleRows(start, n) = block.topRows(n).cast<float>();
   }
   return result;

@@ -21,7 +21,8 @@ std::array<double, SheetCorrection::terms> SheetCorrection::basis(const Vector2&
 double SheetCorrection::factor(const Vector2& point_mm) const {
   const auto b = basis(point_mm);
   double exponent = 0;
-  for (int k = 0; k < terms; ++k) exponent += log_conductance[static_cast<std::size_t>(k)] * b[static_cast<std::size_t>(k)];
+  for (int k = 0; k < terms; ++k)
+    exponent += log_conductance[static_cast<std::size_t>(k)] * b[static_cast<std::size_t>(k)];
   return std::exp(exponent);
 }
 

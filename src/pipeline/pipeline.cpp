@@ -22,8 +22,8 @@ int electrode_count_of(const Sensor& sensor) {
 
 void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source) {
   if (is_linear(method) != std::holds_alternative<LinearCalibration>(calibration))
-    throw InvalidInput(source + ": a calibration for " + calibration_kind(calibration) + "; run 'emit calibrate --method " +
-                       method_name(method) + "'");
+    throw InvalidInput(source + ": a calibration for " + calibration_kind(calibration) +
+                       "; run 'emit calibrate --method " + method_name(method) + "'");
 }
 
 Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration,
@@ -38,8 +38,9 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
   }
   fit_calibration_ = calibration ? std::get<FitCalibration>(*calibration) : FitCalibration::uncalibrated(sensor);
   fit_sensor_.contact = fit_calibration_.contact_law;
-  fit_model_ = std::make_unique<FitModel>(build_fit_model(
-      sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr, progress));
+  fit_model_ = std::make_unique<FitModel>(
+      build_fit_model(sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr,
+                      progress));
   fitter_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
 }
 

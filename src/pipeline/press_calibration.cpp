@@ -38,8 +38,8 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
     std::tie(result.sheet_factor_low, result.sheet_factor_high) = result.sheet->correction.factor_range(fit_model.mesh);
   }
   if (say) say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");
-  fit_model.green =
-      fit_green_function(fit_model.mesh, sensor, calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
+  fit_model.green = fit_green_function(fit_model.mesh, sensor,
+                                       calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
   ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
   FrameOptions frame_options;
   frame_options.threshold_fraction = options.threshold_fraction;
@@ -64,9 +64,11 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
                        std::to_string(frames.size()) + " frames");
   OperatorOptions operator_options_ = operator_options(options.method);  // fit: the paper's, its seeds
   if (options.lambda2 > 0) operator_options_.lambda2 = options.lambda2;
-  const ReconstructionModel model = build_reconstruction_model(sensor, operator_options_, options.cache_dir, {}, progress);
+  const ReconstructionModel model =
+      build_reconstruction_model(sensor, operator_options_, options.cache_dir, {}, progress);
   PressCalibrationResult result;
-  if (!is_linear(options.method)) result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
+  if (!is_linear(options.method))
+    result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
   result.lambda2 = operator_options_.lambda2;
   if (!is_linear(options.method)) return result;
 

@@ -142,8 +142,7 @@ std::vector<std::string> wrap_text(const std::string& text, int max_width_px) {
   while (words >> word) {
     if (!lines.empty() && detail::text_width_px(lines.back() + " " + word, font_scale) <= max_width_px)
       lines.back() += " " + word;
-    else
-      lines.push_back(word);
+    else lines.push_back(word);
   }
   return lines;
 }
@@ -249,8 +248,8 @@ void draw_ring(Image& image, const Vector2& centre, double radius, double half_w
       if (std::abs((Vector2(x + 0.5, y + 0.5) - centre).norm() - radius) <= half_width) image.set(x, y, colour);
 }
 
-void draw_edges(Image& image, const FieldLayout& layout, const Mesh& mesh,
-                const std::vector<std::array<int, 2>>& edges, double half_width, Rgb colour) {
+void draw_edges(Image& image, const FieldLayout& layout, const Mesh& mesh, const std::vector<std::array<int, 2>>& edges,
+                double half_width, Rgb colour) {
   for (const auto& [a, b] : edges)
     draw_segment(image, node_px(layout, mesh, a), node_px(layout, mesh, b), half_width, colour);
 }

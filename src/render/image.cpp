@@ -8,8 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace {

@@ -291,8 +291,7 @@ Canvas plan_canvas(const AxisRange& x, const AxisRange& y, const PlotOptions& op
   c.title_y = padding_px;
   c.y_label_y = c.title_y + (options.title.empty() ? 0 : line + padding_px);
   l.top_px = c.y_label_y + (options.y_label.empty() ? 0 : line + 6) + line / 2;  // half a line: top tick label
-  const int bottom_margin =
-      tick_length_px + tick_gap_px + line + (options.x_label.empty() ? 0 : 6 + line) + padding_px;
+  const int bottom_margin = tick_length_px + tick_gap_px + line + (options.x_label.empty() ? 0 : 6 + line) + padding_px;
   l.height_px = options.height_px - l.top_px - bottom_margin;
   c.x_label_y = l.top_px + l.height_px + tick_length_px + tick_gap_px + line + 6;
   check_room(l.height_px, options);
@@ -308,8 +307,10 @@ Canvas plan_canvas(const AxisRange& x, const AxisRange& y, const PlotOptions& op
 
   c.x_ticks = fitting_ticks(x, [&](const std::vector<Tick>& ticks) {
     for (std::size_t i = 1; i < ticks.size(); ++i) {
-      const int needed = (detail::text_width_px(ticks[i].label, font_scale) +
-                          detail::text_width_px(ticks[i - 1].label, font_scale)) / 2 + 12;
+      const int needed =
+          (detail::text_width_px(ticks[i].label, font_scale) + detail::text_width_px(ticks[i - 1].label, font_scale)) /
+              2 +
+          12;
       if (std::abs(l.pixel_x(ticks[i].value) - l.pixel_x(ticks[i - 1].value)) < needed) return false;
     }
     return true;
@@ -482,9 +483,10 @@ int ink_in(const Image& image, const Box& box) {
 Box place_legend(const Image& image, const PlotLayout& l, int width, int height) {
   const int left = l.left_px + legend_inset_px, right = l.left_px + l.width_px - legend_inset_px - width;
   const int top = l.top_px + legend_inset_px, bottom = l.top_px + l.height_px - legend_inset_px - height;
-  const std::array<Box, 4> corners = {
-      {{right, top, width, height}, {left, top, width, height}, {right, bottom, width, height},
-       {left, bottom, width, height}}};
+  const std::array<Box, 4> corners = {{{right, top, width, height},
+                                       {left, top, width, height},
+                                       {right, bottom, width, height},
+                                       {left, bottom, width, height}}};
   Box best = corners[0];
   int least = ink_in(image, best);
   for (std::size_t i = 1; i < corners.size(); ++i)

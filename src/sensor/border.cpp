@@ -79,8 +79,7 @@ Border Border::circle(const Vector2& center_mm, double radius_mm) {
   Border border;
   // Four quarter arcs: every piece spans less than π, as Gmsh's circle arcs require.
   for (int quarter = 0; quarter < 4; ++quarter)
-    border.pieces_.push_back(
-        arc_piece(center_mm, radius_mm, quarter * std::numbers::pi / 2, std::numbers::pi / 2));
+    border.pieces_.push_back(arc_piece(center_mm, radius_mm, quarter * std::numbers::pi / 2, std::numbers::pi / 2));
   border.finish();
   return border;
 }
@@ -93,8 +92,7 @@ Border Border::polygon(const std::vector<Vector2>& points_mm) {
     const Vector2& p = points_mm[i];
     const Vector2& q = points_mm[(i + 1) % n];
     if ((q - p).norm() == 0)
-      throw InvalidInput("polygon points " + std::to_string(i) + " and " +
-                         std::to_string((i + 1) % n) + " coincide");
+      throw InvalidInput("polygon points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " coincide");
     twice_area += p.x() * q.y() - q.x() * p.y();
   }
   if (std::abs(twice_area) < 1e-12) throw InvalidInput("the polygon has zero area");

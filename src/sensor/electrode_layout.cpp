@@ -27,24 +27,23 @@ Electrode electrode_at(const Border& border, double s_mm, double width_mm) {
 
 }  // namespace
 
-std::vector<Electrode> default_electrode_layout(const Shape& shape, const Border& border, int count,
-                                                double width_mm) {
-  if (count < 3)
-    throw InvalidInput("electrodes.count: at least 3 electrodes are needed, got " + std::to_string(count));
+std::vector<Electrode> default_electrode_layout(const Shape& shape, const Border& border, int count, double width_mm) {
+  if (count < 3) throw InvalidInput("electrodes.count: at least 3 electrodes are needed, got " + std::to_string(count));
   std::vector<Electrode> electrodes;
   if (shape.kind == ShapeKind::rectangle) {
     if (count % 4 != 0)
-      throw InvalidInput("electrodes.count: the default layout puts count/4 electrodes on each side of a "
-                         "rectangle, so count must be a multiple of 4 (got " +
-                         std::to_string(count) + "); give an explicit list for other layouts");
+      throw InvalidInput(
+          "electrodes.count: the default layout puts count/4 electrodes on each side of a "
+          "rectangle, so count must be a multiple of 4 (got " +
+          std::to_string(count) + "); give an explicit list for other layouts");
     const int per_side = count / 4;
     const double w = shape.width_mm, h = shape.height_mm;
     const double side_start[4] = {0, w, w + h, 2 * w + h};
     const double side_length[4] = {w, h, w, h};
     for (int side = 0; side < 4; ++side)
       for (int i = 0; i < per_side; ++i)
-        electrodes.push_back(electrode_at(border, side_start[side] + (i + 0.5) * side_length[side] / per_side,
-                                          width_mm));
+        electrodes.push_back(
+            electrode_at(border, side_start[side] + (i + 0.5) * side_length[side] / per_side, width_mm));
     return electrodes;
   }
   const double spacing = border.length_mm() / count;
@@ -61,8 +60,8 @@ std::vector<Electrode> place_electrodes(const Border& border, const std::vector<
     const auto projection = border.project(centers_mm[i]);
     if (projection.distance_mm > tolerance_mm)
       throw InvalidInput("electrodes[" + std::to_string(i) + "]: centre (" + mm(centers_mm[i].x()) + ", " +
-                         mm(centers_mm[i].y()) + ") is " + mm(projection.distance_mm) +
-                         " off the border (tolerance " + mm(tolerance_mm) + ")");
+                         mm(centers_mm[i].y()) + ") is " + mm(projection.distance_mm) + " off the border (tolerance " +
+                         mm(tolerance_mm) + ")");
     electrodes.push_back(electrode_at(border, projection.s_mm, widths_mm[i]));
   }
   return electrodes;

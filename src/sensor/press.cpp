@@ -24,7 +24,8 @@ Press parse_press(const std::string& text) {
       used = 0;
     }
     if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
-      throw InvalidInput("press \"" + text + "\": \"" + item + "\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+      throw InvalidInput("press \"" + text + "\": \"" + item +
+                         "\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
     values.push_back(value);
   }
   if (values.size() != 4)

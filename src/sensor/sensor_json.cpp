@@ -123,9 +123,7 @@ Border border_of(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::rectangle: return Border::rectangle(shape.width_mm, shape.height_mm);
     case ShapeKind::circle: return Border::circle(shape.center_mm, shape.radius_mm);
-    case ShapeKind::polygon:
-      try {
-        return Border::polygon(shape.points_mm);
+    case ShapeKind::polygon: try { return Border::polygon(shape.points_mm);
       } catch (const InvalidInput& e) {
         ObjectReader::fail("shape.points_mm", e.what());
       }
@@ -168,8 +166,9 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
     sensor.border = border_of(sensor.shape);
     sensor.electrodes = parse_electrodes(r.value("electrodes"), sensor.shape, *sensor.border);
   } else if (r.has("electrodes")) {
-    ObjectReader::fail("electrodes", "a mesh-file sensor takes its electrodes from the file's "
-                                     "\"electrode <i>\" curves; remove this key");
+    ObjectReader::fail("electrodes",
+                       "a mesh-file sensor takes its electrodes from the file's "
+                       "\"electrode <i>\" curves; remove this key");
   }
   sensor.drive_voltage_V = r.number_or("drive_voltage_V", sensor.drive_voltage_V, Sign::positive);
   sensor.sheet_resistance_ohm_per_sq =
@@ -254,7 +253,9 @@ json sensor_to_json(const Sensor& sensor) {
   if (!sensor.name.empty()) j["name"] = sensor.name;
   const Shape& s = sensor.shape;
   switch (s.kind) {
-    case ShapeKind::rectangle: j["shape"] = {{"type", "rectangle"}, {"width_mm", s.width_mm}, {"height_mm", s.height_mm}}; break;
+    case ShapeKind::rectangle:
+      j["shape"] = {{"type", "rectangle"}, {"width_mm", s.width_mm}, {"height_mm", s.height_mm}};
+      break;
     case ShapeKind::circle:
       j["shape"] = {{"type", "circle"}, {"radius_mm", s.radius_mm}, {"center_mm", {s.center_mm.x(), s.center_mm.y()}}};
       break;

@@ -85,15 +85,15 @@ class Integrator {
 
   static std::array<Piece, 4> subdivide(const Piece& p) {
     auto mid = [&](int a, int b) {
-      return std::pair<Vector2, Vector3>{0.5 * (p.corner[a] + p.corner[b]), 0.5 * (p.barycentric[a] + p.barycentric[b])};
+      return std::pair<Vector2, Vector3>{0.5 * (p.corner[a] + p.corner[b]),
+                                         0.5 * (p.barycentric[a] + p.barycentric[b])};
     };
     const auto [m01, b01] = mid(0, 1);
     const auto [m12, b12] = mid(1, 2);
     const auto [m20, b20] = mid(2, 0);
     return {Piece{{p.corner[0], m01, m20}, {p.barycentric[0], b01, b20}},
             Piece{{m01, p.corner[1], m12}, {b01, p.barycentric[1], b12}},
-            Piece{{m20, m12, p.corner[2]}, {b20, b12, p.barycentric[2]}},
-            Piece{{m01, m12, m20}, {b01, b12, b20}}};
+            Piece{{m20, m12, p.corner[2]}, {b20, b12, p.barycentric[2]}}, Piece{{m01, m12, m20}, {b01, b12, b20}}};
   }
 
   const std::vector<Disc>& discs_;

@@ -34,7 +34,10 @@ class Sampler {
       throw InvalidInput("press forces must satisfy 0 <= min <= max");
   }
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
-  double force() { return style_.min_force_N == style_.max_force_N ? style_.min_force_N : uniform(style_.min_force_N, style_.max_force_N); }
+  double force() {
+    return style_.min_force_N == style_.max_force_N ? style_.min_force_N
+                                                    : uniform(style_.min_force_N, style_.max_force_N);
+  }
   Press press_at(const Vector2& p) { return Press{p.x(), p.y(), style_.radius_mm, force()}; }
   bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
   Vector2 random_point() {
@@ -87,8 +90,8 @@ PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& 
   return sequence;
 }
 
-PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm,
-                                double max_separation_mm, const PressStyle& style) {
+PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm, double max_separation_mm,
+                                const PressStyle& style) {
   if (frames < 1) throw InvalidInput("frames must be at least 1");
   if (!(min_separation_mm > 0) || max_separation_mm < min_separation_mm)
     throw InvalidInput("separations must satisfy 0 < min <= max");
@@ -139,7 +142,8 @@ PressSequence run_script(const Sensor& sensor, const PressScript& script) {
     case PressScript::Kind::random: return random_script(sensor, script.frames, script.style);
     case PressScript::Kind::two_finger:
       return two_finger_script(sensor, script.frames, script.min_separation_mm, script.max_separation_mm, script.style);
-    case PressScript::Kind::moving: return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
+    case PressScript::Kind::moving:
+      return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
   }
   return {};
 }

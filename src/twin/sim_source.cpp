@@ -11,7 +11,7 @@ namespace emit {
 
 namespace {
 
-constexpr double loop_pressed_s = 6, loop_lifted_s = 1;      // the figure-eight, then a lift-off
+constexpr double loop_pressed_s = 6, loop_lifted_s = 1;  // the figure-eight, then a lift-off
 constexpr double random_pressed_s = 0.6, random_lifted_s = 0.2;
 constexpr double force_swing_period_s = 3;
 constexpr double script_clock_frames_per_s = 50;  // the scripts' clock when frames come unpaced
@@ -92,15 +92,16 @@ std::vector<Press> SimSource::presses_of(std::uint64_t sequence) const {
   const double t = script_time_s(sequence);
   if (t < 0) return {};
   switch (script_.kind) {
-    case SimScript::Kind::fixed:
-      return {script_.fixed};
+    case SimScript::Kind::fixed: return {script_.fixed};
     case SimScript::Kind::loop: {
       const double phase = std::fmod(t, loop_pressed_s + loop_lifted_s);
       if (phase >= loop_pressed_s) return {};
       const double w = 2 * std::numbers::pi * phase / loop_pressed_s;  // one figure-eight per press
       const double swing = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * t / force_swing_period_s);
-      const Vector2 p = center_mm_ + Vector2(0.55 * half_extent_mm_.x() * std::sin(w), 0.4 * half_extent_mm_.y() * std::sin(2 * w));
-      return {Press{p.x(), p.y(), script_.radius_mm, script_.min_force_N + swing * (script_.max_force_N - script_.min_force_N)}};
+      const Vector2 p =
+          center_mm_ + Vector2(0.55 * half_extent_mm_.x() * std::sin(w), 0.4 * half_extent_mm_.y() * std::sin(2 * w));
+      return {Press{p.x(), p.y(), script_.radius_mm,
+                    script_.min_force_N + swing * (script_.max_force_N - script_.min_force_N)}};
     }
     case SimScript::Kind::random: {
       const double period = random_pressed_s + random_lifted_s;
@@ -110,9 +111,11 @@ std::vector<Press> SimSource::presses_of(std::uint64_t sequence) const {
       std::uniform_real_distribution<double> u(0, 1);
       const double margin_mm = script_.radius_mm + 3;
       for (int attempt = 0; attempt < 1000; ++attempt) {
-        const Vector2 p = center_mm_ + Vector2((2 * u(rng) - 1) * half_extent_mm_.x(), (2 * u(rng) - 1) * half_extent_mm_.y());
+        const Vector2 p =
+            center_mm_ + Vector2((2 * u(rng) - 1) * half_extent_mm_.x(), (2 * u(rng) - 1) * half_extent_mm_.y());
         if (admissible(sensor_, twin_.mesh(), p, margin_mm))
-          return {Press{p.x(), p.y(), script_.radius_mm, script_.min_force_N + u(rng) * (script_.max_force_N - script_.min_force_N)}};
+          return {Press{p.x(), p.y(), script_.radius_mm,
+                        script_.min_force_N + u(rng) * (script_.max_force_N - script_.min_force_N)}};
       }
       return {};
     }
@@ -128,13 +131,16 @@ void SimSource::produce() {
       frame.volts = twin_.frame(presses_of(sequence), &frame.raw.counts);
       frame.sequence = sequence;
       const double due_s = options_.frames_per_s > 0 ? static_cast<double>(sequence) / options_.frames_per_s : 0;
-      const auto due = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s));
+      const auto due =
+          start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s));
       std::unique_lock lock(mutex_);
       if (ready_.wait_until(lock, due, [this] { return stop_; })) return;
       frame.received = std::chrono::steady_clock::now();
-      frame.board_time_s = options_.frames_per_s > 0 ? due_s : std::chrono::duration<double>(frame.received - start).count();
+      frame.board_time_s =
+          options_.frames_per_s > 0 ? due_s : std::chrono::duration<double>(frame.received - start).count();
       frame.raw.sequence = static_cast<std::uint32_t>(sequence);  // the packet's fields wrap, as the board's do
-      frame.raw.timestamp_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));
+      frame.raw.timestamp_us =
+          static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));
       frame.raw.electrode_count = static_cast<int>(frame.volts.rows());
       frame.raw.adc_bits = sensor_.adc.bits;
       frame.raw.oversampling = 1;
@@ -185,10 +191,8 @@ std::uint64_t SimSource::dropped() const {
 
 std::string SimSource::description() const {
   char rate[64];
-  if (options_.frames_per_s > 0)
-    std::snprintf(rate, sizeof rate, "%g frames/s", options_.frames_per_s);
-  else
-    std::snprintf(rate, sizeof rate, "as fast as the twin goes");
+  if (options_.frames_per_s > 0) std::snprintf(rate, sizeof rate, "%g frames/s", options_.frames_per_s);
+  else std::snprintf(rate, sizeof rate, "as fast as the twin goes");
   std::string what;
   switch (script_.kind) {
     case SimScript::Kind::loop: what = "a finger moving in a figure-eight"; break;

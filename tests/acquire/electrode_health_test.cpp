@@ -1,6 +1,6 @@
 // Dead electrodes: found from the frames, left out, and the reconstruction still works.
-#include "emit/model/method.hpp"
 #include "emit/acquire/electrode_health.hpp"
+#include "emit/model/method.hpp"
 
 #include <gtest/gtest.h>
 

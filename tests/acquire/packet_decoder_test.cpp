@@ -78,8 +78,7 @@ Decoded decode(const Bytes& stream, std::size_t max_piece = 1200, unsigned seed 
   std::size_t at = 0;
   while (at < stream.size()) {
     const std::size_t piece = std::min<std::size_t>(1 + rng() % max_piece, stream.size() - at);
-    decoder.feed(std::span(stream.data() + at, piece),
-                 [&](const RawFrame& frame) { out.frames.push_back(frame); });
+    decoder.feed(std::span(stream.data() + at, piece), [&](const RawFrame& frame) { out.frames.push_back(frame); });
     at += piece;
   }
   out.stats = decoder.stats();
@@ -218,8 +217,8 @@ TEST(PacketDecoder, TruncatedPacketLosesOnlyItself) {
 
 TEST(PacketDecoder, FlippedBitIsRejectedByTheCrc) {
   // One bit flipped in packet 4 of 10, in the sequence number, the payload or the CRC itself.
-  for (const auto& [byte, bit] : std::vector<std::pair<std::size_t, int>>{
-           {8, 0}, {12, 7}, {16, 0}, {100, 3}, {527, 1}, {528, 0}, {531, 7}}) {
+  for (const auto& [byte, bit] :
+       std::vector<std::pair<std::size_t, int>>{{8, 0}, {12, 7}, {16, 0}, {100, 3}, {527, 1}, {528, 0}, {531, 7}}) {
     Bytes stream;
     for (std::uint32_t s = 0; s < 10; ++s) {
       Bytes p = packet(s);
@@ -318,8 +317,7 @@ TEST(PacketDecoder, RandomBytesNeverDecodeAndNeverCrash) {
   const Decoded decoded = decode(noise, 5000);
   EXPECT_EQ(decoded.stats.frames, 0u);
   // Every byte is garbage, a rejected sync (2 bytes) or still buffered (less than one packet).
-  EXPECT_GE(decoded.stats.garbage_bytes + 2 * decoded.stats.corrupt + fw::packet_max_size,
-            noise.size());
+  EXPECT_GE(decoded.stats.garbage_bytes + 2 * decoded.stats.corrupt + fw::packet_max_size, noise.size());
   EXPECT_LE(decoded.stats.garbage_bytes + 2 * decoded.stats.corrupt, noise.size());
 }
 
@@ -375,7 +373,7 @@ TEST(PacketDecoder, ToVoltsScalesCountsToTheReference) {
   ASSERT_EQ(volts.rows(), 2);
   ASSERT_EQ(volts.cols(), 2);
   EXPECT_EQ(volts(0, 0), 0.0);
-  EXPECT_DOUBLE_EQ(volts(0, 1), 3.3);               // full scale = vref
+  EXPECT_DOUBLE_EQ(volts(0, 1), 3.3);                // full scale = vref
   EXPECT_DOUBLE_EQ(volts(1, 0), 2048 * 3.3 / 4095);  // row g = 1 grounded, column s = 0 sensed
   EXPECT_DOUBLE_EQ(volts(1, 1), 3.3 / 4095);
   EXPECT_THROW(to_volts(raw, 0.0), InvalidInput);

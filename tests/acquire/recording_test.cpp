@@ -7,15 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "allocation_counter.hpp"
 #include "core/scan.hpp"
 #include "emit/acquire/device_source.hpp"
 #include "emit/acquire/file_source.hpp"
 #include "emit/acquire/recorder.hpp"
 #include "emit/acquire/recording.hpp"
 #include "emit/core/errors.hpp"
-#include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/adc.hpp"
-#include "allocation_counter.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "fake_board.hpp"
 #include "test_support.hpp"
 
@@ -113,7 +113,8 @@ TEST(Recording, ReplaysAtTheRecordedPace) {
   SourceFrame frame;
   std::vector<Clock::time_point> handed_out;
   while (handed_out.size() < frames.size())
-    if (source.next(frame, milliseconds(5))) handed_out.push_back(frame.received);  // 5 ms < the 20 ms gaps: false in between
+    if (source.next(frame, milliseconds(5)))
+      handed_out.push_back(frame.received);  // 5 ms < the 20 ms gaps: false in between
   const double span_s = 1e-6 * (frames.back().timestamp_us - frames.front().timestamp_us);  // 0.38 s
   const double elapsed_s = std::chrono::duration<double>(handed_out.back() - handed_out.front()).count();
   std::printf("recorded span %.3f s, replayed in %.3f s\n", span_s, elapsed_s);
@@ -122,7 +123,8 @@ TEST(Recording, ReplaysAtTheRecordedPace) {
   EXPECT_GE(elapsed_s, span_s - 1e-5);
   EXPECT_LT(elapsed_s, span_s + 0.25);
   for (std::size_t k = 1; k < handed_out.size(); ++k)
-    EXPECT_GE(std::chrono::duration<double>(handed_out[k] - handed_out[0]).count(), 0.02 * static_cast<double>(k) - 1e-5);
+    EXPECT_GE(std::chrono::duration<double>(handed_out[k] - handed_out[0]).count(),
+              0.02 * static_cast<double>(k) - 1e-5);
 }
 
 // Recording and replaying frames allocate nothing per frame (after the first replayed frame sized
@@ -160,7 +162,8 @@ TEST(Recording, RecordsADecodedPacketByteForByte) {
   }  // the destructor closes and renames
   const std::vector<char> bytes = read_bytes(path);
   ASSERT_EQ(bytes.size(), 32 + board.written.size());
-  EXPECT_TRUE(std::equal(board.written.begin(), board.written.end(), reinterpret_cast<const std::uint8_t*>(bytes.data()) + 32));
+  EXPECT_TRUE(
+      std::equal(board.written.begin(), board.written.end(), reinterpret_cast<const std::uint8_t*>(bytes.data()) + 32));
 }
 
 TEST(Recording, MalformedFilesAreOneLineErrorsNamingTheFile) {
@@ -189,7 +192,8 @@ TEST(Recording, MalformedFilesAreOneLineErrorsNamingTheFile) {
   FileSource source(corrupt, sensor, true);
   SourceFrame frame;
   for (int k = 0; k < 5; ++k) EXPECT_TRUE(source.next(frame, milliseconds(0)));  // the frames before are fine
-  EXPECT_EQ(replay_error(corrupt, sensor), corrupt + ": frame 5 (byte 2692) is not a valid packet (sync, header or CRC)");
+  EXPECT_EQ(replay_error(corrupt, sensor),
+            corrupt + ": frame 5 (byte 2692) is not a valid packet (sync, header or CRC)");
 
   Sensor eight = sensor;
   eight.electrodes.resize(8);
@@ -223,7 +227,8 @@ TEST(Recording, HeaderRoundTripsAndImpossibleFieldsAreNamed) {
   EXPECT_EQ(error_of(header, 1, 40), "r.emitrec: recording header size 40 bytes; version 1 has 32");
   EXPECT_EQ(error_of({65, 10, 3.3, 0}, 1, 32), "r.emitrec: recording header: electrode count 65 is outside 2..64");
   EXPECT_EQ(error_of({16, 17, 3.3, 0}, 1, 32), "r.emitrec: recording header: ADC bits 17 outside 1..16");
-  EXPECT_EQ(error_of({16, 12, -3.3, 0}, 1, 32), "r.emitrec: recording header: the ADC reference voltage is not a positive number");
+  EXPECT_EQ(error_of({16, 12, -3.3, 0}, 1, 32),
+            "r.emitrec: recording header: the ADC reference voltage is not a positive number");
 }
 
 }  // namespace

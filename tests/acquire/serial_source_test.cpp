@@ -13,18 +13,18 @@
 
 #include <gtest/gtest.h>
 
+#include "allocation_counter.hpp"
 #include "core/scan.hpp"
-#include "emit/model/method.hpp"
 #include "emit/acquire/device_source.hpp"
 #include "emit/acquire/serial_port.hpp"
 #include "emit/acquire/serial_source.hpp"
-#include "emit/twin/twin_board.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/frame/contact_fitter.hpp"
-#include "emit/model/fit_model.hpp"
 #include "emit/frame/reconstructor.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/model/method.hpp"
 #include "emit/sensor/sensor_json.hpp"
-#include "allocation_counter.hpp"
+#include "emit/twin/twin_board.hpp"
 #include "fake_board.hpp"
 #include "pseudo_terminal.hpp"
 #include "test_support.hpp"
@@ -82,8 +82,7 @@ std::vector<std::uint8_t> garbage(std::mt19937& rng, int count) {
 // each press where the twin had it.
 TEST(SerialEndToEnd, TwinFramesCrossAPtyAndReconstructToThePresses) {
   const Sensor sensor = default_sensor();
-  const std::vector<std::vector<Press>> presses = {
-      {}, {}, {{20, 20, 5, 10}}, {{40, 35, 5, 10}}, {{30, 45, 5, 10}}, {}};
+  const std::vector<std::vector<Press>> presses = {{}, {}, {{20, 20, 5, 10}}, {{40, 35, 5, 10}}, {{30, 45, 5, 10}}, {}};
   TwinOptions twin_options;
   twin_options.mesh_seed = 5;  // another mesh than the reconstruction's (no inverse crime)
   Twin twin(sensor, twin_options);
@@ -134,9 +133,9 @@ TEST(SerialEndToEnd, TwinFramesCrossAPtyAndReconstructToThePresses) {
       continue;
     }
     ASSERT_FALSE(contacts.empty()) << "frame " << k;
-    const Contact& strongest = *std::max_element(contacts.begin(), contacts.end(), [](const Contact& a, const Contact& b) {
-      return a.force_N < b.force_N;
-    });
+    const Contact& strongest =
+        *std::max_element(contacts.begin(), contacts.end(),
+                          [](const Contact& a, const Contact& b) { return a.force_N < b.force_N; });
     const Press& press = presses[k][0];
     const double error_mm = std::hypot(strongest.x_mm - press.x_mm, strongest.y_mm - press.y_mm);
     std::printf("frame %zu: press %.0f, %.0f -> %.3f mm off\n", k, press.x_mm, press.y_mm, error_mm);
@@ -156,13 +155,15 @@ TEST(SerialEndToEnd, GarbageMidStreamLosesOnlyTheFramesItTouches) {
   std::mt19937 rng(7);
   const std::vector<std::uint8_t> between = garbage(rng, 37), inside = garbage(rng, 13);
   std::vector<std::uint8_t> stream;
-  const auto append = [&](const std::vector<std::uint8_t>& bytes) { stream.insert(stream.end(), bytes.begin(), bytes.end()); };
+  const auto append = [&](const std::vector<std::uint8_t>& bytes) {
+    stream.insert(stream.end(), bytes.begin(), bytes.end());
+  };
   for (int k = 0; k < 10; ++k) {
     std::vector<std::uint8_t> packet = packets[static_cast<std::size_t>(k)];
-    if (k == 1) append(between);                                                     // 37 random bytes
+    if (k == 1) append(between);                                                          // 37 random bytes
     if (k == 3) append(std::vector<std::uint8_t>(packet.begin(), packet.begin() + 100));  // a cut packet
-    if (k == 5) packet.insert(packet.begin() + 200, inside.begin(), inside.end());  // bytes inside a payload
-    if (k == 7) packet[300] ^= 0x01;                                                  // one bit flipped
+    if (k == 5) packet.insert(packet.begin() + 200, inside.begin(), inside.end());        // bytes inside a payload
+    if (k == 7) packet[300] ^= 0x01;                                                      // one bit flipped
     append(packet);
   }
   // The accounting below assumes the only syncs are the packets' own (and the cut packet's).
@@ -208,7 +209,7 @@ TEST(SerialPort, ReadsTimesOutAndReportsADisconnect) {
   SerialRead read = port.read_some(buffer, milliseconds(100));
   EXPECT_EQ(read.bytes, 0u);
   EXPECT_FALSE(read.disconnected);
-  EXPECT_GE(Clock::now() - start, milliseconds(100));  // poll(2) waits at least its timeout
+  EXPECT_GE(Clock::now() - start, milliseconds(100));                 // poll(2) waits at least its timeout
   const std::uint8_t hello[] = {0x00, 0x0A, 0x0D, 0x11, 0x13, 0xFF};  // NUL, LF, CR, XON, XOFF: raw
   fd_sink(pty.master())(hello, sizeof hello);
   read = port.read_some(buffer, milliseconds(1000));
@@ -242,7 +243,8 @@ TEST(SerialEndToEnd, ReconnectsWhenTheDeviceComesBack) {
   SourceFrame frame;
   EXPECT_FALSE(source->next(frame, milliseconds(200)));
   EXPECT_FALSE(as_serial(*source).connected());
-  EXPECT_EQ(as_serial(*source).status().rfind("disconnected, retrying every 0.5 s", 0), 0u) << as_serial(*source).status();
+  EXPECT_EQ(as_serial(*source).status().rfind("disconnected, retrying every 0.5 s", 0), 0u)
+      << as_serial(*source).status();
 
   test::PseudoTerminal second;  // plugged back: a new device node, the link re-pointed
   std::filesystem::create_symlink(second.slave_path(), link + ".new");
@@ -315,7 +317,8 @@ TEST(SerialEndToEnd, RejectsABoardWithAnotherElectrodeCount) {
     for (int k = 0; k < 50; ++k) source->next(frame, milliseconds(100));
     FAIL() << "no error";
   } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("frames of 8 electrodes but the sensor has 16"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("frames of 8 electrodes but the sensor has 16"), std::string::npos)
+        << e.what();
   }
   EXPECT_TRUE(source->finished());
 }

@@ -71,7 +71,8 @@ std::vector<Violation> check_includes(const fs::path& root, const std::map<std::
     if (fs::is_directory(root / top))
       for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
         const std::string extension = entry.path().extension().string();
-        if (entry.is_regular_file() && (extension == ".hpp" || extension == ".cpp" || extension == ".h" || extension == ".ino"))
+        if (entry.is_regular_file() &&
+            (extension == ".hpp" || extension == ".cpp" || extension == ".h" || extension == ".ino"))
           files.push_back(entry.path());
       }
   std::sort(files.begin(), files.end());
@@ -143,8 +144,10 @@ TEST(IncludeDirection, NamesTheFileAndLineOfAnIncludeThatPointsUp) {
   fs::create_directories(root / "src/high");
   fs::create_directories(root / "src/side");
   std::ofstream(root / "floors.txt") << "# test\nlow\nhigh side\n";
-  std::ofstream(root / "src/high/fine.cpp") << "#include \"emit/low/a.hpp\"\n#include \"private.hpp\"\n#include <vector>\n";
-  std::ofstream(root / "src/low/bad.cpp") << "// comment\n#include \"emit/low/b.hpp\"\n  #include \"emit/high/c.hpp\"\n";
+  std::ofstream(root / "src/high/fine.cpp")
+      << "#include \"emit/low/a.hpp\"\n#include \"private.hpp\"\n#include <vector>\n";
+  std::ofstream(root / "src/low/bad.cpp")
+      << "// comment\n#include \"emit/low/b.hpp\"\n  #include \"emit/high/c.hpp\"\n";
   std::ofstream(root / "src/side/bad.cpp") << "#include \"emit/high/d.hpp\"\n";
   const auto floor_of = read_floors(root / "floors.txt");
   EXPECT_EQ(floor_of.at("low"), 0);

@@ -9,10 +9,10 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/eval/evaluation.hpp"
-#include "emit/model/fit_model.hpp"
 #include "emit/io/calibration_json.hpp"
-#include "emit/sensor/sensor_json.hpp"
+#include "emit/model/fit_model.hpp"
 #include "emit/sensor/adc.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/press_scripts.hpp"
 #include "emit/twin/twin.hpp"
 #include "test_support.hpp"

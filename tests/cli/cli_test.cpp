@@ -1,7 +1,7 @@
 // End to end: the emit CLI run as a user runs it, on good and on bad input.
-#include <filesystem>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -48,8 +48,9 @@ TEST(Cli, SimulatesOnePress) {
 
 TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
   const std::string dir = test::temp_folder("cli_grid");
-  const auto r = run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
-                          " --script grid --spacing-mm 10 --radius-mm 3 --out " + dir + "/g.csv --truth " + dir + "/t.csv");
+  const auto r =
+      run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
+               " --script grid --spacing-mm 10 --radius-mm 3 --out " + dir + "/g.csv --truth " + dir + "/t.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto frames = read_frames_csv(dir + "/g.csv", 16);
   const auto truth = read_presses_csv(dir + "/t.csv");
@@ -59,7 +60,8 @@ TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
 
 TEST(Cli, TwoFingerAndMovingScripts) {
   const std::string dir = test::temp_folder("cli_scripts");
-  auto r = run_emit("simulate --script two-finger --frames 3 --separation-mm 12,40 --force-N 5,20 --out " + dir + "/two.csv");
+  auto r = run_emit("simulate --script two-finger --frames 3 --separation-mm 12,40 --force-N 5,20 --out " + dir +
+                    "/two.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto two = read_presses_csv(dir + "/two_presses.csv");
   ASSERT_EQ(two.size(), 3u);
@@ -69,7 +71,8 @@ TEST(Cli, TwoFingerAndMovingScripts) {
     EXPECT_GE(separation, 12.0 - 1e-3);
     EXPECT_LE(separation, 40.0 + 1e-3);
   }
-  r = run_emit("simulate --script moving --from 10,10 --to 50,50 --frames 5 --out " + dir + "/move.csv --images " + dir + "/img");
+  r = run_emit("simulate --script moving --from 10,10 --to 50,50 --frames 5 --out " + dir + "/move.csv --images " +
+               dir + "/img");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_frames_csv(dir + "/move.csv", 16).size(), 5u);
   EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
@@ -80,9 +83,11 @@ TEST(Cli, CalibrateThenReconstruct) {
   const std::string d = test::temp_folder("cli_reconstruct");
   const std::string cache = " --cache " + d + "/cache";
   ASSERT_EQ(run_emit("simulate --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
-  ASSERT_EQ(run_emit("simulate --script random --frames 12 --force-N 2,30 --seed 3 --out " + d + "/cal.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --script random --frames 12 --force-N 2,30 --seed 3 --out " + d + "/cal.csv").exit_code,
+            0);
   ASSERT_EQ(run_emit("simulate --press 21,37,5,12 --out " + d + "/one.csv").exit_code, 0);
-  const std::string calibrate = "calibrate --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d + "/cal_presses.csv";
+  const std::string calibrate =
+      "calibrate --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d + "/cal_presses.csv";
   auto r = run_emit(calibrate + " --out " + d + "/calib.json" + cache);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("alpha ="), std::string::npos) << "the default method, fit, calibrates the contact law";
@@ -110,7 +115,8 @@ TEST(Cli, CalibrateThenReconstruct) {
   EXPECT_LT(std::stod(line.substr(misfit_at + 17)), 3.0) << line;
   EXPECT_GT(read_png(d + "/img/frame_0.png").width(), 100);
   // A second run loads the (seeding) operator from the cache.
-  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" + cache);
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" +
+               cache);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("operator from the cache"), std::string::npos) << r.err;
 
@@ -139,8 +145,10 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   const std::string twin = " --sensor " + source_path("examples/sensors/square30.json") + " --sheet-variation 0.2";
   const std::string sensor = " --sensor " + source_path("examples/sensors/square30.json") + " --cache " + d + "/cache";
   ASSERT_EQ(run_emit("simulate" + twin + " --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
-  ASSERT_EQ(run_emit("simulate" + twin + " --script random --frames 12 --force-N 0.5,8 --radius-mm 2.5 --seed 3 --out " + d +
-                     "/cal.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate" + twin +
+                     " --script random --frames 12 --force-N 0.5,8 --radius-mm 2.5 --seed 3 --out " + d + "/cal.csv")
+                .exit_code,
+            0);
   ASSERT_EQ(run_emit("simulate" + twin + " --press 9,20,2.5,3 --out " + d + "/one.csv").exit_code, 0);
   auto r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
                     "/cal_presses.csv --out " + d + "/calib.json");
@@ -153,8 +161,8 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   EXPECT_NEAR(low, 1 / 1.2, 0.02) << "the twin's sheet: 1/(1 ± 0.2) of the nominal conductance";
   EXPECT_NEAR(high, 1 / 0.8, 0.02);
   const auto error_mm = [&](const std::string& calibration) {
-    const auto run = run_emit("reconstruct" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " +
-                              d + "/c.jsonl" + calibration);
+    const auto run = run_emit("reconstruct" + sensor + " --reference " + d + "/ref.csv --frames " + d +
+                              "/one.csv --contacts " + d + "/c.jsonl" + calibration);
     EXPECT_EQ(run.exit_code, 0) << run.err;
     const auto contacts = parse_contacts_line(test::read_text(d + "/c.jsonl"), nullptr);
     return contacts.empty() ? 1e9 : std::hypot(contacts[0].x_mm - 9, contacts[0].y_mm - 20);
@@ -192,7 +200,8 @@ TEST(Cli, ReconstructLeavesOutADeadElectrode) {
 
 TEST(Cli, MeshWritesAFileAndReportsQuality) {
   const std::string dir = test::temp_folder("cli_mesh");
-  const auto r = run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");
+  const auto r =
+      run_emit("mesh --sensor " + source_path("examples/sensors/circle40.json") + " --out " + dir + "/c.msh");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("triangles"), std::string::npos);
   EXPECT_NE(r.out.find("min angle"), std::string::npos);
@@ -205,7 +214,8 @@ TEST(Cli, BenchPrintsARowPerCase) {
   // Under AddressSanitizer (the test build) the peak would also hold ASan's quarantine of freed
   // blocks, 256 MiB by default, which is not emit's memory: the bench runs with a 16 MiB one
   // (measured at 3k: 347 MiB with the default, 133 MiB with 16, 35 MiB in a Release build).
-  const auto r = run_emit("bench --sizes 3k --electrodes 16 --no-baselines", "ASAN_OPTIONS=\"$ASAN_OPTIONS:quarantine_size_mb=16\"");
+  const auto r = run_emit("bench --sizes 3k --electrodes 16 --no-baselines",
+                          "ASAN_OPTIONS=\"$ASAN_OPTIONS:quarantine_size_mb=16\"");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string row = last_line_of(r.out);
   long triangles = 0;
@@ -236,7 +246,8 @@ TEST(Cli, MeshFileSensor) {
   const std::string dir = test::temp_folder("cli_mesh_sensor");
   ASSERT_EQ(run_emit("mesh --element-size-mm 2 --out " + dir + "/sheet.msh").exit_code, 0);
   std::ofstream(dir + "/sensor.json") << R"({"shape": {"type": "mesh", "file": "sheet.msh"}})";
-  const auto r = run_emit("simulate --sensor " + dir + "/sensor.json --press 30,30,5,10 --exact --out " + dir + "/f.csv");
+  const auto r =
+      run_emit("simulate --sensor " + dir + "/sensor.json --press 30,30,5,10 --exact --out " + dir + "/f.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_frames_csv(dir + "/f.csv", 16).size(), 1u);
 }
@@ -277,8 +288,8 @@ TEST(Cli, LiveRecordsAndReplaysAFile) {
   auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --record " + d + "/r.emitrec --cache " + d);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("recorded 30 frames"), std::string::npos) << r.out;
-  r = run_emit("live --source file:" + d + "/r.emitrec --fps 0 --contacts " + d + "/c.jsonl --cache " + d + " --record " +
-               d + "/again.emitrec");
+  r = run_emit("live --source file:" + d + "/r.emitrec --fps 0 --contacts " + d + "/c.jsonl --cache " + d +
+               " --record " + d + "/again.emitrec");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
   // The replay recorded again holds the packets it read, byte for byte (recorded what the board
@@ -303,7 +314,8 @@ TEST(Cli, LiveRecordsAndReplaysAFile) {
 // leaves the sheet untouched (its first 15 frames), then one within live_loop_test's 0.5 mm.
 TEST(Cli, LiveWritesTheScriptedPressAsJsonLines) {
   const std::string d = test::temp_folder("cli_live");
-  const auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --contacts " + d + "/c.jsonl --cache " + d);
+  const auto r =
+      run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --contacts " + d + "/c.jsonl --cache " + d);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("live: 20 frames"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("latency mean"), std::string::npos) << r.out;
@@ -339,7 +351,8 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
   const std::string dir = test::temp_folder("cli_bad");
   const std::string out = dir + "/out.csv";
   std::ofstream(out) << "GOOD\n";
-  std::ofstream(dir + "/unknown_key.json") << R"({"shape": {"type": "circle", "radius_mm": 20}, "electrodes": {"count": 8, "width_mm": 2}, "colour": 1})";
+  std::ofstream(dir + "/unknown_key.json")
+      << R"({"shape": {"type": "circle", "radius_mm": 20}, "electrodes": {"count": 8, "width_mm": 2}, "colour": 1})";
   std::ofstream(dir + "/bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\ngarbage\n";
   std::ofstream(dir + "/msh_sensor.json") << R"({"shape": {"type": "mesh", "file": "bad.msh"}})";
   auto csv_row = [](int count, const std::string& special, int at) {
@@ -370,7 +383,8 @@ INSTANTIATE_TEST_SUITE_P(
     Errors, CliBadInput,
     ::testing::Values(
         BadRun{"missing sensor file", "simulate --sensor DIR/none.json --press 30,30,5,10 --out OUT", "none.json"},
-        BadRun{"unknown key", "simulate --sensor DIR/unknown_key.json --press 20,20,5,10 --out OUT", "colour: unknown key"},
+        BadRun{"unknown key", "simulate --sensor DIR/unknown_key.json --press 20,20,5,10 --out OUT",
+               "colour: unknown key"},
         BadRun{"press off the sheet", "simulate --press 70,30,5,10 --out OUT", "off the sheet"},
         BadRun{"press not numbers", "simulate --press 30,thirty,5,10 --out OUT", "\"thirty\" is not a number"},
         BadRun{"negative force", "simulate --press 30,30,5,-1 --out OUT", "force must not be negative"},
@@ -383,7 +397,8 @@ INSTANTIATE_TEST_SUITE_P(
                "nan.csv:2: value 18 is nan"},
         BadRun{"text in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/text.csv --contacts OUT --no-cache",
                "text.csv:1: value 4 \"volts\" is not a number"},
-        BadRun{"wrong value count", "reconstruct --reference DIR/ref.csv --frames DIR/short.csv --contacts OUT --no-cache",
+        BadRun{"wrong value count",
+               "reconstruct --reference DIR/ref.csv --frames DIR/short.csv --contacts OUT --no-cache",
                "short.csv:1: 255 values, expected 256"},
         BadRun{"reference from another sensor",
                "reconstruct --reference DIR/ref8.csv --frames DIR/ref.csv --contacts OUT --no-cache",

@@ -49,9 +49,10 @@ TEST(SheetEvaluation, PaperMethodSweepAndPlots) {
   EXPECT_GT(e.triangles, 0);
   ASSERT_EQ(e.methods.size(), 1u);
   const MethodEvaluation& paper = e.methods[0];
-  std::printf("coarse 30 mm sheet, paper method at λ² %g: %.2f +/- %.2f mm over %d presses, pressure error %.3f N/mm2\n",
-              paper.lambda2, paper.position.mean, paper.position.std, paper.position.count,
-              paper.pressure_error_N_per_mm2.value_or(-1));
+  std::
+      printf("coarse 30 mm sheet, paper method at λ² %g: %.2f +/- %.2f mm over %d presses, pressure error %.3f N/mm2\n",
+             paper.lambda2, paper.position.mean, paper.position.std, paper.position.count,
+             paper.pressure_error_N_per_mm2.value_or(-1));
   ASSERT_EQ(paper.sweep.size(), 2u);
   // The best of the sweep is kept, and would be used for the mismatches.
   EXPECT_EQ(paper.position.mean, std::min(paper.sweep[0].image_centroid.mean, paper.sweep[1].image_centroid.mean));

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
+#include <Eigen/SparseCholesky>
 
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/stiffness.hpp"
@@ -48,7 +48,8 @@ TEST(ForwardModel, StripConvergesAtSecondOrder) {
   for (std::size_t i = 1; i < errors.size(); ++i) {
     const double rate = std::log2(errors[i - 1] / errors[i]);
     std::printf("strip: error %.3e V -> %.3e V, observed rate %.2f\n", errors[i - 1], errors[i], rate);
-    EXPECT_GE(rate, test::min_convergence_rate) << "refinement " << i << ": errors " << errors[i - 1] << " → " << errors[i];
+    EXPECT_GE(rate, test::min_convergence_rate)
+        << "refinement " << i << ": errors " << errors[i - 1] << " → " << errors[i];
   }
 }
 

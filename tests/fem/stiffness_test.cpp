@@ -1,8 +1,8 @@
 // P1 stiffness: operator identities, linear precision, and validity in 3D.
 #include "emit/fem/stiffness.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "test_support.hpp"
 #include "tolerances.hpp"
@@ -45,7 +45,8 @@ TEST(Stiffness, LinearPrecisionOnInteriorNodes) {
   // Perturb interior nodes so the patch is irregular.
   for (Index v = 0; v < mesh.node_count(); ++v) {
     const double x = mesh.nodes_mm(v, 0), y = mesh.nodes_mm(v, 1);
-    if (x > 0 && x < 6 && y > 0 && y < 4) mesh.nodes_mm.row(v) += Vector3(0.2 * std::sin(3 * v), 0.2 * std::cos(5 * v), 0);
+    if (x > 0 && x < 6 && y > 0 && y < 4)
+      mesh.nodes_mm.row(v) += Vector3(0.2 * std::sin(3 * v), 0.2 * std::cos(5 * v), 0);
   }
   const SparseMatrix K = assemble_stiffness(mesh, 1.0);
   const Vector u = 0.7 * mesh.nodes_mm.col(0) - 1.3 * mesh.nodes_mm.col(1) + Vector::Constant(mesh.node_count(), 2.0);
@@ -63,7 +64,8 @@ TEST(Stiffness, InvariantUnderRotationInto3D) {
   const Mesh flat = small_mesh();
   Mesh tilted = flat;
   const Eigen::Matrix3d R = (Eigen::AngleAxisd(0.7, Vector3(1, 2, 3).normalized())).toRotationMatrix();
-  for (Index v = 0; v < tilted.node_count(); ++v) tilted.nodes_mm.row(v) = (R * Vector3(flat.nodes_mm.row(v))).transpose();
+  for (Index v = 0; v < tilted.node_count(); ++v)
+    tilted.nodes_mm.row(v) = (R * Vector3(flat.nodes_mm.row(v))).transpose();
   const Matrix difference = Matrix(assemble_stiffness(flat, 1.0)) - Matrix(assemble_stiffness(tilted, 1.0));
   EXPECT_LE(difference.cwiseAbs().maxCoeff(), operator_identity);
 }

@@ -21,8 +21,7 @@ std::uint32_t zlib_crc(const std::uint8_t* bytes, std::size_t count) {
 TEST(FramePacket, Crc32CheckValue) {
   // The CRC-32/ISO-HDLC catalogue's check value: crc("123456789") = 0xCBF43926.
   const std::string check = "123456789";
-  EXPECT_EQ(fw::crc32(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()),
-            0xCBF43926u);
+  EXPECT_EQ(fw::crc32(reinterpret_cast<const std::uint8_t*>(check.data()), check.size()), 0xCBF43926u);
   EXPECT_EQ(fw::crc32(nullptr, 0), 0u);  // empty input: init and final xor cancel
 }
 
@@ -58,7 +57,7 @@ TEST(FramePacket, EncodedBytesAreTheDocumentedFields) {
   const std::vector<std::uint8_t> head(packet.begin(), packet.begin() + 16);
   const std::vector<std::uint8_t> expected_head = {
       0x45, 0x4D,              // sync "EM"
-      1, 16, 12, 4,            // version, N, ADC bits, oversampling
+      1,    16,   12,   4,     // version, N, ADC bits, oversampling
       0x00, 0x02,              // payload length 512, little-endian
       0x78, 0x56, 0x34, 0x12,  // sequence
       0xD4, 0xC3, 0xB2, 0xA1,  // timestamp
@@ -87,9 +86,9 @@ TEST(FramePacket, RefusesInvalidHeaderOrSmallBuffer) {
   EXPECT_EQ(fw::encode_packet(header, counts.data(), packet.data(), packet.size() - 1), 0u);
   EXPECT_EQ(packet[0], 0xEE);  // nothing written
   EXPECT_EQ(fw::encode_packet(header, counts.data(), packet.data(), packet.size()), 52u);
-  for (auto broken : {fw::PacketHeader{1, 12, 1, 0, 0}, fw::PacketHeader{65, 12, 1, 0, 0},
-                      fw::PacketHeader{4, 0, 1, 0, 0}, fw::PacketHeader{4, 17, 1, 0, 0},
-                      fw::PacketHeader{4, 12, 0, 0, 0}})
+  for (auto broken :
+       {fw::PacketHeader{1, 12, 1, 0, 0}, fw::PacketHeader{65, 12, 1, 0, 0}, fw::PacketHeader{4, 0, 1, 0, 0},
+        fw::PacketHeader{4, 17, 1, 0, 0}, fw::PacketHeader{4, 12, 0, 0, 0}})
     EXPECT_EQ(fw::encode_packet(broken, counts.data(), packet.data(), packet.size()), 0u);
 }
 

@@ -12,8 +12,8 @@ namespace {
 
 using firmware::Mux;
 using firmware::MuxControl;
-using firmware::ScanOptions;
 using firmware::Scanner;
+using firmware::ScanOptions;
 using test::FakeBoard;
 using Kind = FakeBoard::Kind;
 

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/green_function.hpp"
-#include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/measurements.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/twin.hpp"
@@ -21,10 +21,18 @@ namespace {
 
 struct FitBench {
   Sensor sensor = default_sensor();
-  Mesh mesh = generate_mesh(sensor, [this] { MeshOptions o = reconstruction_mesh_options(sensor); o.electrode_edge_size_factor = 0.25; return o; }());
+  Mesh mesh = generate_mesh(sensor, [this] {
+    MeshOptions o = reconstruction_mesh_options(sensor);
+    o.electrode_edge_size_factor = 0.25;
+    return o;
+  }());
   DenseGreenFunction green = dense_green_function(mesh, sensor.sheet_resistance_ohm_per_sq);
   MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
-  Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 4; return o; }()};
+  Twin twin{sensor, [] {
+              TwinOptions o;
+              o.mesh_seed = 4;
+              return o;
+            }()};
   Vector dV(const std::vector<Press>& presses) {
     return frame_difference(measurements, twin.frame(presses), twin.frame({}));
   }
@@ -48,7 +56,8 @@ TEST(ContactFitter, RecoversTheDiscThatMadeTheFrame) {
   // Noise-free frames of the fitter's own model: only the optimiser's tolerance remains.
   EXPECT_NEAR(r.contacts[0].disc.x_mm, truth.x_mm, 1e-4);
   EXPECT_NEAR(r.contacts[0].disc.y_mm, truth.y_mm, 1e-4);
-  EXPECT_NEAR(r.contacts[0].disc.conductance_S_per_mm2, truth.conductance_S_per_mm2, 1e-5 * truth.conductance_S_per_mm2);
+  EXPECT_NEAR(r.contacts[0].disc.conductance_S_per_mm2, truth.conductance_S_per_mm2,
+              1e-5 * truth.conductance_S_per_mm2);
 }
 
 TEST(ContactFitter, FindsSinglePressesOnTheTwinToATenthOfAMillimetre) {
@@ -83,7 +92,8 @@ TEST(ContactFitter, FindsTwoPressesAsTwoContacts) {
   ASSERT_EQ(r.contacts.size(), 2u);
   for (const Press& p : presses) {
     double nearest = 1e9;
-    for (const FittedContact& c : r.contacts) nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
+    for (const FittedContact& c : r.contacts)
+      nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
     EXPECT_LT(nearest, 0.5) << "press at " << p.x_mm << ", " << p.y_mm;  // issue 4: within 2 mm, 95 % of frames
   }
 }
@@ -115,7 +125,11 @@ struct FitBench30 {
   Sensor sensor = load_sensor(test::source_path("examples/sensors/square30.json"));
   FitModel model = build_fit_model(sensor);
   MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
-  Twin twin{sensor, [] { TwinOptions o; o.mesh_seed = 4; return o; }()};
+  Twin twin{sensor, [] {
+              TwinOptions o;
+              o.mesh_seed = 4;
+              return o;
+            }()};
   Vector dV(const std::vector<Press>& presses) {
     return frame_difference(measurements, twin.frame(presses), twin.frame({}));
   }
@@ -144,7 +158,8 @@ TEST(ContactFitter, FindsTwoClosePressesOnTheSmallSheet) {
     ASSERT_EQ(r.contacts.size(), 2u);
     for (const Press& p : presses) {
       double nearest = 1e9;
-      for (const FittedContact& c : r.contacts) nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
+      for (const FittedContact& c : r.contacts)
+        nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
       std::printf("  press %.2f, %.2f: nearest contact %.3f mm\n", p.x_mm, p.y_mm, nearest);
       EXPECT_LT(nearest, 2.0);  // issue 4: within 2 mm
     }
@@ -165,7 +180,8 @@ TEST(ContactFitter, TracksAMovingPressAndLetsGoWhenTheFramesChange) {
     ASSERT_TRUE(r.tracked) << "frame " << i;
     ASSERT_EQ(r.contacts.size(), 1u);
     // The cold fit's accuracy on this sheet: a tenth of a millimetre (and well under issue 4's 0.3).
-    EXPECT_LT(std::hypot(r.contacts[0].disc.x_mm - press.x_mm, r.contacts[0].disc.y_mm - press.y_mm), 0.2) << "frame " << i;
+    EXPECT_LT(std::hypot(r.contacts[0].disc.x_mm - press.x_mm, r.contacts[0].disc.y_mm - press.y_mm), 0.2)
+        << "frame " << i;
   }
   // A second finger lands: one disc cannot explain the frame (beyond noise and model error).
   const std::vector<Press> two{{22, 21.2, 5, 8}, {45, 40, 5, 8}};

@@ -276,7 +276,7 @@ TEST(Contacts, FindAllocatesNothing) {
   press_disc(mesh, frame, {15.0, 15.0}, 6.0, 0.02);
   press_disc(mesh, frame, {45.0, 20.0}, 4.0, 0.05);
   press_disc(mesh, frame, {30.0, 45.0}, 8.0, 0.01);
-  frame.select(cell_triangle(2, 48, 0, 50), 0.03);  // a speck, dropped below
+  frame.select(cell_triangle(2, 48, 0, 50), 0.03);                 // a speck, dropped below
   finder.find(frame.selected, frame.pressure, frame.weight, 1.0);  // warm-up
   {
     const test::AllocationCounter counter;
@@ -352,8 +352,8 @@ TEST(ContactsJsonl, KeysInTheDocumentedOrder) {
   write_contacts_line(out, 7, {two_contacts()[0]});
   const std::string line = out.str();
   std::size_t previous = 0;
-  for (const char* key : {"\"frame\"", "\"contacts\"", "\"x_mm\"", "\"y_mm\"", "\"area_mm2\"",
-                          "\"pressure_N_per_mm2\"", "\"peak_pressure_N_per_mm2\"", "\"force_N\""}) {
+  for (const char* key : {"\"frame\"", "\"contacts\"", "\"x_mm\"", "\"y_mm\"", "\"area_mm2\"", "\"pressure_N_per_mm2\"",
+                          "\"peak_pressure_N_per_mm2\"", "\"force_N\""}) {
     const std::size_t at = line.find(key);
     ASSERT_NE(at, std::string::npos) << key << " in " << line;
     EXPECT_GE(at, previous) << key << " in " << line;

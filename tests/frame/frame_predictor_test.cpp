@@ -8,8 +8,8 @@
 #include "emit/fem/forward_model.hpp"
 #include "emit/frame/disc_contact.hpp"
 #include "emit/frame/frame_predictor.hpp"
-#include "emit/model/green_function.hpp"
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/model/green_function.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/press_contact.hpp"
 #include "tolerances.hpp"
@@ -79,7 +79,8 @@ TEST(DiscContact, DerivativesMatchFiniteDifferences) {
     ASSERT_EQ(b.triangles, load.triangles);
     double worst = 0;
     for (std::size_t i = 0; i < load.triangles.size(); ++i)
-      worst = std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
+      worst =
+          std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
     EXPECT_LT(worst, 1e-6 * scale) << "parameter " << k;
   }
 }
@@ -91,9 +92,9 @@ TEST(FramePredictor, AgreesWithTheSparseForwardModel) {
   const ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
   FramePredictor predictor(mesh, green);
   // One press in the middle, two presses, and one touching electrode 1's border.
-  for (const std::vector<Press>& presses : {std::vector<Press>{{30, 30, 5, 8}},
-                                            std::vector<Press>{{15, 20, 4, 5}, {45, 40, 3, 2}},
-                                            std::vector<Press>{{22.5, 2, 3, 4}}}) {
+  for (const std::vector<Press>& presses :
+       {std::vector<Press>{{30, 30, 5, 8}}, std::vector<Press>{{15, 20, 4, 5}, {45, 40, 3, 2}},
+        std::vector<Press>{{22.5, 2, 3, 4}}}) {
     const ContactLoad load = press_contact_load(mesh, presses, sensor.contact);
     const Frame exact = model.solve_frame(load, sensor.drive_voltage_V);
     Frame predicted;
@@ -132,7 +133,8 @@ TEST(FramePredictor, DerivativeMatchesFiniteDifferences) {
     predictor.predict(a.triangles, a.local_S, sensor.drive_voltage_V, fa);
     predictor.predict(b.triangles, b.local_S, sensor.drive_voltage_V, fb);
     const Frame difference = (fa - fb) / (2 * step);
-    EXPECT_LT((d_frame - difference).cwiseAbs().maxCoeff(), 1e-4 * difference.cwiseAbs().maxCoeff()) << "parameter " << k;
+    EXPECT_LT((d_frame - difference).cwiseAbs().maxCoeff(), 1e-4 * difference.cwiseAbs().maxCoeff())
+        << "parameter " << k;
     predictor.predict(load.triangles, load.local_S, sensor.drive_voltage_V, frame);  // restore the state
   }
 }

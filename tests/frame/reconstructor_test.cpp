@@ -1,16 +1,16 @@
 // The reconstruction pipeline: the paper's accuracy on the twin, the operator cache, the online
 // path's checks and its zero allocations.
-#include "emit/model/method.hpp"
 #include "emit/frame/reconstructor.hpp"
+#include "emit/model/method.hpp"
 
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
-#include "emit/frame/batch.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/eval/evaluation.hpp"
+#include "emit/frame/batch.hpp"
 #include "emit/model/operator_cache.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/press_scripts.hpp"

@@ -52,8 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::size_t at = 0;
   for (std::size_t k = 0; at < size; ++k) {
     const std::size_t piece = std::min<std::size_t>(1 + data[k % size] % 64, size - at);
-    pieces.feed(bytes.subspan(at, piece),
-                [&](const emit::RawFrame& frame) { check_frame(frame, seen_pieces); });
+    pieces.feed(bytes.subspan(at, piece), [&](const emit::RawFrame& frame) { check_frame(frame, seen_pieces); });
     at += piece;
   }
 
@@ -62,8 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(a.frames == seen_whole.sequences.size());
   check(a.frames <= size / emit::firmware::packet_min_size);
   check(a.garbage_bytes + 2 * a.corrupt <= size);
-  check(a.frames == b.frames && a.corrupt == b.corrupt && a.dropped == b.dropped &&
-        a.garbage_bytes == b.garbage_bytes);
+  check(a.frames == b.frames && a.corrupt == b.corrupt && a.dropped == b.dropped && a.garbage_bytes == b.garbage_bytes);
   check(seen_whole.sequences == seen_pieces.sequences && seen_whole.count_sum == seen_pieces.count_sum);
   return 0;
 }

@@ -113,17 +113,21 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"sheet unknown key",
                 R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 0, 1, 1], "theta": 1}})",
                 "sheet_correction: theta: unknown key"},
-        BadFile{"sheet without box", R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"log_conductance": []}})",
+        BadFile{"sheet without box",
+                R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"log_conductance": []}})",
                 "sheet_correction: box_mm: missing"},
-        BadFile{"sheet box too short",
-                R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 0, 1], "log_conductance": [0, 0, 0, 0, 0]}})",
-                "sheet_correction.box_mm: must be an array of 4 numbers"},
-        BadFile{"sheet theta text",
-                R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 0, 1, 1], "log_conductance": [0, 0, "x", 0, 0]}})",
-                "sheet_correction.log_conductance: must hold finite numbers"},
-        BadFile{"sheet box upside down",
-                R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 5, 1, 1], "log_conductance": [0, 0, 0, 0, 0]}})",
-                "sheet_correction.box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0"}),
+        BadFile{
+            "sheet box too short",
+            R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 0, 1], "log_conductance": [0, 0, 0, 0, 0]}})",
+            "sheet_correction.box_mm: must be an array of 4 numbers"},
+        BadFile{
+            "sheet theta text",
+            R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 0, 1, 1], "log_conductance": [0, 0, "x", 0, 0]}})",
+            "sheet_correction.log_conductance: must hold finite numbers"},
+        BadFile{
+            "sheet box upside down",
+            R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "sheet_correction": {"box_mm": [0, 5, 1, 1], "log_conductance": [0, 0, 0, 0, 0]}})",
+            "sheet_correction.box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -71,16 +71,16 @@ TEST_P(ContactsJsonlBad, SaysWhatIsWrong) {
 
 INSTANTIATE_TEST_SUITE_P(
     Errors, ContactsJsonlBad,
-    ::testing::Values(
-        std::pair{"[1]", "contacts line: not a JSON object"},
-        std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
-        std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
-        std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
-        std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
-        std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
-        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})", "contacts line: contact 0: missing \"y_mm\""},
-        std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
-                  "contacts line: contact 0: \"x_mm\" is not a finite number"}));
+    ::testing::Values(std::pair{"[1]", "contacts line: not a JSON object"},
+                      std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
+                      std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
+                      std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
+                      std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
+                      std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
+                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})",
+                                "contacts line: contact 0: missing \"y_mm\""},
+                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
+                                "contacts line: contact 0: \"x_mm\" is not a finite number"}));
 
 }  // namespace
 }  // namespace emit

@@ -35,7 +35,7 @@ TEST(Baseline, FollowsDriftWhileUntouched) {
   Baseline baseline(options);
   baseline.capture(constant_frame(1.0));
   for (int n = 0; n < 10; ++n) EXPECT_TRUE(baseline.follow(constant_frame(2.0), false));
-  const double expected = 2.0 - std::pow(0.9, 10);  // gap of 1 V shrunk by 0.9 ten times
+  const double expected = 2.0 - std::pow(0.9, 10);           // gap of 1 V shrunk by 0.9 ten times
   EXPECT_NEAR(baseline.reference()(1, 2), expected, 1e-14);  // ten multiply-adds: a few ulps
 }
 

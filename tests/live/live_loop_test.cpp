@@ -10,17 +10,17 @@
 
 #include <utility>  // before Boost 1.74's Asio, which uses std::exchange without it under C++20
 
+#include <gtest/gtest.h>
 #include <boost/asio.hpp>
 #include <boost/beast.hpp>
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "emit/twin/sim_source.hpp"
-#include "emit/live/open_source.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/live/live_server.hpp"
+#include "emit/live/open_source.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/twin/sim_source.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -51,7 +51,8 @@ TEST(SimSource, ScriptsStartUntouchedAndStayOnTheSheet) {
   const Sensor sensor = default_sensor();
   SourceOptions options = unpaced();
   SimSource loop(sensor, parse_sim_script("sim"), options);
-  for (std::uint64_t s = 0; s < static_cast<std::uint64_t>(options.untouched_frames); ++s) EXPECT_TRUE(loop.presses_of(s).empty());
+  for (std::uint64_t s = 0; s < static_cast<std::uint64_t>(options.untouched_frames); ++s)
+    EXPECT_TRUE(loop.presses_of(s).empty());
   int pressed = 0;
   for (std::uint64_t s = options.untouched_frames; s < 1000; ++s)  // 20 s: the figure-eight and its lift-offs
     for (const Press& p : loop.presses_of(s)) {
@@ -123,7 +124,8 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
   LiveBench& b = bench();
   SimSource source(b.sensor, parse_sim_script("sim:fixed:20,40"), unpaced());
   LiveLoop loop(source, b.pipeline);
-  LiveServer server("127.0.0.1:0", b.pipeline.model().mesh, b.sensor.name, [&](const std::string& c) { loop.command(c); });
+  LiveServer server("127.0.0.1:0", b.pipeline.model().mesh, b.sensor.name,
+                    [&](const std::string& c) { loop.command(c); });
   loop.add_publisher(&server);
   std::atomic<bool> stop{false};
   std::thread runner([&] { loop.run(stop); });
@@ -170,7 +172,8 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
 
   // The client goes away; the loop keeps going and the server forgets it.
   ws.close(beast::websocket::close_code::normal);
-  for (int wait = 0; wait < 200 && server.clients() > 0; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int wait = 0; wait < 200 && server.clients() > 0; ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_EQ(server.clients(), 0u);
   stop = true;
   runner.join();

@@ -43,8 +43,9 @@ TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
   net::io_context io;
   tcp::socket socket(io);
   socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
-  net::write(socket, net::buffer(std::string("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n"
-                                             "GET /favicon.ico HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")));
+  net::write(socket,
+             net::buffer(std::string("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n"
+                                     "GET /favicon.ico HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")));
   std::string text;
   beast::error_code ec;
   net::read(socket, net::dynamic_buffer(text), ec);  // until the server closes the connection

@@ -27,7 +27,7 @@ TEST(GenerateMesh, DefaultSensorHasThePapersSize) {
   EXPECT_LT(q.triangle_count, 7500);
   EXPECT_GT(q.node_count, 2500);
   EXPECT_LT(q.node_count, 3800);
-  EXPECT_GT(q.min_angle_deg, 25.0);  // Frontal-Delaunay on a square: well-shaped triangles
+  EXPECT_GT(q.min_angle_deg, 25.0);                    // Frontal-Delaunay on a square: well-shaped triangles
   EXPECT_NEAR(q.total_area_mm2, 3600.0, 1e-9 * 3600);  // straight borders are exact
 }
 

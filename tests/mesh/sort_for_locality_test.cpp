@@ -33,7 +33,8 @@ Mesh shuffled(const Mesh& mesh) {
   std::iota(order.begin(), order.end(), 0);
   std::shuffle(order.begin(), order.end(), std::mt19937(7));
   Mesh out = mesh;
-  for (std::size_t t = 0; t < order.size(); ++t) out.triangles.row(static_cast<Index>(t)) = mesh.triangles.row(order[t]);
+  for (std::size_t t = 0; t < order.size(); ++t)
+    out.triangles.row(static_cast<Index>(t)) = mesh.triangles.row(order[t]);
   return out;
 }
 

@@ -1,16 +1,16 @@
 // The per-frame form of the reconstruction operator: truncated and in single precision, it must
 // stay within the bound it documents of the full operator, on real frames, whether it is built
 // from R or straight from the eigendecomposition (for each prior).
-#include "emit/model/method.hpp"
 #include "emit/model/compact_operator.hpp"
+#include "emit/model/method.hpp"
 
-#include <Eigen/SVD>
 #include <gtest/gtest.h>
+#include <Eigen/SVD>
 
 #include "emit/core/errors.hpp"
+#include "emit/frame/reconstructor.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/reconstruction_model.hpp"
-#include "emit/frame/reconstructor.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/twin.hpp"
 
@@ -34,8 +34,10 @@ struct Frames {
     R = build_reconstruction_operator(J, model.mesh, model.options);
     Twin twin(sensor);
     const Frame reference = twin.frame({});
-    for (const auto& presses : std::vector<std::vector<Press>>{
-             {{30, 30, 5, 10}}, {{8, 50, 4, 20}}, {{15, 15, 5, 5}, {45, 40, 5, 30}}, {{55, 30, 3, 2}}})
+    for (const auto& presses : std::vector<std::vector<Press>>{{{30, 30, 5, 10}},
+                                                               {{8, 50, 4, 20}},
+                                                               {{15, 15, 5, 5}, {45, 40, 5, 30}},
+                                                               {{55, 30, 3, 2}}})
       differences.push_back(frame_difference(model.measurements, twin.frame(presses), reference));
   }
 };

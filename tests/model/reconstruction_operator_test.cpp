@@ -1,9 +1,9 @@
 // The reconstruction operator in measurement space equals paper eq. 7's K×K form.
-#include "emit/model/method.hpp"
 #include "emit/model/reconstruction_operator.hpp"
+#include "emit/model/method.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/generate_mesh.hpp"
@@ -28,7 +28,8 @@ struct Small {
 Matrix dense_prior(const Small& s, const OperatorOptions& options) {
   switch (options.prior) {
     case Prior::identity: return Matrix::Identity(s.J.cols(), s.J.cols());
-    case Prior::noser: return Vector(s.J.colwise().squaredNorm().transpose().array().pow(options.noser_exponent)).asDiagonal();
+    case Prior::noser:
+      return Vector(s.J.colwise().squaredNorm().transpose().array().pow(options.noser_exponent)).asDiagonal();
     case Prior::laplacian: {
       const Matrix L(element_laplacian(s.mesh));
       Matrix Q = L.transpose() * L;
@@ -63,7 +64,8 @@ TEST(ReconstructionOperator, MethodsAndBadLambda) {
   EXPECT_EQ(operator_options(Method::fit).prior, Prior::identity);  // fit is seeded by the paper's image
   EXPECT_EQ(operator_options(Method::noser).prior, Prior::noser);
   EXPECT_EQ(operator_options(Method::laplacian).prior, Prior::laplacian);
-  for (Method m : {Method::fit, Method::paper, Method::noser, Method::laplacian}) EXPECT_EQ(parse_method(method_name(m)), m);
+  for (Method m : {Method::fit, Method::paper, Method::noser, Method::laplacian})
+    EXPECT_EQ(parse_method(method_name(m)), m);
   EXPECT_THROW(parse_method("magic"), InvalidInput);
   const Small s;
   OperatorOptions bad;

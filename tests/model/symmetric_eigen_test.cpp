@@ -2,8 +2,8 @@
 // eigenpairs (to round-off: relative 1e-12 is ~1e4 ulps of the largest value for n = 60).
 #include "emit/model/symmetric_eigen.hpp"
 
-#include <Eigen/QR>
 #include <gtest/gtest.h>
+#include <Eigen/QR>
 
 #include "emit/core/errors.hpp"
 
@@ -17,7 +17,8 @@ TEST(SymmetricEigen, RecoversKnownEigenpairsAscending) {
   const Matrix A = Q * values.asDiagonal() * Q.transpose();
   const SymmetricEigen eigen = symmetric_eigen(A);
   EXPECT_LE((eigen.values - values).cwiseAbs().maxCoeff(), 1e-12 * 50.0);
-  EXPECT_LE((eigen.vectors * eigen.values.asDiagonal() * eigen.vectors.transpose() - A).cwiseAbs().maxCoeff(), 1e-12 * 50.0);
+  EXPECT_LE((eigen.vectors * eigen.values.asDiagonal() * eigen.vectors.transpose() - A).cwiseAbs().maxCoeff(),
+            1e-12 * 50.0);
   EXPECT_LE((eigen.vectors.transpose() * eigen.vectors - Matrix::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-12);
 }
 

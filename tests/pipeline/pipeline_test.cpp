@@ -37,9 +37,12 @@ TEST(Pipeline, ACalibrationOfTheOtherKindIsRefusedNamingTheFix) {
             "c.json: a calibration for contact fitting; run 'emit calibrate --method paper'");
   EXPECT_EQ(error_of([] { check_calibration_for_method(LinearCalibration{}, Method::fit, "c.json"); }),
             "c.json: a calibration for the linear methods; run 'emit calibrate --method fit'");
-  EXPECT_EQ(error_of([] { check_calibration_for_method(LinearCalibration{}, Method::laplacian, "c.json"); }), "no error");
+  EXPECT_EQ(error_of([] { check_calibration_for_method(LinearCalibration{}, Method::laplacian, "c.json"); }),
+            "no error");
   // The pipeline refuses before building anything.
-  EXPECT_EQ(error_of([] { Pipeline p(coarse_sensor(), {Method::noser, 0, "", {}}, FitCalibration{}, {}, "f.json"); }),
+  EXPECT_EQ(error_of([] {
+              Pipeline p(coarse_sensor(), {Method::noser, 0, "", {}}, FitCalibration{}, {}, "f.json");
+            }),
             "f.json: a calibration for contact fitting; run 'emit calibrate --method noser'");
 }
 

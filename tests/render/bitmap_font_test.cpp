@@ -29,13 +29,18 @@ TEST(BitmapFont, WidthIsSixColumnsAGlyphLessTheLastGap) {
 TEST(BitmapFont, UnknownAndMalformedCharactersDrawAsAQuestionMark) {
   const auto question = drawn("?");
   EXPECT_NE(drawn("A"), question);
-  EXPECT_NE(drawn("\xC2\xB5"), question);              // µ has a glyph of its own
-  EXPECT_EQ(drawn("\xE2\x82\xAC"), question);          // € (three bytes): no glyph
-  EXPECT_EQ(drawn("\xF0\x9F\x98\x80"), question);      // an emoji (four bytes): no glyph
-  EXPECT_EQ(drawn("\xFF"), question);                  // a byte that starts no sequence
-  EXPECT_EQ(drawn("\xC3"), question);                  // a sequence cut short by the end
-  EXPECT_EQ(drawn("\xC3" "A"), drawn("?A"));           // or by a byte that does not continue it
-  EXPECT_EQ(text_width_px("\xC3" "A", 1), 11);
+  EXPECT_NE(drawn("\xC2\xB5"), question);          // µ has a glyph of its own
+  EXPECT_EQ(drawn("\xE2\x82\xAC"), question);      // € (three bytes): no glyph
+  EXPECT_EQ(drawn("\xF0\x9F\x98\x80"), question);  // an emoji (four bytes): no glyph
+  EXPECT_EQ(drawn("\xFF"), question);              // a byte that starts no sequence
+  EXPECT_EQ(drawn("\xC3"), question);              // a sequence cut short by the end
+  EXPECT_EQ(drawn("\xC3"
+                  "A"),
+            drawn("?A"));  // or by a byte that does not continue it
+  EXPECT_EQ(text_width_px("\xC3"
+                          "A",
+                          1),
+            11);
 }
 
 // Drawing past the image's edges clips: what is inside is drawn, nothing else changes.

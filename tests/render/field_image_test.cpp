@@ -23,8 +23,8 @@ namespace fs = std::filesystem;
 double luminance(Rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 testing::AssertionResult colours_near(Rgb actual, Rgb expected, int tolerance) {
-  const int worst = std::max(
-      {std::abs(actual.r - expected.r), std::abs(actual.g - expected.g), std::abs(actual.b - expected.b)});
+  const int worst =
+      std::max({std::abs(actual.r - expected.r), std::abs(actual.g - expected.g), std::abs(actual.b - expected.b)});
   if (worst <= tolerance) return testing::AssertionSuccess();
   return testing::AssertionFailure() << "colour (" << int(actual.r) << ", " << int(actual.g) << ", " << int(actual.b)
                                      << ") differs from (" << int(expected.r) << ", " << int(expected.g) << ", "

@@ -125,8 +125,7 @@ TEST(LinePlot, RefusesInvalidInput) {
   EXPECT_THROW(render_line_plot({bare_series({1, 2, 3}, {1, 2})}, linear), InvalidInput) << "x and y sizes differ";
   EXPECT_THROW(render_line_plot({}, linear), InvalidInput) << "no series";
   EXPECT_THROW(render_line_plot({bare_series({}, {})}, linear), InvalidInput) << "no points";
-  EXPECT_THROW(render_line_plot({bare_series({nan, 1, inf}, {1, nan, 2})}, linear), InvalidInput)
-      << "no finite point";
+  EXPECT_THROW(render_line_plot({bare_series({nan, 1, inf}, {1, nan, 2})}, linear), InvalidInput) << "no finite point";
   EXPECT_THROW(render_line_plot({bare_series({1, 2}, {0, -1})}, log), InvalidInput) << "nothing positive on a log axis";
   PlotSeries labelled = bare_series({1, 2}, {1, 2});
   labelled.point_labels = {"only one"};

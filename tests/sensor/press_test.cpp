@@ -45,11 +45,18 @@ TEST(Press, ParseErrorsNameTheText) {
 TEST(Press, ValidationNamesWhatIsWrong) {
   const Sensor sensor = default_sensor();  // 60 × 60 mm from the origin
   EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 5, 10}, "press 1"); }), "no error");
-  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, std::nan(""), 5, 10}, "press 1"); }),
+  EXPECT_EQ(error_of([&] {
+              validate_press(sensor, {30, std::nan(""), 5, 10}, "press 1");
+            }),
             "press 1: values must be finite numbers");
   EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 0, 10}, "press 2"); }), "press 2: radius must be positive");
-  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 5, -1}, "press 3"); }), "press 3: force must not be negative");
-  EXPECT_EQ(error_of([&] { validate_press(sensor, {-1, 30, 5, 1}, "press 4"); }),
+  EXPECT_EQ(error_of([&] {
+              validate_press(sensor, {30, 30, 5, -1}, "press 3");
+            }),
+            "press 3: force must not be negative");
+  EXPECT_EQ(error_of([&] {
+              validate_press(sensor, {-1, 30, 5, 1}, "press 4");
+            }),
             "press 4: centre (-1, 30) mm is off the sheet");
 }
 

@@ -102,30 +102,59 @@ INSTANTIATE_TEST_SUITE_P(
     Errors, SensorValidation,
     ::testing::Values(
         BadCase{"unknown top-level key", [](json& j) { j["colour"] = "red"; }, "colour: unknown key"},
-        BadCase{"unknown nested key", [](json& j) { j["adc"] = {{"bitz", 12}}; }, "adc.bitz: unknown key"},
+        BadCase{"unknown nested key",
+                [](json& j) {
+                  j["adc"] = {{"bitz", 12}};
+                },
+                "adc.bitz: unknown key"},
         BadCase{"missing shape", [](json& j) { j.erase("shape"); }, "shape: missing"},
-        BadCase{"unknown shape", [](json& j) { j["shape"] = {{"type", "star"}}; }, "shape.type: must be"},
+        BadCase{"unknown shape",
+                [](json& j) {
+                  j["shape"] = {{"type", "star"}};
+                },
+                "shape.type: must be"},
         BadCase{"negative resistance", [](json& j) { j["probing_sheet_resistance_ohm_per_sq"] = -5; },
                 "probing_sheet_resistance_ohm_per_sq: must be positive"},
         BadCase{"negative width", [](json& j) { j["shape"]["width_mm"] = -60; }, "shape.width_mm: must be positive"},
-        BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; }, "drive_voltage_V: must be a number"},
+        BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; },
+                "drive_voltage_V: must be a number"},
         BadCase{"fewer than 3 electrodes", [](json& j) { j["electrodes"]["count"] = 2; }, "at least 3 electrodes"},
-        BadCase{"fewer than 3 explicit", [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}}); },
+        BadCase{"fewer than 3 explicit",
+                [](json& j) {
+                  j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}});
+                },
                 "at least 3 electrodes"},
         BadCase{"count not a multiple of 4", [](json& j) { j["electrodes"]["count"] = 10; }, "multiple of 4"},
         BadCase{"electrode off the border",
-                [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}, {30, 31, 3}}); },
+                [](json& j) {
+                  j["electrodes"] = explicit_electrodes({{10, 0, 3}, {60, 30, 3}, {30, 31, 3}});
+                },
                 "electrodes[2]: centre"},
         BadCase{"overlapping electrodes",
-                [](json& j) { j["electrodes"] = explicit_electrodes({{10, 0, 3}, {12, 0, 3}, {60, 30, 3}}); },
+                [](json& j) {
+                  j["electrodes"] = explicit_electrodes({{10, 0, 3}, {12, 0, 3}, {60, 30, 3}});
+                },
                 "overlap"},
         BadCase{"electrodes too wide to fit", [](json& j) { j["electrodes"]["width_mm"] = 16; }, "overlap"},
-        BadCase{"positive gamma", [](json& j) { j["contact_law"] = {{"gamma", 1.2}}; }, "contact_law.gamma: must be negative"},
+        BadCase{"positive gamma",
+                [](json& j) {
+                  j["contact_law"] = {{"gamma", 1.2}};
+                },
+                "contact_law.gamma: must be negative"},
         BadCase{"degenerate polygon",
-                [](json& j) { j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {1, 1}, {2, 2}}}}; },
+                [](json& j) {
+                  j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {1, 1}, {2, 2}}}};
+                },
                 "zero area"},
-        BadCase{"adc bits out of range", [](json& j) { j["adc"] = {{"bits", 40}}; }, "adc.bits: must be between"},
-        BadCase{"mesh coarser than the sheet", [](json& j) { j["mesh"] = {{"element_size_mm", 40}}; },
+        BadCase{"adc bits out of range",
+                [](json& j) {
+                  j["adc"] = {{"bits", 40}};
+                },
+                "adc.bits: must be between"},
+        BadCase{"mesh coarser than the sheet",
+                [](json& j) {
+                  j["mesh"] = {{"element_size_mm", 40}};
+                },
                 "mesh.element_size_mm"}),
     [](const auto& info) {
       std::string name = info.param.what;

@@ -58,10 +58,10 @@ TEST(AllocationCounter, CountsAlignedNewAndAligns) {
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(line) % 64, 0u);
   delete line;
   // A size that is not a multiple of the alignment (aligned_alloc needs rounding up under ASan).
-  void* odd = ::operator new(10, std::align_val_t{128});
+  void* odd = ::operator new (10, std::align_val_t{128});
   sink = odd;
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(odd) % 128, 0u);
-  ::operator delete(odd, std::align_val_t{128});
+  ::operator delete (odd, std::align_val_t{128});
   void* nothrow = ::operator new[](3, std::align_val_t{32}, std::nothrow);
   sink = nothrow;
   ASSERT_NE(nothrow, nullptr);

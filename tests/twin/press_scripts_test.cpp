@@ -31,7 +31,8 @@ TEST(PressScripts, GridCoversTheSheetAtItsPitch) {
   ASSERT_EQ(jittered.size(), grid.size());
   double largest_shift = 0;
   for (std::size_t f = 0; f < grid.size(); ++f) {
-    const double shift = std::max(std::abs(jittered[f][0].x_mm - grid[f][0].x_mm), std::abs(jittered[f][0].y_mm - grid[f][0].y_mm));
+    const double shift =
+        std::max(std::abs(jittered[f][0].x_mm - grid[f][0].x_mm), std::abs(jittered[f][0].y_mm - grid[f][0].y_mm));
     EXPECT_LE(shift, 2.0);
     largest_shift = std::max(largest_shift, shift);
   }

@@ -60,7 +60,8 @@ TEST(SimSource, PacedSourceDropsWhatIsNotRead) {
   ASSERT_TRUE(source.next(frame, std::chrono::seconds(30)));
   EXPECT_EQ(frame.sequence, 0u);
   // The twin makes a coarse frame in milliseconds; up to 5 s is room for far more than queue_limit.
-  for (int wait = 0; wait < 500 && source.dropped() == 0; ++wait) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int wait = 0; wait < 500 && source.dropped() == 0; ++wait)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_GT(source.dropped(), 0u);
   ASSERT_TRUE(source.next(frame, std::chrono::seconds(1)));
   EXPECT_GT(frame.sequence, 1u) << "the oldest frames were dropped";

@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include "emit/core/errors.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
 #include "emit/mesh/mesh_io.hpp"
-#include <nlohmann/json.hpp>
-#include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/adc.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "emit/twin/adc_noise.hpp"
 #include "emit/twin/press_contact.hpp"
 #include "test_support.hpp"
@@ -63,7 +63,9 @@ TEST(Twin, MirrorSymmetryToRoundOff) {
   std::vector<int> mirror(16);
   for (int e = 0; e < 16; ++e)
     for (int f = 0; f < 16; ++f)
-      if ((sensor.electrodes[f].center_mm - Vector2(60 - sensor.electrodes[e].center_mm.x(), sensor.electrodes[e].center_mm.y())).norm() < 1e-9)
+      if ((sensor.electrodes[f].center_mm -
+           Vector2(60 - sensor.electrodes[e].center_mm.x(), sensor.electrodes[e].center_mm.y()))
+              .norm() < 1e-9)
         mirror[e] = f;
   Mesh mirrored = mesh;
   mirrored.nodes_mm.col(0) = Vector::Constant(mesh.node_count(), 60.0) - mesh.nodes_mm.col(0);
@@ -71,7 +73,8 @@ TEST(Twin, MirrorSymmetryToRoundOff) {
   for (int e = 0; e < 16; ++e) mirrored.electrode_nodes[mirror[e]] = mesh.electrode_nodes[e];
   const Press press{21.0, 37.0, 5.0, 10.0}, mirrored_press{60 - 21.0, 37.0, 5.0, 10.0};
   const Frame a = ForwardModel(mesh, 5000).solve_frame(press_contact_load(mesh, {press}, sensor.contact), 3.3);
-  const Frame b = ForwardModel(mirrored, 5000).solve_frame(press_contact_load(mirrored, {mirrored_press}, sensor.contact), 3.3);
+  const Frame b =
+      ForwardModel(mirrored, 5000).solve_frame(press_contact_load(mirrored, {mirrored_press}, sensor.contact), 3.3);
   double worst = 0;
   for (int l = 0; l < 16; ++l)
     for (int m = 0; m < 16; ++m) worst = std::max(worst, std::abs(a(l, m) - b(mirror[l], mirror[m])));
@@ -159,7 +162,7 @@ TEST(Adc, QuantisesClipsAndAddsNoise) {
   std::mt19937_64 rng(1);
   apply_adc(adc, frame, rng);
   EXPECT_NEAR(frame(0, 0), std::round(0.1234 / step) * step, 1e-15);
-  EXPECT_EQ(frame(0, 1), 0.0);  // clipped at ground
+  EXPECT_EQ(frame(0, 1), 0.0);           // clipped at ground
   EXPECT_NEAR(frame(1, 0), 3.3, 1e-12);  // clipped at the reference
   // Noise: the sample standard deviation of many readings of a constant is noise_V, within
   // 5 standard errors (σ/√(2n)) plus the quantisation's step/√12.
@@ -214,8 +217,8 @@ TEST(Twin, PressOffAMeshFileSheetIsRejected) {
   MeshOptions options;
   options.element_size_mm = 3;
   write_msh(generate_mesh(default_sensor(), options), dir + "/sheet.msh");
-  const Sensor sensor = parse_sensor(nlohmann::json::parse(R"({"shape": {"type": "mesh", "file": "sheet.msh"}})"),
-                                     "sensor", dir);
+  const Sensor sensor =
+      parse_sensor(nlohmann::json::parse(R"({"shape": {"type": "mesh", "file": "sheet.msh"}})"), "sensor", dir);
   TwinOptions twin_options = exact_twin();
   twin_options.mesh = options;
   const Twin twin(sensor, twin_options);

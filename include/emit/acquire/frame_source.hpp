@@ -8,16 +8,16 @@
 #include <string>
 
 #include "emit/acquire/raw_frame.hpp"
-#include "emit/sensor/sensor.hpp"
 #include "emit/core/types.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
 /// One frame as a source delivers it.
 struct SourceFrame {
-  Frame volts;                    ///< N×N [V], row = grounded electrode, column = sensed electrode
-  std::uint64_t sequence = 0;     ///< as the source numbers frames (0, 1, 2, … for the simulator)
-  double board_time_s = 0;        ///< when the board (or simulator) took it, on the board's clock
+  Frame volts;                 ///< N×N [V], row = grounded electrode, column = sensed electrode
+  std::uint64_t sequence = 0;  ///< as the source numbers frames (0, 1, 2, … for the simulator)
+  double board_time_s = 0;     ///< when the board (or simulator) took it, on the board's clock
   /// When it reached the host: end-to-end latency is measured from here.
   std::chrono::steady_clock::time_point received;
   /// What the board sent (the twin: what its ADC read), as a recording keeps it (recorder.hpp).

@@ -28,7 +28,7 @@ namespace emit {
 
 /// What the decoder has seen since construction.
 struct DecoderStats {
-  std::uint64_t frames = 0;   ///< valid packets delivered
+  std::uint64_t frames = 0;  ///< valid packets delivered
   /// Packets rejected after their sync: impossible header, CRC mismatch or a count ≥ 2^bits.
   std::uint64_t corrupt = 0;
   /// Frames missing from the sequence numbers of delivered frames (wrap-around aware): those the

@@ -28,9 +28,9 @@ constexpr std::size_t recording_header_size = 32;
 
 /// The fields of a recording's file header.
 struct RecordingHeader {
-  int electrode_count = 0;        ///< N, 2..64
-  int adc_bits = 0;               ///< 1..16
-  double vref_V = 0;              ///< > 0
+  int electrode_count = 0;  ///< N, 2..64
+  int adc_bits = 0;         ///< 1..16
+  double vref_V = 0;        ///< > 0
   std::uint64_t start_unix_us = 0;
 };
 

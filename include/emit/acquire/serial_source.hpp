@@ -37,8 +37,8 @@ constexpr unsigned default_serial_baud = 921600;
 
 /// What a serial source has seen beyond the decoder's own stats.
 struct SerialStats {
-  DecoderStats decoder;        ///< frames, corrupt, dropped, garbage bytes (packet_decoder.hpp)
-  std::uint64_t overruns = 0;  ///< frames dropped because next() was not called for too long
+  DecoderStats decoder;           ///< frames, corrupt, dropped, garbage bytes (packet_decoder.hpp)
+  std::uint64_t overruns = 0;     ///< frames dropped because next() was not called for too long
   std::uint64_t disconnects = 0;  ///< times the device went away
   std::uint64_t reconnects = 0;   ///< times it was reopened afterwards
 };

@@ -28,7 +28,7 @@ ContactLawFit fit_contact_law(const std::vector<double>& pressure_N_per_mm2, con
 struct FittedLawCalibration {
   ContactLaw law;
   double rms_N_per_mm2 = 0, max_abs_N_per_mm2 = 0;  ///< the law's pressure − true, over the presses
-  std::size_t presses = 0;                           ///< frames that gave a contact
+  std::size_t presses = 0;                          ///< frames that gave a contact
 };
 /// \param true_pressure_N_per_mm2  one per frame. \throw InvalidInput as fit_contact_law.
 FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, ContactFitter& fitter,

@@ -5,8 +5,8 @@
 /// (Ceres, Levenberg–Marquardt, automatic derivatives).
 #include <vector>
 
-#include "emit/model/pressure.hpp"
 #include "emit/frame/reconstructor.hpp"
+#include "emit/model/pressure.hpp"
 
 namespace emit {
 

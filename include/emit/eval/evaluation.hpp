@@ -1,12 +1,12 @@
 #pragma once
 /// \file evaluation.hpp
-/// The yardstick (paper §3.2; docs/physics.md, "How it is checked"): frames from the twin on a finer, different mesh with the
-/// ADC on, reconstructed, and compared with the presses that made them.
+/// The yardstick (paper §3.2; docs/physics.md, "How it is checked"): frames from the twin on a finer, different mesh
+/// with the ADC on, reconstructed, and compared with the presses that made them.
 #include <cstdint>
 #include <vector>
 
-#include "emit/eval/error_stats.hpp"
 #include "emit/calibrate/pressure_calibration.hpp"
+#include "emit/eval/error_stats.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/twin/twin.hpp"
 

@@ -23,8 +23,8 @@ struct EvalCase {
   std::string name;
   Sensor sensor;
   double spacing_mm = 6, jitter_mm = 2, radius_mm = 5;  ///< the grid of single presses, the indenter
-  std::string paper_position;                          ///< the paper's figure for it, for people
-  bool pressure_and_two_press = true;                  ///< also calibrate pressure and try two fingers
+  std::string paper_position;                           ///< the paper's figure for it, for people
+  bool pressure_and_two_press = true;                   ///< also calibrate pressure and try two fingers
   int lambdas_per_decade = 8;  ///< of the λ sweep (the 32-electrode sheet's operators cost 10× more)
 };
 
@@ -52,7 +52,7 @@ struct MethodEvaluation {
   double lambda2 = 0;  ///< the best of the sweep (linear methods)
   /// Position: the paper's estimate at the best λ² (linear), the fitted contact (fit).
   ErrorStats position;
-  ErrorStats strongest_contact;  ///< the strongest contact's centroid
+  ErrorStats strongest_contact;                    ///< the strongest contact's centroid
   std::optional<double> pressure_error_N_per_mm2;  ///< mean |error| after calibration on separate presses
   std::optional<TwoPressResult> two_press;         ///< matched within 0.4 × 4 radii (linear) or 2 mm (fit)
   double ms_per_frame = 0;                         ///< fit: the grid's frames

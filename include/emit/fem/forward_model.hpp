@@ -1,7 +1,7 @@
 #pragma once
 /// \file forward_model.hpp
-/// The forward model (docs/physics.md, "Forward model"; paper eqs. 1–2): -div(σ ∇u) + g u = g E on the sheet, one electrode grounded,
-/// every other electrode one floating unknown with zero net current, insulating elsewhere.
+/// The forward model (docs/physics.md, "Forward model"; paper eqs. 1–2): -div(σ ∇u) + g u = g E on the sheet, one
+/// electrode grounded, every other electrode one floating unknown with zero net current, insulating elsewhere.
 ///
 /// Per contact it factorises once (electrode 0 grounded) and gets all N groundings from N solves:
 /// for ground l ≠ 0 the solution is u = c·1 + v, with v the electrode-0-grounded solution of a
@@ -11,10 +11,10 @@
 #include <memory>
 #include <optional>
 
+#include "emit/core/types.hpp"
 #include "emit/fem/contact_load.hpp"
 #include "emit/fem/driving_layer.hpp"
 #include "emit/mesh/mesh.hpp"
-#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -1,8 +1,8 @@
 #pragma once
 /// \file stiffness.hpp
 /// P1 stiffness of the probing sheet: K_ij = ∫ σ ∇φ_i·∇φ_j dA.
-#include "emit/mesh/mesh.hpp"
 #include "emit/core/types.hpp"
+#include "emit/mesh/mesh.hpp"
 
 namespace emit {
 

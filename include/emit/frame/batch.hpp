@@ -11,8 +11,9 @@ namespace emit {
 /// Contacts of every frame, in order, with `threads` workers (each frame's contacts are those
 /// one Reconstructor would give). For the linear methods only: contact fitting tracks from
 /// frame to frame and runs in order. \throw InvalidInput for threads < 1 or a bad frame.
-std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model, const LinearCalibration& calibration,
-                                                    const FrameOptions& options, const Frame& reference,
-                                                    const std::vector<Frame>& frames, int threads);
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
+                                                    const LinearCalibration& calibration, const FrameOptions& options,
+                                                    const Frame& reference, const std::vector<Frame>& frames,
+                                                    int threads);
 
 }  // namespace emit

@@ -45,7 +45,7 @@ struct FittedContact {
   double x_std_mm = 0, y_std_mm = 0;  ///< 1σ from the fit's covariance
   double radius_std_mm = 0;
   double conductance_relative_std = 0;
-  double pressure_N_per_mm2 = 0;  ///< from g by the sensor's contact law (paper eq. 2)
+  double pressure_N_per_mm2 = 0;      ///< from g by the sensor's contact law (paper eq. 2)
   double pressure_std_N_per_mm2 = 0;  ///< P ∝ g^(−1/γ): σ_P = P σ_log g / |γ|
 };
 
@@ -67,9 +67,10 @@ class ContactFitter {
   /// not a held disc's), and two presses 6–10 mm apart on the 30 mm sheet as little as 2.4.
   /// Relative to the frame they part: over 5 seeds of the twin, singles at up to 0.5 N/mm² left
   /// at most 2.5e-3 of the frame's RMS beyond the noise, every pair at least 3.5e-3.
-  static constexpr double noise_chi2_per_measurement = 2;  ///< the noise alone: χ²/M = 1 ± 0.09 (M = 240); 2 is 11 of its σ beyond
+  static constexpr double noise_chi2_per_measurement =
+      2;  ///< the noise alone: χ²/M = 1 ± 0.09 (M = 240); 2 is 11 of its σ beyond
   static constexpr double model_error_rms_fraction = 3e-3;  ///< between the two above
-  static constexpr int max_iterations = 50;  ///< of one Levenberg–Marquardt run
+  static constexpr int max_iterations = 50;                 ///< of one Levenberg–Marquardt run
 
   /// Keeps references to all but `options`; they must outlive it. \throw InvalidInput.
   ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
@@ -108,7 +109,8 @@ class ContactFitter {
   void build_atoms();
   bool best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const;
   void add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const;
-  bool fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best, double& best_sq);
+  bool fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best,
+                      double& best_sq);
   void parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2);
 
   const Sensor& sensor_;
@@ -124,7 +126,7 @@ class ContactFitter {
   FitResult result_;
   std::vector<double> covariance_std_;
   Vector residual_, zeros_;
-  Matrix atoms_, atom_gram_;       ///< build_atoms()
+  Matrix atoms_, atom_gram_;  ///< build_atoms()
   std::vector<Disc> atom_discs_;
 };
 

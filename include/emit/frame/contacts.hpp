@@ -10,17 +10,17 @@
 #include <cstdint>
 #include <vector>
 
-#include "emit/mesh/mesh.hpp"
 #include "emit/core/types.hpp"
+#include "emit/mesh/mesh.hpp"
 
 namespace emit {
 
 struct Contact {
-  double x_mm = 0, y_mm = 0;            ///< centroid, weighted by area × weight (see find())
-  double area_mm2 = 0;                   ///< Σ A_k over the contact's elements
-  double pressure_N_per_mm2 = 0;         ///< area-weighted mean pressure
-  double peak_pressure_N_per_mm2 = 0;    ///< largest element pressure
-  double force_N = 0;                    ///< Σ P_k A_k
+  double x_mm = 0, y_mm = 0;           ///< centroid, weighted by area × weight (see find())
+  double area_mm2 = 0;                 ///< Σ A_k over the contact's elements
+  double pressure_N_per_mm2 = 0;       ///< area-weighted mean pressure
+  double peak_pressure_N_per_mm2 = 0;  ///< largest element pressure
+  double force_N = 0;                  ///< Σ P_k A_k
   /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
   double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;
   int element_count = 0;
@@ -55,7 +55,7 @@ class ContactFinder {
   std::vector<Vector2> centroids_mm_;
   std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
   std::vector<int> stack_;             ///< scratch
-  std::vector<Contact> contacts_;   ///< output, capacity #F
+  std::vector<Contact> contacts_;      ///< output, capacity #F
   std::vector<int> peak_elements_;
   std::vector<Vector2> peaks_;
 };

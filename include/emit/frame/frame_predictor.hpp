@@ -25,8 +25,8 @@ class FramePredictor {
 
   /// The frame (N×N, ground-major, already sized) of a contact given as touched triangles and
   /// their 3×3 contact matrices [S], with the driving layer at `drive_voltage_V`.
-  void predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
-               double drive_voltage_V, Frame& frame);
+  void predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S, double drive_voltage_V,
+               Frame& frame);
 
   /// After predict(): the frame's derivative along a change dC of the contact matrices of the
   /// same triangles (d_local_S[i] for triangles[i]), by differentiating the Woodbury solve and
@@ -35,7 +35,8 @@ class FramePredictor {
 
  private:
   void gather_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S);
-  void assemble_on_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S, Matrix& out) const;
+  void assemble_on_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
+                         Matrix& out) const;
   const Mesh& mesh_;
   const DenseGreenFunction& green_;
   std::vector<int> patch_of_dof_;  ///< −1 off the patch

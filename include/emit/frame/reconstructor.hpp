@@ -1,15 +1,15 @@
 #pragma once
 /// \file reconstructor.hpp
-/// The online half (docs/architecture.md, the online line): per frame, δV = V − V_ref → δφ = R·δV → threshold → pressure
-/// (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
+/// The online half (docs/architecture.md, the online line): per frame, δV = V − V_ref → δφ = R·δV → threshold →
+/// pressure (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
 #include <cstdint>
 #include <vector>
 
 #include <variant>
 
-#include "emit/model/calibration.hpp"
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/contacts.hpp"
+#include "emit/model/calibration.hpp"
 #include "emit/model/reconstruction_model.hpp"
 
 namespace emit {
@@ -48,8 +48,8 @@ class Reconstructor {
   /// N×N; the frame's values are not checked here (the readers check them).
   const std::vector<Contact>& process(const Frame& frame);
 
-  const Vector& image() const { return dphi_; }       ///< δφ per element [V] (0 while tracking holds)
-  const Vector& pressure() const { return pressure_; } ///< per element [N/mm²], 0 below threshold
+  const Vector& image() const { return dphi_; }         ///< δφ per element [V] (0 while tracking holds)
+  const Vector& pressure() const { return pressure_; }  ///< per element [N/mm²], 0 below threshold
   const Mesh& mesh() const { return model_.mesh; }
 
  private:

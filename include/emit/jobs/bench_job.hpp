@@ -14,11 +14,11 @@
 namespace emit {
 
 struct BenchJob {
-  std::string sensor_path;                          ///< empty: the built-in default sensor
+  std::string sensor_path;                                ///< empty: the built-in default sensor
   std::vector<int> triangles{1500, 6000, 24000, 100000};  ///< about, per case
   std::vector<int> electrodes{16, 32};
-  bool baselines = true;      ///< the K×K normal equations, up to 7,000 triangles
-  bool brute_force = false;   ///< the brute-force Jacobian, up to 2,500 triangles
+  bool baselines = true;     ///< the K×K normal equations, up to 7,000 triangles
+  bool brute_force = false;  ///< the brute-force Jacobian, up to 2,500 triangles
 };
 
 struct BenchRow {
@@ -31,9 +31,9 @@ struct BenchRow {
 };
 
 /// Calls `on_row` as each case finishes (sizes within an electrode count, electrode counts in
-/// turn). \return how many cases failed (their rows say why). \throw InvalidInput (a bad sensor, a mesh-file sensor with
-/// another electrode count), IoError (no child process).
+/// turn). \return how many cases failed (their rows say why). \throw InvalidInput (a bad sensor, a mesh-file sensor
+/// with another electrode count), IoError (no child process).
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row,
-                          const Progress& progress = {});
+                  const Progress& progress = {});
 
 }  // namespace emit

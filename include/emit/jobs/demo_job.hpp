@@ -22,10 +22,10 @@ struct DemoReport {
   double twin_seconds = 0, model_seconds = 0;
   long triangles = 0, fit_mesh_nodes = 0;
   FitCalibration calibration;
-  PressSequence presses;                      ///< the frames' true presses
-  std::vector<std::vector<Contact>> fitted;   ///< per frame, by contact fitting (calibrated)
-  std::vector<std::vector<Contact>> paper;    ///< per frame, by the paper's method
-  std::string calibration_path;               ///< where the calibration went
+  PressSequence presses;                     ///< the frames' true presses
+  std::vector<std::vector<Contact>> fitted;  ///< per frame, by contact fitting (calibrated)
+  std::vector<std::vector<Contact>> paper;   ///< per frame, by the paper's method
+  std::string calibration_path;              ///< where the calibration went
 };
 
 /// \param out_dir  created if need be. \throw IoError, InvalidInput, SolverError.

@@ -23,13 +23,13 @@
 namespace emit {
 
 struct LiveJob {
-  std::string source = "sim";  ///< live/open_source.hpp
-  std::string serve;           ///< HOST:PORT for the viewer; empty: none
-  std::string contacts_path;   ///< JSON Lines; "-": standard output; empty: none
-  std::string record_path;     ///< empty: no recording
-  std::string sensor_path;     ///< empty: the built-in default sensor
+  std::string source = "sim";    ///< live/open_source.hpp
+  std::string serve;             ///< HOST:PORT for the viewer; empty: none
+  std::string contacts_path;     ///< JSON Lines; "-": standard output; empty: none
+  std::string record_path;       ///< empty: no recording
+  std::string sensor_path;       ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated
-  std::string cache_dir;       ///< the operator cache; empty: none
+  std::string cache_dir;         ///< the operator cache; empty: none
   Method method = Method::fit;
   std::uint64_t frames = 0;  ///< stop after this many reconstructed frames (0: no limit)
   double seconds = 0;        ///< stop after this long (0: no limit)

@@ -9,11 +9,11 @@
 namespace emit {
 
 struct MeshJob {
-  std::string sensor_path;  ///< empty: the built-in default sensor
-  std::string out_path;     ///< .msh to write
-  bool twin = false;        ///< the twin's finer, electrode-graded mesh
+  std::string sensor_path;     ///< empty: the built-in default sensor
+  std::string out_path;        ///< .msh to write
+  bool twin = false;           ///< the twin's finer, electrode-graded mesh
   double element_size_mm = 0;  ///< > 0: overrides the sensor's
-  int seed = 1;             ///< the twin mesh's seed
+  int seed = 1;                ///< the twin mesh's seed
 };
 
 struct MeshReport {

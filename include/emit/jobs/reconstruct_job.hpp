@@ -20,10 +20,10 @@ struct ReconstructJob {
   std::string calibration_path;  ///< empty: uncalibrated
   std::string images_dir;        ///< empty: no pictures
   Method method = Method::fit;
-  double lambda2 = 0;            ///< 0: the method's
+  double lambda2 = 0;  ///< 0: the method's
   double threshold_fraction = 0.5, min_contact_area_mm2 = 0;
-  std::string cache_dir;         ///< empty: no operator cache
-  int threads = 1;               ///< the linear methods' batch is split across them
+  std::string cache_dir;  ///< empty: no operator cache
+  int threads = 1;        ///< the linear methods' batch is split across them
 };
 
 struct ReconstructReport {

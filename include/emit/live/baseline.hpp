@@ -12,7 +12,7 @@
 namespace emit {
 
 struct BaselineOptions {
-  int capture_frames = 10;    ///< frames averaged at start and on recapture()
+  int capture_frames = 10;  ///< frames averaged at start and on recapture()
   /// Weight of each untouched frame in the drift average: 0.01 follows drift with a time constant
   /// of ~100 frames (2 s at 50 frames/s), slow beside a finger landing.
   double drift_rate = 0.01;

@@ -22,14 +22,14 @@ namespace emit {
 
 /// One frame as the loop publishes it; the pointers are valid during publish() only.
 struct LiveFrame {
-  std::uint64_t index = 0;         ///< frames the loop has handled before this one (capture included)
-  std::uint64_t sequence = 0;      ///< the source's number
-  bool capturing_baseline = false; ///< no reference yet, or a re-capture under way: no contacts
+  std::uint64_t index = 0;          ///< frames the loop has handled before this one (capture included)
+  std::uint64_t sequence = 0;       ///< the source's number
+  bool capturing_baseline = false;  ///< no reference yet, or a re-capture under way: no contacts
   std::uint64_t baseline_captures = 0;
   const std::vector<Contact>* contacts = nullptr;
   const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
-  double frames_per_s = 0;         ///< recent rate (over about the last second)
-  double latency_s = 0;            ///< the previous frame's end-to-end latency
+  double frames_per_s = 0;                     ///< recent rate (over about the last second)
+  double latency_s = 0;                        ///< the previous frame's end-to-end latency
 };
 
 /// Receives every frame the loop handles (the viewer's server). Called on the loop's thread; it
@@ -52,11 +52,11 @@ struct LiveOptions {
 };
 
 struct LiveStats {
-  std::uint64_t frames = 0;        ///< reconstructed (and written, and published)
+  std::uint64_t frames = 0;  ///< reconstructed (and written, and published)
   std::uint64_t capture_frames = 0;
-  double seconds = 0;              ///< from the first reconstructed frame to the last
+  double seconds = 0;  ///< from the first reconstructed frame to the last
   double frames_per_s = 0;
-  LatencyStats latency;            ///< end to end, per reconstructed frame
+  LatencyStats latency;  ///< end to end, per reconstructed frame
 };
 
 class LiveLoop {

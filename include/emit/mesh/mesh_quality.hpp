@@ -8,7 +8,7 @@ namespace emit {
 struct MeshQuality {
   Index node_count = 0;
   Index triangle_count = 0;
-  double min_angle_deg = 0;   ///< smallest interior angle over all triangles
+  double min_angle_deg = 0;  ///< smallest interior angle over all triangles
   double mean_edge_mm = 0;
   double min_area_mm2 = 0;
   double total_area_mm2 = 0;

@@ -7,9 +7,9 @@
 #include <functional>
 #include <string>
 
+#include "emit/mesh/mesh.hpp"
 #include "emit/model/green_function.hpp"
 #include "emit/model/sheet_correction.hpp"
-#include "emit/mesh/mesh.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {

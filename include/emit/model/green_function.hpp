@@ -19,10 +19,12 @@ namespace emit {
 
 struct DenseGreenFunction {
   ElectrodeDofs dofs;
-  Matrix G0;  ///< dof_count × (dof_count, or the solved columns only) [Ω]
+  Matrix G0;                       ///< dof_count × (dof_count, or the solved columns only) [Ω]
   std::vector<int> column_of_dof;  ///< G0's column of each dof (−1: not solved); empty: the dof itself
 
-  auto column(int dof) const { return G0.col(column_of_dof.empty() ? dof : column_of_dof[static_cast<std::size_t>(dof)]); }
+  auto column(int dof) const {
+    return G0.col(column_of_dof.empty() ? dof : column_of_dof[static_cast<std::size_t>(dof)]);
+  }
   double at(int row_dof, int column_dof) const {
     return G0(row_dof, column_of_dof.empty() ? column_dof : column_of_dof[static_cast<std::size_t>(column_dof)]);
   }

@@ -7,9 +7,9 @@
 /// Element touching the grounded electrode: its nodes on electrode l cannot be at 1 V and 0 V at
 /// once; we hold only its other nodes at 1 V (the column is the response of the part of the
 /// element that can rise). An element with every node on electrode l has a zero column.
+#include "emit/core/types.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/model/measurements.hpp"
-#include "emit/core/types.hpp"
 
 namespace emit {
 

@@ -25,7 +25,8 @@ struct LinearCalibration {
   /// pressure_k = pressure_N_per_mm2(δφ_k) there, 0 elsewhere. The power is taken in single
   /// precision: twice as fast, and its 1e-7 is far below any calibration's error. Allocates
   /// nothing when the outputs already have the image's size.
-  void pressure_map(const Vector& dphi_V, double min_dphi_V, Vector& pressure, std::vector<std::uint8_t>& selected) const;
+  void pressure_map(const Vector& dphi_V, double min_dphi_V, Vector& pressure,
+                    std::vector<std::uint8_t>& selected) const;
 };
 
 }  // namespace emit

@@ -1,15 +1,15 @@
 #pragma once
 /// \file reconstruction_model.hpp
-/// The offline half of reconstruction (docs/architecture.md, the offline line): sensor → mesh → Jacobian → operator, built
-/// once per sensor and method, with the operator cached on disk.
+/// The offline half of reconstruction (docs/architecture.md, the offline line): sensor → mesh → Jacobian → operator,
+/// built once per sensor and method, with the operator cached on disk.
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "emit/mesh/mesh.hpp"
-#include "emit/model/pressure.hpp"
 #include "emit/model/compact_operator.hpp"
 #include "emit/model/measurements.hpp"
+#include "emit/model/pressure.hpp"
 #include "emit/model/reconstruction_operator.hpp"
 #include "emit/sensor/sensor.hpp"
 

@@ -6,9 +6,9 @@
 /// an (M×M) solve for M measurements. Per frame it is one matrix–vector product.
 #include <string>
 
+#include "emit/core/types.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/model/compact_operator.hpp"
-#include "emit/core/types.hpp"
 
 namespace emit {
 
@@ -24,7 +24,7 @@ struct OperatorOptions {
   /// scale; the same procedure on ours (`emit eval`) puts the optimum near 10⁴ on the 60 and
   /// 30 mm sheets (~6–8k triangles), so that is the default.
   double lambda2 = 1.0e4;
-  double noser_exponent = 0.5;   ///< p for the NOSER prior
+  double noser_exponent = 0.5;  ///< p for the NOSER prior
   /// Per frame, R is applied truncated to its singular values above this fraction of the
   /// largest (compact_operator.hpp); 0 keeps them all.
   double rank_cutoff = 1.0 / 4096;
@@ -64,9 +64,9 @@ class OperatorFamily {
   Eigen::MatrixXf prior_inverse_jt_times_in_float(const Matrix& X) const;
 
   Prior prior_;
-  Matrix J_;           ///< M by #F, kept for Q = I (where Q⁻¹Jᵀ = Jᵀ)
-  Matrix QiJt_;        ///< Q⁻¹Jᵀ, #F by M, for the other priors
-  Matrix U_;           ///< M by M
+  Matrix J_;     ///< M by #F, kept for Q = I (where Q⁻¹Jᵀ = Jᵀ)
+  Matrix QiJt_;  ///< Q⁻¹Jᵀ, #F by M, for the other priors
+  Matrix U_;     ///< M by M
   Vector sigma_;
   Matrix basis_gram_;  ///< (Q⁻¹JᵀU)ᵀ(Q⁻¹JᵀU) for the other priors (diag(σ) for Q = I)
 };

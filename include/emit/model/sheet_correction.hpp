@@ -9,15 +9,15 @@
 /// sheet_calibration.hpp.
 #include <array>
 
-#include "emit/mesh/mesh.hpp"
 #include "emit/core/types.hpp"
+#include "emit/mesh/mesh.hpp"
 
 namespace emit {
 
 struct SheetCorrection {
   static constexpr int terms = 5;
   Vector2 lower_mm = Vector2::Zero(), upper_mm = Vector2::Ones();  ///< the box (u, v) is scaled on
-  std::array<double, terms> log_conductance{};                    ///< θ
+  std::array<double, terms> log_conductance{};                     ///< θ
 
   /// The uncorrected sheet over the mesh's bounding box.
   static SheetCorrection identity_over(const Mesh& mesh);

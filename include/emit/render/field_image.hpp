@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "emit/core/types.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/render/image.hpp"
-#include "emit/core/types.hpp"
 
 namespace emit {
 
@@ -19,9 +19,9 @@ struct Circle {
 };
 
 struct FieldImageOptions {
-  int width_px = 640;            ///< the image's width; the height follows the sheet's aspect
-  std::string title;             ///< drawn at the top
-  std::string unit = "V";        ///< shown on the colour bar
+  int width_px = 640;      ///< the image's width; the height follows the sheet's aspect
+  std::string title;       ///< drawn at the top
+  std::string unit = "V";  ///< shown on the colour bar
   double min_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's minimum
   double max_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's maximum
 };

@@ -59,7 +59,6 @@ Rgb series_colour(int i);
 ///
 /// \throw InvalidInput if a series' x and y (or non-empty point_labels) differ in size, if no
 /// series has a drawable point, or if the image is too small to hold a plot area.
-Image render_line_plot(const std::vector<PlotSeries>& series, const PlotOptions& options,
-                       PlotLayout* layout = nullptr);
+Image render_line_plot(const std::vector<PlotSeries>& series, const PlotOptions& options, PlotLayout* layout = nullptr);
 
 }  // namespace emit

@@ -12,8 +12,7 @@ namespace emit {
 /// spaced with electrode 0 at angle 0; a polygon evenly spaced by arc length, electrode 0 centred
 /// half a spacing after points[0].
 /// \throw InvalidInput if count < 3, or a rectangle's count is not a multiple of 4.
-std::vector<Electrode> default_electrode_layout(const Shape& shape, const Border& border, int count,
-                                                double width_mm);
+std::vector<Electrode> default_electrode_layout(const Shape& shape, const Border& border, int count, double width_mm);
 
 /// Electrodes from explicit centres: each centre is projected on the border.
 /// \throw InvalidInput ("electrodes[i]: …") if a centre is off the border by more than

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "emit/sensor/border.hpp"
 #include "emit/core/types.hpp"
+#include "emit/sensor/border.hpp"
 
 namespace emit {
 

@@ -24,8 +24,7 @@ namespace emit {
 
 /// Parse and validate. `base_dir` resolves a relative mesh file path.
 /// \throw InvalidInput with a message of the form "<where>: <key>: <what is wrong>".
-Sensor parse_sensor(const nlohmann::json& j, const std::string& where = "sensor",
-                    const std::string& base_dir = ".");
+Sensor parse_sensor(const nlohmann::json& j, const std::string& where = "sensor", const std::string& base_dir = ".");
 
 /// Read a sensor file. \throw IoError if unreadable, InvalidInput if malformed or invalid.
 Sensor load_sensor(const std::string& path);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "emit/fem/contact_load.hpp"
-#include "emit/sensor/sensor.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 

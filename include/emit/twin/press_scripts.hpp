@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "emit/sensor/sensor.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -15,7 +15,7 @@ struct PressStyle {
   double radius_mm = 5.0;
   double min_force_N = 10.0;  ///< forces are drawn uniformly from [min_force_N, max_force_N]
   double max_force_N = 10.0;
-  double margin_mm = 5.0;     ///< smallest distance from a press centre to the border
+  double margin_mm = 5.0;  ///< smallest distance from a press centre to the border
   std::uint64_t seed = 1;
 };
 
@@ -24,8 +24,8 @@ PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter
 /// One press per frame at a uniformly random place.
 PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& style);
 /// Two simultaneous presses per frame, their centres min..max_separation_mm apart.
-PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm,
-                                double max_separation_mm, const PressStyle& style);
+PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm, double max_separation_mm,
+                                const PressStyle& style);
 /// One press moving in a straight line from `from` to `to` over `frames` frames.
 PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
                             const PressStyle& style);
@@ -34,7 +34,7 @@ PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& fro
 struct PressScript {
   enum class Kind { none, grid, random, two_finger, moving };
   Kind kind = Kind::none;
-  int frames = 20;                 ///< none (no-contact references), random, two_finger, moving
+  int frames = 20;                                        ///< none (no-contact references), random, two_finger, moving
   double spacing_mm = 10, jitter_mm = 0;                  ///< grid
   double min_separation_mm = 12, max_separation_mm = 40;  ///< two_finger
   Vector2 from_mm{0, 0}, to_mm{0, 0};                     ///< moving

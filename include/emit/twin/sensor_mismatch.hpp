@@ -12,7 +12,7 @@ namespace emit {
 
 struct Mismatch {
   std::string name;
-  Sensor twin_sensor;       ///< what the twin simulates
+  Sensor twin_sensor;  ///< what the twin simulates
   TwinOptions twin_options;
 };
 

@@ -2,8 +2,8 @@
 /// \file sim_source.hpp
 /// The digital twin as a live source: a scripted finger presses the sheet, the twin computes each
 /// frame (with the ADC's noise) on a thread of its own, paced at SourceOptions::frames_per_s, and
-/// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame `sequence` is a pure function of the
-/// script (presses_of), so tests can compare contacts with the truth.
+/// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame
+/// `sequence` is a pure function of the script (presses_of), so tests can compare contacts with the truth.
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -24,8 +24,8 @@ struct SimScript {
     fixed,   ///< one press held at `fixed`
   };
   Kind kind = Kind::loop;
-  Press fixed{30, 30, 5, 10};  ///< kind fixed: where and how hard
-  double radius_mm = 5;        ///< the indenter of loop and random
+  Press fixed{30, 30, 5, 10};               ///< kind fixed: where and how hard
+  double radius_mm = 5;                     ///< the indenter of loop and random
   double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
 };
 

@@ -1,26 +1,26 @@
 #pragma once
 /// \file twin.hpp
 /// The digital twin: presses → contact conductance (resolved inside elements) → one solve per
-/// grounding → frame → ADC. It meshes the sheet finer than the reconstruction does (docs/physics.md, "The digital twin":
-/// no inverse crime) and grades the mesh into the electrodes' ends.
+/// grounding → frame → ADC. It meshes the sheet finer than the reconstruction does (docs/physics.md, "The digital
+/// twin": no inverse crime) and grades the mesh into the electrodes' ends.
 #include <cstdint>
 #include <optional>
 #include <random>
 
 #include "emit/fem/forward_model.hpp"
 #include "emit/mesh/generate_mesh.hpp"
-#include "emit/sensor/sensor.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
 struct TwinOptions {
-  int mesh_seed = 1;                 ///< another seed, another (equally fine) mesh
-  std::optional<MeshOptions> mesh;   ///< overrides twin_mesh_options(sensor, mesh_seed)
-  bool adc = true;                   ///< quantise, add noise and clip as the sensor's ADC does
-  std::uint64_t noise_seed = 1;      ///< seed of the ADC's Gaussian noise
-  int quadrature_levels = 6;         ///< subdivision depth on triangles a disc's edge cuts
-  int dead_electrode = -1;           ///< simulate this electrode disconnected (electrode_health.hpp)
+  int mesh_seed = 1;                ///< another seed, another (equally fine) mesh
+  std::optional<MeshOptions> mesh;  ///< overrides twin_mesh_options(sensor, mesh_seed)
+  bool adc = true;                  ///< quantise, add noise and clip as the sensor's ADC does
+  std::uint64_t noise_seed = 1;     ///< seed of the ADC's Gaussian noise
+  int quadrature_levels = 6;        ///< subdivision depth on triangles a disc's edge cuts
+  int dead_electrode = -1;          ///< simulate this electrode disconnected (electrode_health.hpp)
   /// A sheet that is not uniform: the sheet resistance varies linearly along x by ± this
   /// fraction across the sheet (0.2: from 0.8·Rs at the left to 1.2·Rs at the right).
   double sheet_resistance_variation = 0;
