@@ -90,7 +90,7 @@ void add_demo_command(CLI::App& app) {
   cmd->add_option("--serve", a->serve, "Where the live viewer is served (HOST:PORT; port 0 picks a free one)")
       ->capture_default_str();
   cmd->add_option("--seconds", a->live_seconds, "How long the live part runs (Ctrl-C stops sooner)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   cmd->callback([a] { run_demo(*a); });
 }

@@ -96,12 +96,12 @@ void add_live_command(CLI::App& app) {
   cmd->add_option("--calibration", job.calibration_path, "Pressure calibration (JSON from 'emit calibrate')")
       ->check(CLI::ExistingFile);
   cmd->add_option("--frames", job.frames, "Stop after this many reconstructed frames (default: run until Ctrl-C)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--seconds", job.seconds, "Stop after this many seconds (default: run until Ctrl-C)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--fps", job.frames_per_s,
                   "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_number())
       ->capture_default_str();
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");

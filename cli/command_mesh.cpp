@@ -14,7 +14,10 @@ void add_mesh_command(CLI::App& app) {
   cmd->add_option("--out", job->out_path, "Mesh file to write (.msh)")->required();
   cmd->add_flag("--twin", job->twin, "Mesh at the twin's finer, electrode-graded resolution");
   cmd->add_option("--element-size-mm", job->element_size_mm, "Override the sensor's element size")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
+  cmd->add_option("--max-triangles", job->max_triangles,
+                  "Refuse beyond this many triangles (default: the sensor's, 1e6)")
+      ->check(positive_number());
   cmd->add_option("--seed", job->seed, "Twin mesh seed (another seed, another mesh)");
   cmd->callback([job] {
     const MeshReport r = run_mesh_job(*job);

@@ -53,11 +53,11 @@ void add_reconstruct_command(CLI::App& app) {
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
   cmd->add_option("--lambda2", job.lambda2, "Regularisation lambda^2 (default: the method's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--threshold", job.threshold_fraction, "Threshold as a fraction of the image's maximum")
       ->capture_default_str();
   cmd->add_option("--min-area-mm2", job.min_contact_area_mm2, "Drop contacts smaller than this")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--images", job.images_dir, "Write a pressure map per frame (PNG) into this folder");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");

@@ -80,10 +80,10 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
   cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger and moving scripts")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--spacing-mm", script.spacing_mm, "Grid pitch")->check(CLI::PositiveNumber);
-  cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(CLI::PositiveNumber);
+      ->check(positive_number());
+  cmd->add_option("--spacing-mm", script.spacing_mm, "Grid pitch")->check(positive_number());
+  cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(non_negative_number());
+  cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());
   cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly")->delimiter(',');
   cmd->add_option("--separation-mm", a->separation_mm, "Two-finger separation range MIN,MAX")->delimiter(',');
   cmd->add_option("--from", a->from_mm, "Moving press start X,Y (mm)")->delimiter(',');
@@ -92,13 +92,13 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--seed", job.twin.noise_seed, "Seed of the scripts' randomness and of the ADC noise");
   cmd->add_option("--mesh-seed", job.twin.mesh_seed, "Seed of the twin's mesh");
   cmd->add_option("--noise-V", job.noise_V, "Override the ADC noise (standard deviation, V)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_flag("--exact", a->exact, "No ADC: exact, noise-free volts");
   cmd->add_option("--sheet-variation", job.twin.sheet_resistance_variation,
                   "Sheet resistance varying linearly along x by +/- this fraction (e.g. 0.2)")
       ->check(CLI::Range(-0.9, 0.9));
   cmd->add_option("--dead-electrode", job.twin.dead_electrode, "Simulate this electrode disconnected")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_integer());
   cmd->add_flag("--table", a->print_table, "Print every frame as an N x N table instead of a summary");
   cmd->add_option("--images", job.images_dir, "Write a PNG of the sheet's potential per frame into this folder");
   cmd->callback([a] { run_simulate(*a); });

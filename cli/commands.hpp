@@ -31,6 +31,17 @@ void run_live(const LiveJob& job);
 /// every ~10 % otherwise; none for fewer than `min_count` items), warnings as "emit: warning: …".
 Progress stderr_progress(long min_count = 0);
 
+/// Validators whose messages name the rule and the value ("must be a positive number, got \"0\""),
+/// not CLI11's range of doubles.
+const CLI::Validator& positive_number();
+const CLI::Validator& non_negative_number();
+const CLI::Validator& positive_integer();
+const CLI::Validator& non_negative_integer();
+
+/// The one-line message for a command line CLI11 refused: CLI11's own, except for a command that
+/// does not exist ("unknown command \"reconstuct\" (did you mean \"reconstruct\"?)").
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, char** argv);
+
 /// --method's choices: every method's name (model/method.hpp).
 std::vector<std::string> method_names();
 /// The operator cache: none with --no-cache, else --cache or the default folder.

@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "commands.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/model/operator_cache.hpp"
 
 namespace emit::cli {
@@ -28,6 +30,91 @@ Progress stderr_progress(long min_count) {
     state->last_percent = done == total ? -1 : percent;
   };
   return progress;
+}
+
+namespace {
+
+/// A validator accepting a whole number (integer) or any number, and `rule` holding for it.
+CLI::Validator number_validator(const std::string& name, bool integer, bool (*rule)(double), const std::string& what) {
+  return CLI::Validator(
+      [=](const std::string& text) -> std::string {
+        double value = 0;
+        char* end = nullptr;
+        value = std::strtod(text.c_str(), &end);
+        const bool whole = end != text.c_str() && *end == '\0' && std::isfinite(value);
+        if (whole && (!integer || value == std::floor(value)) && rule(value)) return {};
+        return "must be " + what + ", got " + quote_input(text);
+      },
+      name);
+}
+
+}  // namespace
+
+const CLI::Validator& positive_number() {
+  static const CLI::Validator v = number_validator(
+      "POSITIVE", false, [](double x) { return x > 0; }, "a positive number");
+  return v;
+}
+
+const CLI::Validator& non_negative_number() {
+  static const CLI::Validator v = number_validator(
+      "NONNEGATIVE", false, [](double x) { return x >= 0; }, "a number 0 or larger");
+  return v;
+}
+
+const CLI::Validator& positive_integer() {
+  static const CLI::Validator v = number_validator(
+      "POSITIVE", true, [](double x) { return x > 0; }, "a whole number 1 or larger");
+  return v;
+}
+
+const CLI::Validator& non_negative_integer() {
+  static const CLI::Validator v = number_validator(
+      "NONNEGATIVE", true, [](double x) { return x >= 0; }, "a whole number 0 or larger");
+  return v;
+}
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, char** argv) {
+  if (app.get_subcommands().empty()) {
+    // The first word that is not an option or an option's value: the command the user meant.
+    for (int i = 1; i < argc; ++i) {
+      const std::string word = argv[i];
+      if (word == "--threads") {
+        ++i;
+        continue;
+      }
+      if (word.rfind('-', 0) == 0) continue;
+      std::string nearest;
+      std::size_t best = 3;  // at most two edits away
+      for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; })) {
+        if (word == command->get_name()) return error.what();  // a command: the error is another
+        if (const std::size_t d = edit_distance(word, command->get_name()); d < best)
+          best = d, nearest = command->get_name();
+      }
+      return "unknown command " + quote_input(word) + (nearest.empty() ? "" : " (did you mean \"" + nearest + "\"?)");
+    }
+    return "no command given: try 'emit demo'";
+  }
+  return error.what();
 }
 
 std::vector<std::string> method_names() {

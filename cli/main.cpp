@@ -5,22 +5,25 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/threads.hpp"
 
 namespace {
 
 int run(int argc, char** argv) {
+  emit::remove_temporary_files_on_signals();  // Ctrl-C leaves no hidden half-written file behind
   CLI::App app{
       "emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
       "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
   app.name("emit");
   app.set_version_flag("--version", "emit 0.1.0");
   app.require_subcommand(1);
+  app.fallthrough();  // --threads after the command, too
   int threads = 1;
   emit::set_thread_count(threads);
   app.add_option("--threads", threads, "threads for the linear algebra (default 1)")
-      ->check(CLI::PositiveNumber)
+      ->check(emit::cli::positive_integer())
       ->each([](const std::string& count) { emit::set_thread_count(std::stoi(count)); });
   emit::cli::add_mesh_command(app);
   emit::cli::add_simulate_command(app);
@@ -39,7 +42,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "emit: %s (see 'emit --help')\n", e.what());
+    std::fprintf(stderr, "emit: %s (see 'emit --help')\n", emit::cli::parse_error_message(app, e, argc, argv).c_str());
     return 2;
   } catch (const emit::Error& e) {
     std::fprintf(stderr, "emit: %s\n", e.what());

@@ -31,34 +31,43 @@ bool row_at_full_scale(const Frame& frame, Index l, const AdcSpec& adc, double s
 
 }  // namespace
 
-std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames, const AdcSpec& adc) {
-  const double step = rail_tolerance_V(adc);
-  std::vector<DeadElectrode> dead;
-  if (frames.empty()) return dead;
-  const Index N = frames[0].rows();
-  int with_signal = 0;
-  std::vector<int> zero_columns(static_cast<std::size_t>(N), 0), full_rows(static_cast<std::size_t>(N), 0);
-  for (const Frame& frame : frames) {
-    if (!has_signal(frame, step)) continue;
-    ++with_signal;
-    for (Index e = 0; e < N; ++e) {
-      zero_columns[e] += column_at_zero(frame, e, step);
-      full_rows[e] += row_at_full_scale(frame, e, adc, step);
-    }
+ElectrodeHealthTally::ElectrodeHealthTally(int electrode_count, const AdcSpec& adc)
+    : adc_(adc),
+      tolerance_V_(rail_tolerance_V(adc)),
+      zero_columns_(static_cast<std::size_t>(electrode_count), 0),
+      full_rows_(static_cast<std::size_t>(electrode_count), 0) {}
+
+void ElectrodeHealthTally::add(const Frame& frame) {
+  if (!has_signal(frame, tolerance_V_)) return;
+  ++with_signal_;
+  for (Index e = 0; e < frame.rows(); ++e) {
+    zero_columns_[static_cast<std::size_t>(e)] += column_at_zero(frame, e, tolerance_V_);
+    full_rows_[static_cast<std::size_t>(e)] += row_at_full_scale(frame, e, adc_, tolerance_V_);
   }
-  if (with_signal == 0) return dead;
-  const std::string in_all = " in all " + std::to_string(with_signal) + " frames with signal";
-  for (Index e = 0; e < N; ++e) {
-    if (zero_columns[e] == with_signal)
+}
+
+std::vector<DeadElectrode> ElectrodeHealthTally::dead() const {
+  std::vector<DeadElectrode> dead;
+  if (with_signal_ == 0) return dead;
+  const std::string in_all = " in all " + std::to_string(with_signal_) + " frames with signal";
+  for (std::size_t e = 0; e < zero_columns_.size(); ++e) {
+    if (zero_columns_[e] == with_signal_)
       dead.push_back({static_cast<int>(e), "reads 0 V as the sensed electrode" + in_all});
-    else if (full_rows[e] == with_signal)
+    else if (full_rows_[e] == with_signal_)
       dead.push_back({static_cast<int>(e), "grounds nothing (its row reads full scale)" + in_all});
   }
   return dead;
 }
 
+std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames, const AdcSpec& adc) {
+  if (frames.empty()) return {};
+  ElectrodeHealthTally tally(static_cast<int>(frames[0].rows()), adc);
+  for (const Frame& frame : frames) tally.add(frame);
+  return tally.dead();
+}
+
 void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
-                         const std::string& source) {
+                         const std::string& source, std::size_t first_frame) {
   const double step = rail_tolerance_V(adc);
   for (std::size_t f = 0; f < frames.size(); ++f)
     for (Index l = 0; l < frames[f].rows(); ++l) {
@@ -66,11 +75,27 @@ void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, c
       if (has_signal(frames[f], step) && row_at_full_scale(frames[f], l, adc, step)) {
         char value[32];
         std::snprintf(value, sizeof value, "%.4g", frames[f](l, l == 0 ? 1 : 0));
-        throw InvalidInput(source + ": frame " + std::to_string(f) + ": ground " + std::to_string(l) + " reads " +
-                           value + " V (full scale) on every electrode: was electrode " + std::to_string(l) +
-                           " grounded?");
+        throw InvalidInput(source + ": frame " + std::to_string(first_frame + f) + ": ground " + std::to_string(l) +
+                           " reads " + value + " V (full scale) on every electrode: was electrode " +
+                           std::to_string(l) + " grounded?");
       }
     }
 }
+
+void check_readings_in_range(const Frame& frame, const AdcSpec& adc, const std::string& where) {
+  const double tolerance = rail_tolerance_V(adc);
+  for (Index l = 0; l < frame.rows(); ++l)
+    for (Index m = 0; m < frame.cols(); ++m) {
+      const double v = frame(l, m);
+      if (v >= -tolerance && v <= adc.vref_V + tolerance) continue;
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    ": ground %lld, sense %lld reads %.4g V, outside the ADC's 0 to %.4g V (sensor \"adc\")",
+                    static_cast<long long>(l), static_cast<long long>(m), v, adc.vref_V);
+      throw InvalidInput(where + text);
+    }
+}
+
+bool looks_pressed(const Frame& frame, const AdcSpec& adc) { return has_signal(frame, rail_tolerance_V(adc)); }
 
 }  // namespace emit

@@ -1,14 +1,16 @@
 #include "emit/io/frames_csv.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <string_view>
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 
 namespace emit {
 
@@ -29,40 +31,49 @@ void write_frames_csv(const std::string& path, const std::vector<Frame>& frames)
   file.commit();
 }
 
-std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path + ": cannot open frames file (" + std::strerror(errno) + ")");
-  const Index values_per_frame = static_cast<Index>(electrode_count) * electrode_count;
-  std::vector<Frame> frames;
-  std::string line;
-  for (int line_number = 1; std::getline(in, line); ++line_number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::string where = path + ":" + std::to_string(line_number);
-    Frame frame(electrode_count, electrode_count);
-    Index count = 0;
-    const char* p = line.c_str();
-    while (true) {
-      char* end = nullptr;
-      const double value = std::strtod(p, &end);
-      const char* stop = end;
-      while (*stop == ' ' || *stop == '\t' || *stop == '\r') ++stop;
-      if (end == p || (*stop != ',' && *stop != '\0')) {
-        std::string text(p, std::strcspn(p, ","));
-        throw InvalidInput(where + ": value " + std::to_string(count + 1) + " \"" + text + "\" is not a number");
-      }
-      if (!std::isfinite(value))
-        throw InvalidInput(where + ": value " + std::to_string(count + 1) + " is " +
-                           std::string(p, static_cast<std::size_t>(end - p)));
-      if (count < values_per_frame) frame.data()[count] = value;
-      ++count;
-      if (*stop == '\0') break;
-      p = stop + 1;
+FramesCsvReader::FramesCsvReader(const std::string& path, int electrode_count)
+    : lines_(path, "frames file"), electrode_count_(electrode_count) {}
+
+bool FramesCsvReader::next(Frame& frame) {
+  do {
+    if (!lines_.next(line_)) return false;
+  } while (line_.find_first_not_of(" \t") == std::string::npos);
+  const Index values_per_frame = static_cast<Index>(electrode_count_) * electrode_count_;
+  frame.resize(electrode_count_, electrode_count_);
+  Index count = 0;
+  const char* p = line_.c_str();
+  const char* const line_end = p + line_.size();
+  while (true) {
+    char* end = nullptr;
+    const double value = std::strtod(p, &end);
+    const char* stop = end;
+    while (*stop == ' ' || *stop == '\t') ++stop;
+    if (end == p || (*stop != ',' && stop != line_end)) {
+      const char* field_end = std::find(p, line_end, ',');
+      throw InvalidInput(where() + ": value " + std::to_string(count + 1) + " " +
+                         quote_input(std::string_view(p, static_cast<std::size_t>(field_end - p))) +
+                         " is not a number");
     }
-    if (count != values_per_frame)
-      throw InvalidInput(where + ": " + std::to_string(count) + " values, expected " +
-                         std::to_string(values_per_frame) + " (" + std::to_string(electrode_count) + " electrodes)");
-    frames.push_back(std::move(frame));
+    if (!std::isfinite(value))
+      throw InvalidInput(where() + ": value " + std::to_string(count + 1) + " is " +
+                         std::string(p, static_cast<std::size_t>(end - p)));
+    if (count < values_per_frame) frame.data()[count] = value;
+    ++count;
+    if (stop == line_end) break;
+    p = stop + 1;
   }
+  if (count != values_per_frame)
+    throw InvalidInput(where() + ": " + std::to_string(count) + " values, expected " +
+                       std::to_string(values_per_frame) + " (" + std::to_string(electrode_count_) + " electrodes)");
+  ++frames_read_;
+  return true;
+}
+
+std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count) {
+  FramesCsvReader reader(path, electrode_count);
+  std::vector<Frame> frames;
+  for (Frame frame; reader.next(frame);) frames.push_back(frame);
+  if (frames.empty()) throw InvalidInput(path + ": no frames (an empty file?)");
   return frames;
 }
 

@@ -3,11 +3,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
+#include "emit/io/line_reader.hpp"
 
 namespace emit {
 
@@ -29,23 +29,30 @@ void write_presses_csv(const std::string& path, const PressSequence& sequence) {
   file.commit();
 }
 
-PressSequence read_presses_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError(path + ": cannot open presses file (" + std::strerror(errno) + ")");
+PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) {
+  LineReader lines(path, "presses file");
   std::string line;
-  if (!std::getline(in, line) || line.rfind("frame,x_mm,y_mm,radius_mm,force_N", 0) != 0)
-    throw InvalidInput(path + ":1: expected the header \"" + std::string(header) + "\"");
+  if (!lines.next(line) || line.rfind("frame,x_mm,y_mm,radius_mm,force_N", 0) != 0)
+    throw InvalidInput(path + ":1: expected the header \"" + std::string(header) + "\", got " + quote_input(line));
+  const std::string expected = ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
   PressSequence sequence;
-  for (int line_number = 2; std::getline(in, line); ++line_number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  while (lines.next(line)) {
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
     long frame = -1;
     Press p;
+    double pressure = 0;
+    int consumed = 0;
     // glibc's sscanf converts as strtol and strtod do (saturating on overflow); the field count
-    // rejects a malformed line, the check below a negative frame.
+    // and the end of the line reject a malformed line, the check below a negative frame.
     // NOLINTNEXTLINE(cert-err34-c)
-    if (std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf", &frame, &p.x_mm, &p.y_mm, &p.radius_mm, &p.force_N) != 5 ||
-        frame < 0)
-      throw InvalidInput(path + ":" + std::to_string(line_number) + ": expected frame,x_mm,y_mm,radius_mm,force_N");
+    const int fields = std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm, &p.radius_mm,
+                                   &p.force_N, &consumed, &pressure, &consumed);
+    const bool whole_line =
+        consumed > 0 && line.find_first_not_of(" \t", static_cast<std::size_t>(consumed)) == std::string::npos;
+    if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(line));
+    if (static_cast<std::size_t>(frame) >= max_frames)
+      throw InvalidInput(lines.where() + ": frame " + std::to_string(frame) + " is beyond the " +
+                         std::to_string(max_frames) + " frames it describes");
     if (static_cast<std::size_t>(frame) >= sequence.size()) sequence.resize(static_cast<std::size_t>(frame) + 1);
     sequence[static_cast<std::size_t>(frame)].push_back(p);
   }

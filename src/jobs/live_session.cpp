@@ -6,6 +6,7 @@
 
 #include "emit/acquire/recorder.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/live/live_server.hpp"
 #include "emit/live/open_source.hpp"
@@ -13,6 +14,16 @@
 #include "emit/sensor/sensor_json.hpp"
 
 namespace emit {
+
+namespace {
+
+/// HOST:PORT whose host is a wildcard address (every interface).
+bool is_every_interface(const std::string& serve) {
+  const std::string host = serve.substr(0, serve.rfind(':'));
+  return host == "0.0.0.0" || host == "::" || host == "[::]";
+}
+
+}  // namespace
 
 struct LiveSession::Impl {
   Sensor sensor;
@@ -26,6 +37,12 @@ struct LiveSession::Impl {
 
 LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
+  const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
+  check_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
+                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path}, {"--record", job.record_path}});
+  if (is_every_interface(job.serve))
+    progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
+                  "use 127.0.0.1:PORT to keep it on this computer");
   s.sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {

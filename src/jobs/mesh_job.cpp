@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "emit/core/output_paths.hpp"
+
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -10,8 +12,11 @@ namespace emit {
 
 MeshReport run_mesh_job(const MeshJob& job) {
   const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
+                {{"--out", job.out_path}});
   MeshOptions options = job.twin ? twin_mesh_options(sensor, job.seed) : reconstruction_mesh_options(sensor);
   if (job.element_size_mm > 0) options.element_size_mm = job.element_size_mm;
+  if (job.max_triangles > 0) options.max_triangles = job.max_triangles;
   const auto start = std::chrono::steady_clock::now();
   const Mesh mesh = generate_mesh(sensor, options);
   MeshReport report;

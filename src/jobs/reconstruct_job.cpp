@@ -2,12 +2,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <optional>
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/core/atomic_file.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/output_paths.hpp"
 #include "emit/frame/batch.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
@@ -15,6 +16,7 @@
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "reference_frames.hpp"
 
 namespace emit {
 
@@ -38,29 +40,62 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
 
 }  // namespace
 
+namespace {
+
+/// What a first pass over the frames file finds: how many frames, and the dead electrodes.
+struct FramesSurvey {
+  long frames = 0;
+  std::vector<DeadElectrode> dead;
+};
+
+/// Reads every frame once (checking every value) without keeping them: a bad value stops the run
+/// before anything is built or written, in constant memory whatever the file's length.
+FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N) {
+  FramesCsvReader reader(path, N);
+  ElectrodeHealthTally health(N, sensor.adc);
+  FramesSurvey survey;
+  for (Frame frame; reader.next(frame); ++survey.frames) {
+    check_readings_in_range(frame, sensor.adc, reader.where());
+    health.add(frame);
+  }
+  if (survey.frames == 0) throw InvalidInput(path + ": no frames (an empty file?)");
+  survey.dead = health.dead();
+  return survey;
+}
+
+/// Frames are reconstructed in chunks of this many: the linear methods' batch splits a chunk
+/// across threads, and memory stays bounded (256 × 16² doubles = 0.5 MB).
+constexpr std::size_t chunk_frames = 256;
+
+}  // namespace
+
 ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress) {
+  check_outputs({{"--sensor", job.sensor_path},
+                 {"--reference", job.reference_path},
+                 {"--frames", job.frames_path},
+                 {"--calibration", job.calibration_path}},
+                {{"--contacts", job.contacts_path}});
   const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);
     check_calibration_for_method(*calibration, job.method, job.calibration_path);
   }
-  if (!job.images_dir.empty()) std::filesystem::create_directories(job.images_dir);
+  prepare_output_folder({"--images", job.images_dir});
   AtomicFile contacts_file(job.contacts_path);  // fails now, not after the work, if unwritable
 
   // The frames before anything is built or written: a bad value stops the run with nothing lost.
   const int N = electrode_count_of(sensor);
-  const Frame reference = average_frames(read_frames_csv(job.reference_path, N));
-  const std::vector<Frame> frames = read_frames_csv(job.frames_path, N);
+  const Frame reference = detail::read_reference(job.reference_path, sensor, N, progress);
+  const FramesSurvey survey = survey_frames(job.frames_path, sensor, N);
   ReconstructReport report;
   PipelineOptions options{job.method, job.lambda2, job.cache_dir, {}};
-  for (const DeadElectrode& d : find_dead_electrodes(frames, sensor.adc)) {
+  for (const DeadElectrode& d : survey.dead) {
     progress.warn("electrode " + std::to_string(d.electrode) + " " + d.reason + ": leaving out its " +
                   std::to_string(2 * (N - 1)) + " measurements");
     options.excluded.push_back(d.electrode);
   }
   report.dead_electrodes = options.excluded;
-  check_no_stuck_rows(frames, sensor.adc, options.excluded, job.frames_path);
 
   const auto start = std::chrono::steady_clock::now();
   Pipeline pipeline(sensor, options, calibration, progress.stage, job.calibration_path);
@@ -71,32 +106,45 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   report.operator_from_cache = model.loaded_from_cache;
   report.lambda2 = pipeline.operator_options().lambda2;
   report.calibrated = pipeline.calibrated();
-  report.frames = frames.size();
+  report.frames = static_cast<std::size_t>(survey.frames);
 
   FrameOptions frame_options;
   frame_options.threshold_fraction = job.threshold_fraction;
   frame_options.min_contact_area_mm2 = job.min_contact_area_mm2;
+  const bool batch = is_linear(job.method) && job.images_dir.empty();  // frames independent: split across threads
+  std::optional<Reconstructor> reconstructor;
+  if (!batch) {
+    reconstructor.emplace(pipeline.reconstructor(frame_options));
+    reconstructor->set_reference(reference);
+  }
   const auto online_start = std::chrono::steady_clock::now();
-  if (is_linear(job.method) && job.images_dir.empty()) {
-    // The linear methods' frames are independent: a batch, split across threads.
-    const auto contacts =
-        reconstruct_batch(model, pipeline.linear_calibration(), frame_options, reference, frames, job.threads);
-    for (std::size_t f = 0; f < frames.size(); ++f)
-      write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts[f], -1);
-  } else {
-    Reconstructor reconstructor = pipeline.reconstructor(frame_options);
-    reconstructor.set_reference(reference);
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-      const auto& contacts = reconstructor.process(frames[f]);
-      const FitResult* fitted = reconstructor.fit_result();
-      write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts,
-                          fitted ? 1e3 * fitted->rms_misfit_V : -1);
-      if (!job.images_dir.empty()) write_image(reconstructor, contacts, f, job.method, job.images_dir);
-      progress.step("reconstructing frame", static_cast<long>(f + 1), static_cast<long>(frames.size()));
+  FramesCsvReader reader(job.frames_path, N);
+  std::vector<Frame> chunk(chunk_frames);
+  for (std::size_t first = 0; first < report.frames; first += chunk_frames) {
+    std::size_t count = 0;
+    while (count < chunk_frames && reader.next(chunk[count])) ++count;
+    chunk.resize(count);
+    check_no_stuck_rows(chunk, sensor.adc, options.excluded, job.frames_path, first);
+    if (batch) {
+      const auto contacts =
+          reconstruct_batch(model, pipeline.linear_calibration(), frame_options, reference, chunk, job.threads);
+      for (std::size_t f = 0; f < count; ++f)
+        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts[f], -1);
+    } else {
+      for (std::size_t f = 0; f < count; ++f) {
+        const auto& contacts = reconstructor->process(chunk[f]);
+        const FitResult* fitted = reconstructor->fit_result();
+        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts,
+                            fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
+        if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
+        progress.step("reconstructing frame", static_cast<long>(first + f + 1), survey.frames);
+      }
     }
+    if (batch) progress.step("reconstructing frame", static_cast<long>(first + count), survey.frames);
+    chunk.resize(chunk_frames);
   }
   contacts_file.commit();
-  report.frames_per_s = static_cast<double>(frames.size()) / std::max(seconds_since(online_start), 1e-9);
+  report.frames_per_s = static_cast<double>(report.frames) / std::max(seconds_since(online_start), 1e-9);
   return report;
 }
 

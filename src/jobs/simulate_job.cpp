@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/output_paths.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
 #include "emit/render/field_image.hpp"
@@ -18,14 +19,7 @@ std::string default_truth_path(const std::string& out_path) {
   return (p.parent_path() / (p.stem().string() + "_presses.csv")).string();
 }
 
-void check_writable_folder(const std::string& path) {
-  const auto folder = std::filesystem::path(path).parent_path();
-  if (!folder.empty() && !std::filesystem::is_directory(folder))
-    throw IoError(path + ": cannot write: folder " + folder.string() + " does not exist");
-}
-
 void write_potential_images(Twin& twin, const PressSequence& sequence, const std::string& dir) {
-  std::filesystem::create_directories(dir);
   for (std::size_t f = 0; f < sequence.size(); ++f) {
     std::vector<Circle> outlines;
     for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
@@ -51,8 +45,13 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
     for (std::size_t i = 0; i < report.presses[f].size(); ++i)
       validate_press(sensor, report.presses[f][i], "frame " + std::to_string(f) + ", press " + std::to_string(i));
   report.truth_path = job.truth_path.empty() ? default_truth_path(job.out_path) : job.truth_path;
-  check_writable_folder(job.out_path);
-  check_writable_folder(report.truth_path);
+  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
+                {{"--out", job.out_path}, {"--truth", report.truth_path}});
+  const int N = static_cast<int>(sensor.electrodes.size());
+  if (job.twin.dead_electrode >= N)
+    throw InvalidInput("--dead-electrode " + std::to_string(job.twin.dead_electrode) + ": the sensor has " +
+                       std::to_string(N) + " electrodes, 0 to " + std::to_string(N - 1));
+  prepare_output_folder({"--images", job.images_dir});
 
   progress.say("meshing the twin of " + sensor.name);
   Twin twin(sensor, job.twin);

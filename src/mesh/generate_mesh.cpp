@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 
 #include <gmsh.h>
 
@@ -125,9 +127,30 @@ void grade_into_electrode_ends(const std::vector<int>& end_points, const MeshOpt
 
 }  // namespace
 
+double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options) {
+  const Shape& shape = sensor.shape;
+  double area_mm2 = 0;
+  switch (shape.kind) {
+    case ShapeKind::rectangle: area_mm2 = shape.width_mm * shape.height_mm; break;
+    case ShapeKind::circle: area_mm2 = std::numbers::pi * shape.radius_mm * shape.radius_mm; break;
+    case ShapeKind::polygon:
+      for (std::size_t i = 0; i < shape.points_mm.size(); ++i) {
+        const Vector2& p = shape.points_mm[i];
+        const Vector2& q = shape.points_mm[(i + 1) % shape.points_mm.size()];
+        area_mm2 += 0.5 * (p.x() * q.y() - q.x() * p.y());
+      }
+      area_mm2 = std::abs(area_mm2);
+      break;
+    case ShapeKind::mesh_file: return 0;
+  }
+  const double h = options.element_size_mm;
+  return area_mm2 / (std::sqrt(3.0) / 4 * h * h);
+}
+
 MeshOptions reconstruction_mesh_options(const Sensor& sensor) {
   MeshOptions options;
   options.element_size_mm = sensor.mesh.element_size_mm;
+  options.max_triangles = sensor.mesh.max_triangles;
   options.smoothing_steps = 0;  // homogeneous Frontal-Delaunay needs none (MeshOptions says why)
   return options;
 }
@@ -135,6 +158,7 @@ MeshOptions reconstruction_mesh_options(const Sensor& sensor) {
 MeshOptions twin_mesh_options(const Sensor& sensor, int seed) {
   MeshOptions options;
   options.element_size_mm = sensor.mesh.element_size_mm / sensor.mesh.twin_refinement;
+  options.max_triangles = sensor.mesh.max_triangles;
   // Grade into the electrodes' ends, where the potential's gradient is singular.
   options.electrode_edge_size_factor = 0.25;
   options.seed = seed;
@@ -146,6 +170,15 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
     throw InvalidInput("mesh: element size and edge size factor must be positive");
   if (options.smoothing_steps < 0) throw InvalidInput("mesh: smoothing steps must be 0 or more");
+  if (const double estimate = estimated_triangle_count(sensor, options); estimate > options.max_triangles) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "meshing %s: about %.3g triangles at %.3g mm, beyond the limit of %.3g: choose a larger element "
+                  "size, or raise the limit (sensor \"mesh\": {\"max_triangles\": N}, or emit mesh --max-triangles N)",
+                  sensor.name.empty() ? "the sensor" : sensor.name.c_str(), estimate, options.element_size_mm,
+                  options.max_triangles);
+    throw InvalidInput(text);
+  }
   detail::GmshSession gmsh_session;
   const std::string context = "meshing " + (sensor.name.empty() ? std::string("the sensor") : sensor.name);
   gmsh_session.run<InvalidInput>(context, [&] {

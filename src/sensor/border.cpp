@@ -96,6 +96,27 @@ Border Border::polygon(const std::vector<Vector2>& points_mm) {
     twice_area += p.x() * q.y() - q.x() * p.y();
   }
   if (std::abs(twice_area) < 1e-12) throw InvalidInput("the polygon has zero area");
+  // Edges i (points i, i+1) and j that are not neighbours must not meet: a self-intersecting
+  // outline has no inside to mesh (and Gmsh fails on it where its error cannot be caught).
+  const auto cross = [](const Vector2& u, const Vector2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;
+      const Vector2 &a = points_mm[i], &b = points_mm[(i + 1) % n], &c = points_mm[j], &d = points_mm[(j + 1) % n];
+      const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c),
+                   d4 = cross(d - c, b - c);
+      const bool proper = ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+      const auto on_segment = [](const Vector2& p, const Vector2& q, const Vector2& r) {  // r on pq, collinear
+        return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
+               r.y() <= std::max(p.y(), q.y());
+      };
+      const bool touching = (d1 == 0 && on_segment(a, b, c)) || (d2 == 0 && on_segment(a, b, d)) ||
+                            (d3 == 0 && on_segment(c, d, a)) || (d4 == 0 && on_segment(c, d, b));
+      if (proper || touching)
+        throw InvalidInput("the polygon's edges " + std::to_string(i) + "-" + std::to_string((i + 1) % n) + " and " +
+                           std::to_string(j) + "-" + std::to_string((j + 1) % n) +
+                           " meet: the outline must not cross or touch itself");
+    }
   std::vector<Vector2> ccw = points_mm;
   if (twice_area < 0) std::reverse(ccw.begin() + 1, ccw.end());  // keep points[0] first
   Border border;

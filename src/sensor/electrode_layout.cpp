@@ -74,6 +74,10 @@ void validate_electrodes(const Border& border, const std::vector<Electrode>& ele
     if (!(electrodes[i].width_mm > 0) || !std::isfinite(electrodes[i].width_mm))
       throw InvalidInput("electrodes[" + std::to_string(i) + "].width_mm: must be positive, got " +
                          std::to_string(electrodes[i].width_mm));
+  for (int i = 0; i < n; ++i)
+    if (electrodes[i].width_mm >= border.length_mm())
+      throw InvalidInput("electrodes[" + std::to_string(i) + "].width_mm: " + mm(electrodes[i].width_mm) +
+                         " is longer than the whole border (" + mm(border.length_mm()) + ")");
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),

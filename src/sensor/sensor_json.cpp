@@ -195,6 +195,7 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
     ObjectReader m(r.value("mesh"), "mesh");
     sensor.mesh.element_size_mm = m.number_or("element_size_mm", sensor.mesh.element_size_mm, Sign::positive);
     sensor.mesh.twin_refinement = m.number_or("twin_refinement", sensor.mesh.twin_refinement, Sign::positive);
+    sensor.mesh.max_triangles = m.number_or("max_triangles", sensor.mesh.max_triangles, Sign::positive);
     m.finish();
     if (sensor.mesh.twin_refinement < 1)
       ObjectReader::fail("mesh.twin_refinement", "must be at least 1 (the twin's mesh is never coarser)");
@@ -279,7 +280,9 @@ json sensor_to_json(const Sensor& sensor) {
                       {"gamma", sensor.contact.gamma},
                       {"min_pressure_N_per_mm2", sensor.contact.min_pressure_N_per_mm2}};
   j["adc"] = {{"bits", sensor.adc.bits}, {"vref_V", sensor.adc.vref_V}, {"noise_V", sensor.adc.noise_V}};
-  j["mesh"] = {{"element_size_mm", sensor.mesh.element_size_mm}, {"twin_refinement", sensor.mesh.twin_refinement}};
+  j["mesh"] = {{"element_size_mm", sensor.mesh.element_size_mm},
+               {"twin_refinement", sensor.mesh.twin_refinement},
+               {"max_triangles", sensor.mesh.max_triangles}};
   return j;
 }
 

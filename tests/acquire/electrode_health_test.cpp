@@ -44,6 +44,50 @@ TEST(ElectrodeHealth, HealthyFramesHaveNoDeadElectrode) {
   EXPECT_TRUE(find_dead_electrodes({twin.frame({})}, sensor.adc).empty());  // no signal, no verdict
 }
 
+// Issue 13: volts below 0 or above the ADC's reference were read without a word (volts in mV, or
+// another board's frames). The rail tolerance is max(2 steps, 5 σ) = 5 mV on the default ADC.
+TEST(ElectrodeHealth, ReadingsAnAdcCannotGiveAreAnError) {
+  const Sensor sensor = default_sensor();
+  Frame frame = Frame::Zero(16, 16);
+  frame(3, 4) = -0.004;  // within the tolerance of a rail: noise
+  EXPECT_NO_THROW(check_readings_in_range(frame, sensor.adc, "f.csv:1"));
+  frame(3, 4) = 3.304;
+  EXPECT_NO_THROW(check_readings_in_range(frame, sensor.adc, "f.csv:1"));
+  frame(3, 4) = -0.2;
+  try {
+    check_readings_in_range(frame, sensor.adc, "f.csv:1");
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "f.csv:1: ground 3, sense 4 reads -0.2 V, outside the ADC's 0 to 3.3 V (sensor \"adc\")");
+  }
+  frame(3, 4) = 1200;  // millivolts
+  EXPECT_THROW(check_readings_in_range(frame, sensor.adc, "f.csv:1"), InvalidInput);
+}
+
+// Issue 13: a pressed frame given as the reference was used without a word.
+TEST(ElectrodeHealth, APressedReferenceLooksPressed) {
+  const Sensor sensor = default_sensor();
+  Twin twin(sensor);
+  EXPECT_FALSE(looks_pressed(twin.frame({}), sensor.adc));
+  EXPECT_TRUE(looks_pressed(twin.frame({{30, 30, 5, 10}}), sensor.adc));
+}
+
+// The tally, fed a frame at a time, finds what the whole-vector function finds.
+TEST(ElectrodeHealth, TheTallyAgreesWithTheWholeVector) {
+  const Sensor sensor = default_sensor();
+  TwinOptions options;
+  options.dead_electrode = 9;
+  Twin twin(sensor, options);
+  const std::vector<Frame> frames = {twin.frame({{30, 30, 5, 10}}), twin.frame({}), twin.frame({{15, 40, 5, 8}})};
+  ElectrodeHealthTally tally(16, sensor.adc);
+  for (const Frame& frame : frames) tally.add(frame);
+  const auto dead = tally.dead();
+  ASSERT_EQ(dead.size(), 1u);
+  EXPECT_EQ(dead[0].electrode, 9);
+  EXPECT_EQ(dead[0].reason, find_dead_electrodes(frames, sensor.adc)[0].reason);
+  EXPECT_EQ(dead[0].reason, "reads 0 V as the sensed electrode in all 2 frames with signal");
+}
+
 TEST(ElectrodeHealth, AGroundingThatFailsInOneFrameIsAnError) {
   const Sensor sensor = default_sensor();
   Twin twin(sensor);

@@ -365,16 +365,33 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
   std::ofstream(dir + "/text.csv") << csv_row(256, "volts", 3);
   std::ofstream(dir + "/short.csv") << csv_row(255, "0", -1);
   std::ofstream(dir + "/ref8.csv") << csv_row(64, "0", -1);
-  std::string arguments = GetParam().arguments;
-  for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
-    for (std::size_t at; (at = arguments.find(from)) != std::string::npos;) arguments.replace(at, from.size(), to);
+  // Issue 13's inputs.
+  std::ofstream(dir + "/selfx.json")
+      << R"({"shape":{"type":"polygon","points_mm":[[0,0],[60,0],[60,60],[30,-20],[0,60]]},"electrodes":{"count":8,"width_mm":3}})";
+  std::ofstream(dir + "/huge.json")
+      << R"({"shape":{"type":"rectangle","width_mm":100000,"height_mm":100000},"electrodes":{"count":16,"width_mm":3}})";
+  std::ofstream(dir + "/wide.json")
+      << R"({"shape":{"type":"rectangle","width_mm":60,"height_mm":60},"electrodes":{"count":16,"width_mm":1e300}})";
+  std::ofstream(dir + "/empty.csv") << "";
+  std::ofstream(dir + "/semicolons.csv") << std::string(4096, ';') << "\n";
+  std::ofstream(dir + "/millivolts.csv") << csv_row(256, "1200", 5);
+  std::ofstream(dir + "/truth.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,30,30,5,10,0.127,1\n";
+  std::ofstream(dir + "/pairs.csv") << "pressure_N_per_mm2,resistance_ohm\n0.1,2000\n0.2,-5\n";
+  std::ofstream(dir + "/a_file") << "not a folder";
+  const auto with_paths = [&](std::string text) {
+    for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
+      for (std::size_t at; (at = text.find(from)) != std::string::npos;) text.replace(at, from.size(), to);
+    return text;
+  };
+  const std::string arguments = with_paths(GetParam().arguments);
   const auto r = run_emit(arguments);
   EXPECT_NE(r.exit_code, 0);
+  EXPECT_TRUE(r.exit_code == 1 || r.exit_code == 2) << "1: bad input, 2: bad command line; got " << r.exit_code;
   // Progress lines may come first; the error is the last line and the only one saying "emit: ".
   const std::string last_line = last_line_of(r.err);
   EXPECT_EQ(last_line.rfind("emit: ", 0), 0u) << r.err;
   EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
-  EXPECT_NE(last_line.find(GetParam().message_contains), std::string::npos) << r.err;
+  EXPECT_NE(last_line.find(with_paths(GetParam().message_contains)), std::string::npos) << r.err;
   EXPECT_EQ(test::read_text(out), "GOOD\n");
   EXPECT_FALSE(fs::exists(dir + "/out_presses.csv"));
 }
@@ -406,7 +423,63 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
                "needs --reference, --frames, --truth and --out"},
         BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
-        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads"},
+        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads: must be a whole number 1 or larger, got \"0\""},
+        // Issue 13: data lost.
+        BadRun{"contacts over the frames", "reconstruct --reference DIR/ref.csv --frames OUT --contacts OUT --no-cache",
+               "is the same file as --frames"},
+        BadRun{"truth over the frames", "simulate --script none --frames 2 --out OUT --truth OUT",
+               "--out and --truth are the same file"},
+        BadRun{"calibration over the truth",
+               "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --truth OUT --out OUT",
+               "--out OUT is the same file as --truth OUT"},
+        BadRun{"recording over itself", "live --source file:OUT --contacts OUT --fps 0",
+               "is the same file as --source"},
+        BadRun{"empty frames file",
+               "reconstruct --reference DIR/ref.csv --frames DIR/empty.csv --contacts OUT --no-cache",
+               "empty.csv: no frames"},
+        BadRun{"empty reference",
+               "reconstruct --reference DIR/empty.csv --frames DIR/ref.csv --contacts OUT --no-cache",
+               "empty.csv: no frames"},
+        // Crashes and runaway resources.
+        BadRun{"self-intersecting polygon", "mesh --sensor DIR/selfx.json --out OUT", "must not cross or touch itself"},
+        BadRun{"self-intersecting polygon simulated", "simulate --sensor DIR/selfx.json --press 30,30,5,10 --out OUT",
+               "must not cross or touch itself"},
+        BadRun{"tiny elements", "mesh --element-size-mm 1e-6 --out OUT", "beyond the limit of 1e+06"},
+        BadRun{"a 100 m sheet", "simulate --sensor DIR/huge.json --press 30,30,5,10 --out OUT", "beyond the limit"},
+        BadRun{"frames from dev zero",
+               "reconstruct --reference DIR/ref.csv --frames /dev/zero --contacts OUT --no-cache",
+               "/dev/zero:1: line longer than 1024 KiB"},
+        // Accepted without a word before.
+        BadRun{"millivolts",
+               "reconstruct --reference DIR/ref.csv --frames DIR/millivolts.csv --contacts OUT --no-cache",
+               "millivolts.csv:1: ground 0, sense 5 reads 1200 V, outside the ADC's 0 to 3.3 V"},
+        BadRun{"dead electrode beyond the sensor", "simulate --press 30,30,5,10 --dead-electrode 99 --out OUT",
+               "--dead-electrode 99: the sensor has 16 electrodes, 0 to 15"},
+        BadRun{"truth with an extra column",
+               "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --truth DIR/truth.csv --out OUT",
+               "truth.csv:2: expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got"},
+        // Poor messages before.
+        BadRun{"misspelled command", "reconstuct --frames x",
+               "unknown command \"reconstuct\" (did you mean \"reconstruct\"?)"},
+        BadRun{"negative lambda",
+               "reconstruct --reference DIR/ref.csv --frames DIR/ref.csv --contacts OUT --lambda2 -1",
+               "--lambda2: must be a positive number, got \"-1\""},
+        BadRun{"zero element size", "mesh --element-size-mm 0 --out OUT",
+               "--element-size-mm: must be a positive number, got \"0\""},
+        BadRun{"images where a file is",
+               "reconstruct --reference DIR/ref.csv --frames DIR/ref.csv --contacts OUT --images DIR/a_file/x "
+               "--no-cache",
+               "--images DIR/a_file/x: cannot create the folder"},
+        BadRun{"pairs with a negative resistance", "calibrate --contact-law DIR/pairs.csv",
+               "pairs.csv:3: pressure and resistance must be positive, got \"0.2,-5\""},
+        BadRun{"a line of semicolons",
+               "reconstruct --reference DIR/ref.csv --frames DIR/semicolons.csv --contacts OUT --no-cache",
+               "semicolons.csv:1: value 1 \";;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;;...\" is not a number"},
+        BadRun{"electrodes wider than the sheet", "mesh --sensor DIR/wide.json --out OUT",
+               "longer than the whole border"},
+        BadRun{"calibration to a missing folder",
+               "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --truth DIR/truth.csv --out DIR/no/c.json",
+               "--out DIR/no/c.json: cannot write: folder DIR/no does not exist"},
         BadRun{"unknown live source", "live --source zigzag --frames 1", "source \"zigzag\": unknown"},
         BadRun{"live serve address without a port", "live --serve 127.0.0.1 --frames 1 --cache DIR/cache",
                "is not HOST:PORT"}),

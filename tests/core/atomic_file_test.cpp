@@ -2,6 +2,10 @@
 // keeps the target's extension and goes away either way.
 #include "emit/core/atomic_file.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 
@@ -74,6 +78,38 @@ TEST(AtomicFile, MissingFolderIsAnErrorNamingIt) {
   } catch (const IoError& e) {
     EXPECT_EQ(std::string(e.what()), dir + "/no/out.csv: cannot write: folder " + dir + "/no does not exist");
   }
+}
+
+}  // namespace
+}  // namespace emit
+
+namespace emit {
+namespace {
+
+// Issue 13: Ctrl-C during `emit reconstruct` left a hidden ".NAME.tmpPID.jsonl" behind. A child
+// process opens an AtomicFile, writes, and is killed by SIGINT with the cleanup installed: the
+// temporary file is gone, the target untouched, and the child died of the signal (re-raised).
+TEST(AtomicFile, ASignalRemovesTheTemporaryFileAndStillEndsTheProcess) {
+  const std::string dir = test::temp_folder("atomic_file_signal");
+  const std::string target = dir + "/contacts.jsonl";
+  std::ofstream(target) << "GOOD\n";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    remove_temporary_files_on_signals();
+    AtomicFile file(target);
+    file.stream() << "half" << std::flush;
+    std::raise(SIGINT);
+    ::_exit(0);  // not reached: SIGINT's default action ends the process
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGINT);
+  EXPECT_EQ(test::read_text(target), "GOOD\n");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1u) << "a temporary file was left in " << dir;
 }
 
 }  // namespace

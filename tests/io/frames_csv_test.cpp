@@ -71,3 +71,56 @@ TEST(FramesCsv, WritingIntoAMissingFolderLeavesNothing) {
 
 }  // namespace
 }  // namespace emit
+
+namespace emit {
+namespace {
+
+// Issue 13: an empty frames file exited 0 and replaced a good contacts file with an empty one.
+TEST(FramesCsv, AFileWithoutFramesIsAnError) {
+  const std::string path = test::temp_folder("frames_csv_empty") + "/empty.csv";
+  std::ofstream(path) << "\n  \n";
+  try {
+    read_frames_csv(path, 3);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), (path + ": no frames (an empty file?)").c_str());
+  }
+}
+
+// Frames one at a time: the same frames as read whole, the line of each known.
+TEST(FramesCsv, TheStreamingReaderGivesTheSameFramesAndTheirLines) {
+  const std::string path = test::temp_folder("frames_csv_stream") + "/f.csv";
+  std::ofstream(path) << "\xef\xbb\xbf"
+                         "1,2,3,4\r\n\n5,6,7,8\n";
+  FramesCsvReader reader(path, 2);
+  Frame frame;
+  ASSERT_TRUE(reader.next(frame));
+  EXPECT_EQ(frame(1, 0), 3.0);  // ground-major: index l·N + m
+  ASSERT_TRUE(reader.next(frame));
+  EXPECT_EQ(frame(1, 1), 8.0);
+  EXPECT_EQ(reader.where(), path + ":3");
+  EXPECT_FALSE(reader.next(frame));
+  EXPECT_EQ(reader.frames_read(), 2);
+}
+
+// Issue 13: a line of semicolons was echoed whole (4 KB) and binary bytes raw.
+TEST(FramesCsv, MessagesQuoteAShortEscapedPieceOfTheLine) {
+  const std::string path = test::temp_folder("frames_csv_quote") + "/f.csv";
+  std::ofstream(path, std::ios::binary) << std::string(4096, ';') << "\n";
+  try {
+    read_frames_csv(path, 2);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), (path + ":1: value 1 \"" + std::string(40, ';') + "...\" is not a number").c_str());
+  }
+  std::ofstream(path, std::ios::binary) << std::string("1,\x01\x02,3,4\n");
+  try {
+    read_frames_csv(path, 2);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), (path + ":1: value 2 \"\\x01\\x02\" is not a number").c_str());
+  }
+}
+
+}  // namespace
+}  // namespace emit

@@ -47,12 +47,21 @@ std::string error_of(const std::string& path) {
 TEST(PressesCsv, ErrorsNameTheLine) {
   const std::string dir = test::temp_folder("presses_csv_bad");
   std::ofstream(dir + "/header.csv") << "x,y\n";
-  EXPECT_EQ(error_of(dir + "/header.csv"),
-            dir + "/header.csv:1: expected the header \"frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\"");
+  EXPECT_EQ(error_of(dir + "/header.csv"), dir +
+                                               "/header.csv:1: expected the header "
+                                               "\"frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\", got \"x,y\"");
+  const std::string expected = ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
   std::ofstream(dir + "/row.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4\n\n1,1,2,three,4\n";
-  EXPECT_EQ(error_of(dir + "/row.csv"), dir + "/row.csv:4: expected frame,x_mm,y_mm,radius_mm,force_N");
+  EXPECT_EQ(error_of(dir + "/row.csv"), dir + "/row.csv:4" + expected + "\"1,1,2,three,4\"");
   std::ofstream(dir + "/negative.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n-1,1,2,3,4\n";
-  EXPECT_EQ(error_of(dir + "/negative.csv"), dir + "/negative.csv:2: expected frame,x_mm,y_mm,radius_mm,force_N");
+  EXPECT_EQ(error_of(dir + "/negative.csv"), dir + "/negative.csv:2" + expected + "\"-1,1,2,3,4\"");
+  // Issue 13: a seventh column was read as if it were not there.
+  std::ofstream(dir + "/extra.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4,0.14,99\n";
+  EXPECT_EQ(error_of(dir + "/extra.csv"), dir + "/extra.csv:2" + expected + "\"0,1,2,3,4,0.14,99\"");
+  // A frame index far beyond the file's frames is an error, not a vector of 10^15 frames.
+  std::ofstream(dir + "/far.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n1000000000000000,1,2,3,4\n";
+  EXPECT_EQ(error_of(dir + "/far.csv"),
+            dir + "/far.csv:2: frame 1000000000000000 is beyond the 1000000 frames it describes");
   EXPECT_EQ(error_of(dir + "/none.csv"), dir + "/none.csv: cannot open presses file (No such file or directory)");
 }
 

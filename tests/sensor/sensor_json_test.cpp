@@ -146,6 +146,22 @@ INSTANTIATE_TEST_SUITE_P(
                   j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {1, 1}, {2, 2}}}};
                 },
                 "zero area"},
+        // Issue 13: Gmsh threw a std::string from inside an OpenMP region (rc 134) on this one.
+        BadCase{"self-intersecting polygon",
+                [](json& j) {
+                  j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {60, 0}, {60, 60}, {30, -20}, {0, 60}}}};
+                  j["electrodes"] = {{"count", 8}, {"width_mm", 3}};
+                },
+                "edges 0-1 and 2-3 meet"},
+        BadCase{"polygon touching itself",
+                [](json& j) {
+                  j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {60, 0}, {30, 0}, {30, 30}}}};
+                  j["electrodes"] = {{"count", 8}, {"width_mm", 1}};
+                },
+                "must not cross or touch itself"},
+        // Issue 13: the width's rounding was reported as electrodes "touching".
+        BadCase{"electrode wider than the border", [](json& j) { j["electrodes"]["width_mm"] = 1e300; },
+                "longer than the whole border"},
         BadCase{"adc bits out of range",
                 [](json& j) {
                   j["adc"] = {{"bits", 40}};

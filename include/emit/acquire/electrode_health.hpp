@@ -5,6 +5,7 @@
 /// nothing, so the pressed sheet rises to the drive and its whole row reads full scale. Either,
 /// in every frame that has signal, marks the electrode dead: the reconstruction then leaves out
 /// all its measurements (as ground and as sense) and keeps the rest.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,20 @@ struct DeadElectrode {
   std::string reason;  ///< e.g. "reads 0 V as the sensed electrode in all 25 frames with signal"
 };
 
+/// find_dead_electrodes one frame at a time, for frames read as a stream.
+class ElectrodeHealthTally {
+ public:
+  ElectrodeHealthTally(int electrode_count, const AdcSpec& adc);
+  void add(const Frame& frame);
+  std::vector<DeadElectrode> dead() const;
+
+ private:
+  AdcSpec adc_;
+  double tolerance_V_;
+  int with_signal_ = 0;
+  std::vector<int> zero_columns_, full_rows_;
+};
+
 /// Electrodes dead in every frame with signal. "At a rail" allows max(2 ADC steps, 5 σ of the
 /// ADC noise); a frame has signal when some reading exceeds 20 times that. Needs at least one
 /// such frame to say anything.
@@ -27,6 +42,15 @@ std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames
 /// failed in that frame only. \throw InvalidInput "<source>: frame <i>: ground <l> reads <v> V
 /// on every electrode …".
 void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
-                         const std::string& source);
+                         const std::string& source, std::size_t first_frame = 0);
+
+/// A reading an ADC of this spec cannot give: below 0 V or above its reference, by more than the
+/// rail tolerance (volts in another unit, another board's frames). \throw InvalidInput "<where>:
+/// ground l, sense m reads v V, outside the ADC's 0 … vref V (sensor "adc")".
+void check_readings_in_range(const Frame& frame, const AdcSpec& adc, const std::string& where);
+
+/// A no-contact frame reads ~0 V everywhere; true if this one has a reading well above the noise
+/// (the "signal" of find_dead_electrodes): a reference that was pressed.
+bool looks_pressed(const Frame& frame, const AdcSpec& adc);
 
 }  // namespace emit

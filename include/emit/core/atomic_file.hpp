@@ -1,7 +1,8 @@
 #pragma once
 /// \file atomic_file.hpp
 /// Write-then-rename: output goes to a temporary file beside the target and replaces it only on
-/// commit(), so an error half-way never leaves a half file over a good one.
+/// commit(), so an error half-way never leaves a half file over a good one. The temporary files
+/// alive are registered, so a signal handler can remove them (remove_temporary_files_on_signals).
 #include <fstream>
 #include <string>
 
@@ -25,6 +26,12 @@ class AtomicFile {
   std::string path_, temp_path_;
   std::ofstream stream_;
   bool committed_ = false;
+  int slot_ = -1;  ///< in the registry of temporary files
 };
+
+/// SIGINT, SIGTERM and SIGHUP remove every AtomicFile's temporary file, then end the process as
+/// the signal would have (the default action, re-raised). Handlers installed later (e.g. `emit
+/// live`'s graceful stop) take precedence while they are installed.
+void remove_temporary_files_on_signals();
 
 }  // namespace emit

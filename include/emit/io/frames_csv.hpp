@@ -1,19 +1,39 @@
 #pragma once
 /// \file frames_csv.hpp
 /// Frames as CSV (README, "Files"): one frame per line, N·N comma-separated volts, ground-major
-/// (index l·N + m), no header.
+/// (index l·N + m), no header. Blank lines are skipped; a UTF-8 byte-order mark and "\r\n" endings
+/// are accepted; a line is at most LineReader::default_max_line_bytes long.
 #include <string>
 #include <vector>
 
 #include "emit/core/types.hpp"
+#include "emit/io/line_reader.hpp"
 
 namespace emit {
 
 /// Write all frames (each N×N), replacing `path` only when the whole file is written.
 void write_frames_csv(const std::string& path, const std::vector<Frame>& frames);
 
-/// Read frames of `electrode_count` electrodes. \throw IoError if unreadable; InvalidInput
-/// naming the line and value for a wrong value count, text, NaN or infinity.
+/// Frames one at a time, so a file of any length is read in constant memory.
+class FramesCsvReader {
+ public:
+  /// \throw IoError if the file cannot be opened.
+  FramesCsvReader(const std::string& path, int electrode_count);
+  /// The next frame into `frame` (resized to N×N). \return false at the end of the file.
+  /// \throw InvalidInput naming the line and value for a wrong value count, text, NaN or infinity.
+  bool next(Frame& frame);
+  std::string where() const { return lines_.where(); }  ///< "<path>:<line>" of the last frame
+  long frames_read() const { return frames_read_; }
+
+ private:
+  LineReader lines_;
+  int electrode_count_;
+  std::string line_;
+  long frames_read_ = 0;
+};
+
+/// Read all frames of `electrode_count` electrodes. \throw IoError if unreadable; InvalidInput
+/// as FramesCsvReader::next, or "<path>: no frames" for a file without any.
 std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count);
 
 }  // namespace emit

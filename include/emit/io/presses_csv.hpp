@@ -2,14 +2,19 @@
 /// \file presses_csv.hpp
 /// Ground truth of a simulated run: `frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2`, one
 /// row per press (several rows share a frame index for simultaneous presses).
+#include <cstddef>
 #include <string>
 
 #include "emit/sensor/press.hpp"
 
 namespace emit {
 
+/// The most frames a presses file may describe when the caller does not know how many it has.
+inline constexpr std::size_t default_max_press_frames = 1'000'000;
+
 void write_presses_csv(const std::string& path, const PressSequence& sequence);
-/// \throw IoError / InvalidInput naming the line.
-PressSequence read_presses_csv(const std::string& path);
+/// Presses of frames 0 … max_frames − 1 (a frame index beyond is an error, not a vector of that
+/// size). \throw IoError / InvalidInput naming the line.
+PressSequence read_presses_csv(const std::string& path, std::size_t max_frames = default_max_press_frames);
 
 }  // namespace emit

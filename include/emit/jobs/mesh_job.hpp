@@ -13,6 +13,7 @@ struct MeshJob {
   std::string out_path;        ///< .msh to write
   bool twin = false;           ///< the twin's finer, electrode-graded mesh
   double element_size_mm = 0;  ///< > 0: overrides the sensor's
+  double max_triangles = 0;    ///< > 0: overrides the sensor's mesh.max_triangles
   int seed = 1;                ///< the twin mesh's seed
 };
 

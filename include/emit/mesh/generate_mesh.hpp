@@ -24,7 +24,13 @@ struct MeshOptions {
   /// below 30°. So the reconstruction's mesh skips it (reconstruction_mesh_options); graded
   /// meshes (the twin's, the contact fit's) keep Gmsh's default single pass.
   int smoothing_steps = 1;
+  /// Refuse to mesh beyond this many triangles (estimated first; MeshSpec::max_triangles).
+  double max_triangles = 1e6;
 };
+
+/// About how many triangles Gmsh makes for the sheet at options.element_size_mm: the sheet's area
+/// over an equilateral triangle's, √3/4·h² (0 for a mesh-file sensor, which is read, not made).
+double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options);
 
 /// The reconstruction mesh of a sensor as its description asks.
 MeshOptions reconstruction_mesh_options(const Sensor& sensor);
@@ -33,7 +39,8 @@ MeshOptions twin_mesh_options(const Sensor& sensor, int seed = 1);
 
 /// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead. Either way the mesh comes
 /// out numbered for locality (sort_for_locality.hpp).
-/// \throw InvalidInput if the sheet cannot be meshed as asked; IoError for an unreadable mesh file.
+/// \throw InvalidInput if the sheet cannot be meshed as asked or its estimated triangle count is
+/// beyond options.max_triangles (the message says how to raise it); IoError for an unreadable mesh file.
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options);
 
 }  // namespace emit

@@ -56,6 +56,10 @@ struct MeshSpec {
   double element_size_mm = 1.2;
   /// The twin's mesh is this many times finer in edge length (2 → about 4× the triangles).
   double twin_refinement = 2.0;
+  /// Meshing refuses a sheet that would have more triangles than this (an estimate made before
+  /// meshing: a typo in a size must not eat the machine's memory). 1 M triangles take ~1 GB to
+  /// mesh; the reconstruction's operators grow with them too.
+  double max_triangles = 1e6;
 };
 
 struct Sensor {
