@@ -64,6 +64,17 @@ std::optional<int> electrode_number(const std::string& name) {
 }  // namespace
 
 Mesh GmshSession::extract_mesh(const std::string& context) {
+  // Gmsh's calls below throw std::string (not std::exception) on failure: each becomes emit's error.
+  try {
+    return extract_mesh_unchecked(context);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {
+    throw InvalidInput(context + ": " + last_error());
+  }
+}
+
+Mesh GmshSession::extract_mesh_unchecked(const std::string& context) {
   std::vector<std::size_t> element_tags, triangle_node_tags;
   gmsh::model::mesh::getElementsByType(2, element_tags, triangle_node_tags);
   if (element_tags.empty()) throw InvalidInput(context + ": the mesh has no 3-node triangles");

@@ -34,6 +34,7 @@ class GmshSession {
   Mesh extract_mesh(const std::string& context);
 
  private:
+  Mesh extract_mesh_unchecked(const std::string& context);
   std::string last_error();
   static std::mutex& mutex();
   std::lock_guard<std::mutex> lock_;
