@@ -103,6 +103,9 @@ void add_live_command(CLI::App& app) {
                   "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  cmd->add_flag("--loop", job.loop,
+                "Replay the recording (file:REC) again from its start at its end, frame numbers and board time "
+                "going on, until Ctrl-C, --frames or --seconds");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
   cmd->callback([a] {
