@@ -60,9 +60,11 @@ void run_live(const LiveJob& job) {
   const LiveStats stats = session.run(stop_requested);
   std::fprintf(say,
                "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
-               "(from a frame's arrival to its contacts written and published)\n",
+               "(from a frame's arrival to its contacts written and published); %llu missed (gaps in the "
+               "source's frame numbers)\n",
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
-               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s());
+               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
+               static_cast<unsigned long long>(stats.frames_missed));
   if (!job.record_path.empty())
     std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
                  static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(),
