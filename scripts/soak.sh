@@ -112,7 +112,7 @@ client_s=$((seconds - 3))
   --latency-log "$out/latency.txt" >"$out/reader.txt" 2>"$out/reader.err" &
 reader=$!
 pids+=("$reader")
-"$client" "127.0.0.1:$port" --seconds "$client_s" --stay-s "$((stay_s * 4))" --pause-s "$pause_s" --stall \
+"$client" "127.0.0.1:$port" --seconds "$client_s" --stay-s "$(awk -v s="$stay_s" 'BEGIN { print 4 * s }')" --pause-s "$pause_s" --stall \
   >"$out/stalled.txt" 2>"$out/stalled.err" &
 stalled=$!
 pids+=("$stalled")

@@ -21,6 +21,7 @@
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <thread>
@@ -150,6 +151,13 @@ std::string visit(const Options& options, Clock::time_point end, bool polite, To
   return {};
 }
 
+/// A number, all of `text`.
+bool number(const char* text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text, &end);
+  return end != text && *end == '\0';
+}
+
 bool parse(int argc, char** argv, Options& options) {
   if (argc < 2) return false;
   const std::string address = argv[1];
@@ -161,25 +169,19 @@ bool parse(int argc, char** argv, Options& options) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
     if (arg == "--stall") options.stall = true;
-    else if (arg == "--seconds" && has_value) options.seconds = std::atof(argv[++i]);
-    else if (arg == "--stay-s" && has_value) options.stay_s = std::atof(argv[++i]);
-    else if (arg == "--pause-s" && has_value) options.pause_s = std::atof(argv[++i]);
-    else if (arg == "--latency-log" && has_value) options.latency_log = argv[++i];
+    else if (arg == "--seconds" && has_value) {
+      if (!number(argv[++i], options.seconds)) return false;
+    } else if (arg == "--stay-s" && has_value) {
+      if (!number(argv[++i], options.stay_s)) return false;
+    } else if (arg == "--pause-s" && has_value) {
+      if (!number(argv[++i], options.pause_s)) return false;
+    } else if (arg == "--latency-log" && has_value) options.latency_log = argv[++i];
     else return false;
   }
   return options.seconds > 0 && options.stay_s > 0 && options.pause_s >= 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
-  if (!parse(argc, argv, options)) {
-    std::fprintf(stderr,
-                 "usage: emit_ws_client HOST:PORT [--seconds S] [--stay-s S] [--pause-s S] [--stall] "
-                 "[--latency-log FILE]\n");
-    return 2;
-  }
+int run(const Options& options) {
   std::FILE* latency_log = nullptr;
   if (!options.latency_log.empty() && !(latency_log = std::fopen(options.latency_log.c_str(), "w"))) {
     std::fprintf(stderr, "ws_client: cannot write %s\n", options.latency_log.c_str());
@@ -211,4 +213,22 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(totals.max_frames));
   if (latency_log) std::fclose(latency_log);
   return totals.failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (!parse(argc, argv, options)) {
+    std::fprintf(stderr,
+                 "usage: emit_ws_client HOST:PORT [--seconds S] [--stay-s S] [--pause-s S] [--stall] "
+                 "[--latency-log FILE]\n");
+    return 2;
+  }
+  try {
+    return run(options);
+  } catch (const std::exception& e) {  // a malformed frame header, out of memory: the tool's own failure
+    std::fprintf(stderr, "ws_client: %s\n", e.what());
+    return 2;
+  }
 }
