@@ -60,9 +60,11 @@ void run_live(const LiveJob& job) {
   const LiveStats stats = session.run(stop_requested);
   std::fprintf(say,
                "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
-               "(from a frame's arrival to its contacts written and published)\n",
+               "(from a frame's arrival to its contacts written and published); %llu missed (gaps in the "
+               "source's frame numbers)\n",
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
-               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s());
+               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
+               static_cast<unsigned long long>(stats.frames_missed));
   if (!job.record_path.empty())
     std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
                  static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(),
@@ -103,6 +105,9 @@ void add_live_command(CLI::App& app) {
                   "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
       ->check(non_negative_number())
       ->capture_default_str();
+  cmd->add_flag("--loop", job.loop,
+                "Replay the recording (file:REC) again from its start at its end, frame numbers and board time "
+                "going on, until Ctrl-C, --frames or --seconds");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
   cmd->callback([a] {

@@ -29,11 +29,15 @@ std::unique_ptr<FrameSource> open_serial(const std::string& spec, const Sensor& 
 
 std::unique_ptr<FrameSource> open_device_source(const std::string& spec, const Sensor& sensor,
                                                 const SourceOptions& options) {
-  if (starts_with(spec, "serial:")) return open_serial(spec, sensor);
+  if (starts_with(spec, "serial:")) {
+    if (options.loop)
+      throw InvalidInput("source \"" + spec + "\": only a recording (file:PATH) can be replayed in a loop");
+    return open_serial(spec, sensor);
+  }
   if (starts_with(spec, "file:")) {
     const std::string path = spec.substr(5);
     if (path.empty()) throw InvalidInput("source \"" + spec + "\": no file path; expected file:PATH");
-    return std::make_unique<FileSource>(path, sensor, options.frames_per_s == 0);
+    return std::make_unique<FileSource>(path, sensor, options.frames_per_s == 0, options.loop);
   }
   return nullptr;
 }

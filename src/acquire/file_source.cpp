@@ -1,6 +1,8 @@
 #include "emit/acquire/file_source.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <thread>
 
@@ -11,8 +13,14 @@ namespace emit {
 namespace fw = emit::firmware;
 using Clock = std::chrono::steady_clock;
 
-FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_possible)
-    : path_(std::move(path)), as_fast_as_possible_(as_fast_as_possible) {
+namespace {
+/// Between passes when the recording cannot say (one frame, or all stamped alike): 50 frames/s,
+/// the simulator's default pace.
+constexpr std::uint32_t fallback_interval_us = 20'000;
+}  // namespace
+
+FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_possible, bool loop)
+    : path_(std::move(path)), as_fast_as_possible_(as_fast_as_possible), loop_(loop) {
   stream_.open(path_, std::ios::binary);
   if (!stream_) throw IoError(path_ + ": cannot open the recording");
   std::error_code ec;
@@ -39,11 +47,31 @@ FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_p
 
 std::string FileSource::description() const {
   return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames, " +
-         (as_fast_as_possible_ ? "as fast as possible)" : "at the recorded pace)");
+         (as_fast_as_possible_ ? "as fast as possible" : "at the recorded pace") + (loop_ ? ", in a loop)" : ")");
+}
+
+void FileSource::rewind() {
+  if (pass_ == 0) {  // the mean interval of the first pass, on the unwrapped clock, in whole µs
+    const double span_s = last_board_time_s_ - first_board_time_s_;
+    const double mean_us = frame_count_ > 1 ? 1e6 * span_s / static_cast<double>(frame_count_ - 1) : 0;
+    loop_interval_us_ =
+        mean_us >= 1 ? static_cast<std::uint32_t>(std::llround(std::min(mean_us, 1e9))) : fallback_interval_us;
+  }
+  ++pass_;
+  // The next pass's first packet gets the last one's number + 1 and its time + the interval.
+  sequence_offset_ = last_sequence_ + 1u - first_sequence_;
+  timestamp_offset_us_ = last_timestamp_us_ + loop_interval_us_ - first_timestamp_us_;
+  frames_read_ = 0;
+  stream_.clear();
+  stream_.seekg(static_cast<std::streamoff>(recording_header_size));
+  if (!stream_) throw IoError(path_ + ": cannot go back to the recording's first frame");
 }
 
 bool FileSource::read_pending() {
-  if (frames_read_ == frame_count_) return false;
+  if (frames_read_ == frame_count_) {
+    if (!loop_ || frame_count_ == 0) return false;
+    rewind();
+  }
   const std::uint64_t index = frames_read_++;
   stream_.read(reinterpret_cast<char*>(packet_.data()), static_cast<std::streamsize>(packet_.size()));
   if (!stream_) throw IoError(path_ + ": read failed at frame " + std::to_string(index));
@@ -52,8 +80,18 @@ bool FileSource::read_pending() {
   decoder_.feed(packet_, [&](const RawFrame& raw) {
     to_volts(raw, header_.vref_V, pending_.volts);
     pending_.raw = raw;
-    pending_.sequence = raw.sequence;
-    pending_.board_time_s = clock_.seconds(raw.timestamp_us);
+    if (pass_ == 0 && index == 0) {
+      first_sequence_ = raw.sequence;
+      first_timestamp_us_ = raw.timestamp_us;
+    }
+    pending_.raw.sequence = raw.sequence + sequence_offset_;  // modulo 2^32, as the board's counters
+    pending_.raw.timestamp_us = raw.timestamp_us + timestamp_offset_us_;
+    last_sequence_ = pending_.raw.sequence;
+    last_timestamp_us_ = pending_.raw.timestamp_us;
+    pending_.sequence = pending_.raw.sequence;
+    pending_.board_time_s = clock_.seconds(pending_.raw.timestamp_us);
+    if (pass_ == 0 && index == 0) first_board_time_s_ = pending_.board_time_s;
+    last_board_time_s_ = pending_.board_time_s;
     decoded = raw.electrode_count == header_.electrode_count;
   });
   if (!decoded)
@@ -95,7 +133,8 @@ bool FileSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
   frame.board_time_s = pending_.board_time_s;
   frame.received = Clock::now();
   have_pending_ = false;
-  finished_ = frames_read_ >= frame_count_;  // the last frame is out: a reader can stop without asking again
+  // The last frame is out: a reader can stop without asking again (a loop goes on).
+  finished_ = !loop_ && frames_read_ >= frame_count_;
   return true;
 }
 

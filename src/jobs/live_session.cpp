@@ -51,6 +51,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   }
   SourceOptions source_options;
   source_options.frames_per_s = job.frames_per_s;
+  source_options.loop = job.loop;
   s.source = open_source(job.source, s.sensor, source_options);
   s.pipeline.emplace(s.sensor, PipelineOptions{job.method, 0, job.cache_dir, {}}, calibration, progress.stage,
                      job.calibration_path);

@@ -47,6 +47,8 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
 }
 
 void LiveLoop::handle(const SourceFrame& frame) {
+  if (handled_ > 0 && frame.sequence > last_sequence_) stats_.frames_missed += frame.sequence - last_sequence_ - 1;
+  last_sequence_ = frame.sequence;
   LiveFrame out;
   out.index = handled_++;
   out.sequence = frame.sequence;

@@ -309,6 +309,33 @@ TEST(Cli, LiveRecordsAndReplaysAFile) {
   EXPECT_GE(pressed, 10);  // the script holds the press from its 16th frame on (frames 15..29)
 }
 
+// A 20-frame recording replayed in a loop for 100 frames: five passes and more, the contacts'
+// "frame" counting on by one from the first reconstructed frame (10, after the baseline's capture)
+// to the last, no gap at the seams; the twin cannot loop.
+TEST(Cli, LiveLoopsARecordingWithFrameNumbersGoingOn) {
+  const std::string d = test::temp_folder("cli_live_loop");
+  auto r = run_emit("live --source sim:fixed:20,40 --frames 10 --fps 0 --method paper --record " + d +
+                    "/r.emitrec --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_emit("live --source file:" + d + "/r.emitrec --loop --fps 0 --frames 100 --method paper --contacts " + d +
+               "/c.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("(20 frames, as fast as possible, in a loop)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("live: 100 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; 0 missed"), std::string::npos) << r.out;
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  std::string line;
+  long expected = 10, frame = -1;
+  for (; std::getline(lines, line); ++expected) {
+    parse_contacts_line(line, &frame);
+    ASSERT_EQ(frame, expected) << line;
+  }
+  EXPECT_EQ(expected, 110);
+  r = run_emit("live --source sim --loop --frames 1 --cache " + d);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("only a recording (file:PATH) can be replayed in a loop"), std::string::npos) << r.err;
+}
+
 // emit live on the simulator holding one press: one JSON line per reconstructed frame (the
 // baseline's 10 capture frames write none), numbered by the source; no contact while the script
 // leaves the sheet untouched (its first 15 frames), then one within live_loop_test's 0.5 mm.

@@ -116,6 +116,44 @@ TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
   EXPECT_EQ(expected_frame, BaselineOptions{}.capture_frames + 40);
 }
 
+/// Hands out one frame's volts under the sequence numbers it is given, then ends.
+class NumberedSource : public FrameSource {
+ public:
+  NumberedSource(Frame volts, std::vector<std::uint64_t> sequences)
+      : volts_(std::move(volts)), sequences_(std::move(sequences)) {}
+  bool next(SourceFrame& frame, std::chrono::milliseconds) override {
+    if (finished()) throw IoError("numbered: end");
+    frame.volts = volts_;
+    frame.sequence = sequences_[next_++];
+    frame.received = std::chrono::steady_clock::now();
+    return true;
+  }
+  bool finished() const override { return next_ == sequences_.size(); }
+  std::string description() const override { return "numbered"; }
+
+ private:
+  Frame volts_;
+  std::vector<std::uint64_t> sequences_;
+  std::size_t next_ = 0;
+};
+
+// The loop counts the frames a source numbered but never handed out: 9 and 10 (inside the
+// baseline's capture, which counts too), 12 and 13, and 5..7 after the source started again (a
+// step back, 3 after 16, is no gap) — and a repeated number is none either.
+TEST(LiveLoop, CountsGapsInTheSourcesNumbersAsMissedFrames) {
+  LiveBench& b = bench();
+  SimSource twin(b.sensor, parse_sim_script("sim"), unpaced());
+  SourceFrame untouched;
+  ASSERT_TRUE(twin.next(untouched, std::chrono::seconds(30)));
+  std::vector<std::uint64_t> sequences = {0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 14, 15, 16, 3, 4, 8, 8, 9};
+  NumberedSource source(untouched.volts, sequences);
+  LiveLoop loop(source, b.pipeline);
+  const std::atomic<bool> stop{false};
+  const LiveStats stats = loop.run(stop);
+  EXPECT_EQ(stats.capture_frames + stats.frames, sequences.size());
+  EXPECT_EQ(stats.frames_missed, 2u + 2u + 3u);
+}
+
 // A WebSocket client as the page is one: the mesh first, then frames (binary: header + one float
 // per triangle); its "recapture" reaches the loop, which captures the baseline again.
 TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {

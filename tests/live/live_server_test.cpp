@@ -62,6 +62,50 @@ TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
 }
 
 // A viewer: the mesh exactly as mesh_message writes it; then a frame; while it is unacknowledged
+// A viewer that acknowledges each frame at once gets them at the loop's pace. Frames are sent in
+// WebSocket fragments of a few kB; were Nagle's algorithm left on, each frame's last fragment would
+// wait for the viewer's delayed TCP ACK (40 ms on Linux): at most 25 frames/s, whatever the loop
+// does. Published every 2 ms for 1 s, the viewer must get well over that: 100 (a loaded machine's
+// scheduling may cost half of the 500).
+TEST(LiveServer, AViewerThatAcknowledgesAtOnceKeepsUpWithTheLoop) {
+  const Mesh mesh = test::strip_mesh(60, 60, 40, 40);  // 3200 triangles: 12.8 kB of pressure a frame
+  LiveServer server("127.0.0.1:0", mesh, "strip", {});
+  net::io_context io;
+  tcp::socket socket(io);
+  socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+  beast::websocket::stream<tcp::socket> ws(std::move(socket));
+  ws.handshake("127.0.0.1", "/ws");
+  beast::flat_buffer buffer;
+  ws.read(buffer);  // the mesh
+  ASSERT_TRUE(ws.got_text());
+  std::atomic<bool> done{false};
+  std::thread loop([&] {
+    const std::vector<Contact> contacts;
+    const Vector pressure = Vector::Zero(mesh.triangle_count());
+    LiveFrame frame;
+    frame.contacts = &contacts;
+    frame.pressure_N_per_mm2 = &pressure;
+    for (frame.index = 0; !done; ++frame.index) {
+      server.publish(frame);
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+  int frames = 0;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+  ws.text(true);
+  while (std::chrono::steady_clock::now() < end) {
+    buffer.consume(buffer.size());
+    ws.read(buffer);
+    ++frames;
+    ws.write(net::buffer(std::string("ack")));
+  }
+  done = true;
+  loop.join();
+  std::printf("%d frames in 1 s\n", frames);
+  EXPECT_GT(frames, 100);
+  ws.close(beast::websocket::close_code::normal);
+}
+
 // two more are published, and after "ack" only the newer comes (the older was replaced).
 TEST(LiveServer, OneFrameInFlightAndTheNewestWaiting) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);

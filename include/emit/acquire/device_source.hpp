@@ -12,7 +12,8 @@ namespace emit {
 
 /// The source for a "serial:…" or "file:…" spec; nullptr for any other spec.
 /// \throw InvalidInput naming the spec if it is malformed (empty path, a baud that is not a
-/// positive number); IoError (one line, naming the path) if the port or file cannot be opened.
+/// positive number) or if options.loop asks a serial port to loop; IoError (one line, naming the path) if the port or
+/// file cannot be opened.
 std::unique_ptr<FrameSource> open_device_source(const std::string& spec, const Sensor& sensor,
                                                 const SourceOptions& options);
 

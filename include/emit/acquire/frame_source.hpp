@@ -31,6 +31,8 @@ struct SourceOptions {
   /// The simulator's first frames have no press, so the baseline (live/baseline.hpp) captures an
   /// untouched sheet; the scripts start after them.
   int untouched_frames = 15;
+  /// A recording (file:) starts again after its last frame, its numbers going on (file_source.hpp).
+  bool loop = false;
 };
 
 class FrameSource {

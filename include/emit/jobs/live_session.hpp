@@ -34,6 +34,7 @@ struct LiveJob {
   std::uint64_t frames = 0;  ///< stop after this many reconstructed frames (0: no limit)
   double seconds = 0;        ///< stop after this long (0: no limit)
   double frames_per_s = 50;  ///< the simulator's pace; 0: a recording as fast as it goes
+  bool loop = false;         ///< a recording starts again at its end (SourceOptions::loop)
 };
 
 class LiveSession {

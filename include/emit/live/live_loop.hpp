@@ -54,6 +54,9 @@ struct LiveOptions {
 struct LiveStats {
   std::uint64_t frames = 0;  ///< reconstructed (and written, and published)
   std::uint64_t capture_frames = 0;
+  /// Frames the source numbered but never handed out: the sum of the gaps between consecutive
+  /// sequence numbers (a number at or behind the last one, a source that started again, is no gap).
+  std::uint64_t frames_missed = 0;
   double seconds = 0;  ///< from the first reconstructed frame to the last
   double frames_per_s = 0;
   LatencyStats latency;  ///< end to end, per reconstructed frame
@@ -103,6 +106,7 @@ class LiveLoop {
   const std::vector<Contact> no_contacts_;
   LiveStats stats_;
   std::uint64_t handled_ = 0;
+  std::uint64_t last_sequence_ = 0;  ///< of the last frame handled (valid once handled_ > 0)
   std::chrono::steady_clock::time_point first_, last_, previous_publish_;
   double mean_interval_s_ = 0, last_latency_s_ = 0;
 };
