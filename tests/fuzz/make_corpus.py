@@ -79,6 +79,8 @@ def sensor_json_seeds():
                                              "electrodes": {"count": 64, "width_mm": 3}}),
         "broken_big_number.json": b'{"shape": {"type": "rectangle", "width_mm": 1e999, "height_mm": 60}}\n',
         "broken_empty.json": b"",
+        # Once a stack overflow: the error message dumped the value, recursing once per level.
+        "broken_deep_name.json": b'{"name": ' + b"[" * 30000 + b"]" * 30000 + b"}",
     })
     return seeds
 
@@ -107,6 +109,9 @@ def frames_csv_seeds():
         "broken_n3_inf_overflow.csv": bytes([0]) + b"1,2,1e999,4,5,6,7,8,9\n",
         "broken_n3_text.csv": bytes([0]) + b"1,2,volts,4,5,6,7,8,9\n",
         "broken_n3_empty_field.csv": bytes([0]) + b"1,2,,4,5,6,7,8,9\n",
+        # Read as one frame today, the text after the NUL byte ignored (the parser stops at the
+        # line's c_str() end); for src/io/frames_csv.cpp's rewrite to reject.
+        "accepted_n3_nul_ends_line.csv": bytes([0]) + b"1,2,3,4,5,6,7,8,9\0,garbage\n",
     }
 
 
@@ -132,6 +137,8 @@ def presses_csv_seeds():
         # std::length_error, and 10^8 asks for 2.4 GB from a 50-byte file.
         "finding_frame_index_saturates.csv": (header + "9223372036854775807,1,1,3,4,0.1\n").encode(),
         "finding_frame_index_allocates.csv": (header + "100000000,1,1,3,4,0.1\n").encode(),
+        # Read today without complaint: NaN and infinite coordinates, a negative radius and force.
+        "accepted_nan_negative.csv": (header + "0,nan,inf,-3,-4,0.1\n").encode(),
     }
 
 
