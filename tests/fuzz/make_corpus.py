@@ -101,6 +101,7 @@ def frames_csv_seeds():
         "n4_two_frames.csv": frames(4, 2),
         "n16_one_frame.csv": frames(16, 1),
         "n8_three_frames.csv": frames(8, 3),
+        "n16_sixteen_frames.csv": frames(16, 16),  # ~45 KB: libFuzzer's length limit starts there
         "n3_blank_lines_crlf_spaces.csv": bytes([0]) + b"\r\n" + b" 1.5, 2,3 ,4e-1,-5,6.25,7,8,9\r\n\t\n" +
                                           b"0,0,0,0,0,0,0,0,0",
         "n3_hex_and_exponents.csv": bytes([0]) + b"0x1p-3,1E+2,.5,5.,+1,-0,1e-300,2,3\n",
@@ -126,6 +127,8 @@ def presses_csv_seeds():
         "grid_with_empty_frames.csv": (header + row(0, 10, 10, 4, 5) + row(2, 20, 10, 4, 5) +
                                        row(5, 50, 50, 4, 5)).encode(),
         "two_fingers.csv": (header + row(0, 20, 30, 5, 8) + row(0, 40, 30, 5, 12) + row(1, 22, 30, 5, 8)).encode(),
+        "grid_thousand_rows.csv": (header + "".join(row(k, 5 + k % 50, 5 + k // 50, 4, 1 + k % 39)
+                                                    for k in range(1000))).encode(),  # ~45 KB
         "header_only_crlf.csv": header.replace("\n", "\r\n").encode(),
         "old_header_five_columns.csv": b"frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4\n\n1,5,6,7,8\n",
         "broken_no_header.csv": b"0,30,30,5,10\n",
