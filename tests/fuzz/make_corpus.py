@@ -176,6 +176,7 @@ def recording_seeds():
         "timestamp_wrap_n16.emitrec": recording_header(bits=16, vref=5.0) +
                                       packet(0, n=16, bits=16, timestamp_us=0xFFFFF000) +
                                       packet(1, n=16, bits=16, timestamp_us=0x00000100),
+        "forty_frames_n16.emitrec": recording_header() + b"".join(packet(k, n=16, seed=2) for k in range(40)),
         "header_only.emitrec": recording_header(),
         "broken_truncated.emitrec": recording_header() + packet(0, n=16) + packet(1, n=16)[:200],
         "broken_crc.emitrec": recording_header() + packet(0, n=16) + bytes(bad_crc) + packet(2, n=16),
