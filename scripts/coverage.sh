@@ -2,7 +2,7 @@
 # Measures the test suite's line coverage of the library (src/ only): installs what emit needs
 # (gcovr included), builds with gcc's --coverage (-Og, no sanitizers) in build-coverage/, runs the
 # suite there, and prints a table per file (the lowest last) and the total; the HTML report goes to
-# build-coverage/coverage/index.html. Left out of the run: the decoder's fuzz test (a separate
+# build-coverage/coverage/index.html. Left out of the run: the fuzz tests (label fuzz: a separate
 # clang++ build, which writes no gcc coverage) and the browser test (the viewer's JavaScript; the
 # server it drives is covered by tests/live/live_server_test.cpp).
 set -euo pipefail
@@ -13,7 +13,7 @@ find build-coverage -name '*.gcda' -delete 2>/dev/null || true  # counts from an
 cmake -S . -B build-coverage -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEMIT_COVERAGE=ON -DEMIT_BUILD_TESTS=ON \
       -DEMIT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-coverage -j"$(nproc)"
-(cd build-coverage && ctest --output-on-failure -j"$(nproc)" -E '^(packet_decoder_fuzz|browser_)')
+(cd build-coverage && ctest --output-on-failure -j"$(nproc)" -LE fuzz -E '^browser_')
 mkdir -p build-coverage/coverage
 # --filter keeps src/ (the generated viewer page lives in build-coverage/, tests/ is not src/).
 gcovr --root . --object-directory build-coverage --filter "$PWD/src/" -j "$(nproc)" --sort-percentage \

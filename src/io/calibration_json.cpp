@@ -58,6 +58,8 @@ Calibration load_calibration(const std::string& path) {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
+  } catch (const nlohmann::json::out_of_range& e) {  // a number beyond a double's range: 1e999
+    throw InvalidInput(path + ": a number out of range (" + e.what() + ")");
   }
   if (!j.is_object())
     throw InvalidInput(path + ": must be a JSON object {\"a1\", \"a2\", \"a3\"} or {\"alpha_ohm_mm2\", \"gamma\"}");

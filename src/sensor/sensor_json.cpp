@@ -21,6 +21,16 @@ namespace {
 
 enum class Sign { any, positive, non_negative };
 
+/// A value as an error message shows it: as written, unless it nests lists or objects, then by its
+/// kind only (dump() recurses once per level: a file nested some 10^4 levels deep overflowed the
+/// stack; tests/fuzz/sensor_json_fuzz.cpp found it).
+std::string shown(const json& v) {
+  if (v.is_structured())
+    for (const json& item : v)
+      if (item.is_structured()) return std::string("a nested JSON ") + v.type_name();
+  return v.dump();
+}
+
 /// Reads one JSON object key by key and, on finish(), rejects keys nobody asked for. Every error
 /// names the full key path ("contact_law.gamma"), so the user knows exactly what to fix.
 class ObjectReader {
@@ -48,7 +58,7 @@ class ObjectReader {
   int integer_or(const std::string& key, int fallback, int min_value, int max_value) {
     if (!has(key)) return fallback;
     const json& v = value(key);
-    if (!v.is_number_integer()) fail(key_path(key), "must be an integer, got " + v.dump());
+    if (!v.is_number_integer()) fail(key_path(key), "must be an integer, got " + shown(v));
     const auto i = v.get<long long>();
     if (i < min_value || i > max_value)
       fail(key_path(key), "must be between " + std::to_string(min_value) + " and " + std::to_string(max_value) +
@@ -57,7 +67,7 @@ class ObjectReader {
   }
   std::string string(const std::string& key) {
     const json& v = value(key);
-    if (!v.is_string()) fail(key_path(key), "must be a string, got " + v.dump());
+    if (!v.is_string()) fail(key_path(key), "must be a string, got " + shown(v));
     return v.get<std::string>();
   }
   Vector2 point(const std::string& key) { return check_point(key_path(key), value(key)); }
@@ -69,7 +79,7 @@ class ObjectReader {
 
   static Vector2 check_point(const std::string& key_path, const json& v) {
     if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
-      fail(key_path, "must be a point [x, y] in mm, got " + v.dump());
+      fail(key_path, "must be a point [x, y] in mm, got " + shown(v));
     Vector2 p(v[0].get<double>(), v[1].get<double>());  // not const: returned by move
     if (!p.allFinite()) fail(key_path, "must be finite");
     return p;
@@ -77,7 +87,7 @@ class ObjectReader {
 
  private:
   double check_number(const std::string& key, const json& v, Sign sign) const {
-    if (!v.is_number()) fail(key_path(key), "must be a number, got " + v.dump());
+    if (!v.is_number()) fail(key_path(key), "must be a number, got " + shown(v));
     const double x = v.get<double>();
     if (!std::isfinite(x)) fail(key_path(key), "must be finite");
     if (sign == Sign::positive && !(x > 0)) fail(key_path(key), "must be positive, got " + v.dump());
@@ -235,6 +245,8 @@ Sensor load_sensor(const std::string& path) {
     j = json::parse(in);
   } catch (const json::parse_error& e) {
     throw InvalidInput(path + ": not valid JSON (" + e.what() + ")");
+  } catch (const json::out_of_range& e) {  // a number beyond a double's range: 1e999
+    throw InvalidInput(path + ": a number out of range (" + e.what() + ")");
   }
   const auto parent = std::filesystem::path(path).parent_path();
   Sensor sensor = parse_sensor(j, path, parent.empty() ? "." : parent.string());

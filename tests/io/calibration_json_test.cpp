@@ -147,5 +147,18 @@ TEST(CalibrationJson, NotJsonNamesTheFile) {
   }
 }
 
+// Found by tests/fuzz/calibration_json_fuzz.cpp: a number beyond a double's range made nlohmann
+// throw out_of_range, which escaped load_calibration as a non-emit exception.
+TEST(CalibrationJson, NumberBeyondADoubleNamesTheFile) {
+  const std::string path = test::temp_folder("calibration_big_number") + "/c.json";
+  std::ofstream(path) << R"({"a1": 1e400, "a2": -1, "a3": -0.8})";
+  try {
+    load_calibration(path);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": a number out of range (", 0), 0u) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace emit

@@ -192,6 +192,33 @@ TEST(Sensor, MalformedJsonNamesTheFile) {
   }
 }
 
+// Found by tests/fuzz/sensor_json_fuzz.cpp: nlohmann throws out_of_range, not parse_error, for a
+// number beyond a double's range; it escaped load_sensor as a non-emit exception.
+TEST(Sensor, NumberBeyondADoubleNamesTheFile) {
+  const std::string path = test::temp_folder("big_number_json") + "/big.json";
+  std::ofstream(path) << R"({"shape": {"type": "rectangle", "width_mm": 1e999, "height_mm": 60}})";
+  try {
+    load_sensor(path);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": a number out of range (", 0), 0u) << e.what();
+  }
+}
+
+// Found by tests/fuzz/sensor_json_fuzz.cpp: the message for a value of the wrong type dumped it,
+// recursing once per level, and a value nested deep enough overflowed the stack.
+TEST(Sensor, DeeplyNestedValueIsInvalidInput) {
+  const std::string path = test::temp_folder("deep_json") + "/deep.json";
+  const int depth = 200000;
+  std::ofstream(path) << R"({"name": )" << std::string(depth, '[') << std::string(depth, ']') << "}";
+  try {
+    load_sensor(path);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": name: must be a string, got a nested JSON array");
+  }
+}
+
 TEST(Sensor, RoundTripsThroughJson) {
   const Sensor s = load_sensor(test::source_path("examples/sensors/hexagon.json"));
   const Sensor back = parse_sensor(sensor_to_json(s));
