@@ -62,6 +62,8 @@ nlohmann::json parse_json(const std::string& line) {
     return nlohmann::json::parse(line);
   } catch (const nlohmann::json::parse_error& e) {
     throw InvalidInput(std::string("contacts line: not valid JSON (") + e.what() + ")");
+  } catch (const nlohmann::json::out_of_range& e) {  // a number beyond a double's range: 1e999
+    throw InvalidInput(std::string("contacts line: a number out of range (") + e.what() + ")");
   }
 }
 

@@ -1,6 +1,7 @@
 #include "emit/io/presses_csv.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -50,6 +51,10 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     const bool whole_line =
         consumed > 0 && line.find_first_not_of(" \t", static_cast<std::size_t>(consumed)) == std::string::npos;
     if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(line));
+    if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) || !(p.radius_mm > 0) || !std::isfinite(p.radius_mm) ||
+        !(p.force_N >= 0) || !std::isfinite(p.force_N))
+      throw InvalidInput(lines.where() + ": a press needs a finite place, a radius > 0 and a force >= 0, got " +
+                         quote_input(line));
     if (static_cast<std::size_t>(frame) >= max_frames)
       throw InvalidInput(lines.where() + ": frame " + std::to_string(frame) + " is beyond the " +
                          std::to_string(max_frames) + " frames it describes");

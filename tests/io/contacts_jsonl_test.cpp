@@ -80,7 +80,11 @@ INSTANTIATE_TEST_SUITE_P(
                       std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})",
                                 "contacts line: contact 0: missing \"y_mm\""},
                       std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
-                                "contacts line: contact 0: \"x_mm\" is not a finite number"}));
+                                "contacts line: contact 0: \"x_mm\" is not a finite number"},
+                      // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
+                      std::pair{R"({"frame": 1e999, "contacts": []})",
+                                "contacts line: a number out of range ([json.exception.out_of_range.406] number "
+                                "overflow parsing '1e999')"}));
 
 }  // namespace
 }  // namespace emit

@@ -58,6 +58,15 @@ TEST(PressesCsv, ErrorsNameTheLine) {
   // Issue 13: a seventh column was read as if it were not there.
   std::ofstream(dir + "/extra.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4,0.14,99\n";
   EXPECT_EQ(error_of(dir + "/extra.csv"), dir + "/extra.csv:2" + expected + "\"0,1,2,3,4,0.14,99\"");
+  // Fuzzing (tests/fuzz/corpus/presses_csv_fuzz/accepted_nan_negative.csv): NaN, infinity and a
+  // negative radius were read as a press.
+  std::ofstream(dir + "/nan.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,nan,inf,-3,-4\n";
+  EXPECT_EQ(error_of(dir + "/nan.csv"),
+            dir + "/nan.csv:2: a press needs a finite place, a radius > 0 and a force >= 0, got \"0,nan,inf,-3,-4\"");
+  // Fuzzing (finding_frame_index_saturates.csv): strtol's LONG_MAX sized the sequence.
+  std::ofstream(dir + "/max.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n9223372036854775807,1,1,3,4,0.1\n";
+  EXPECT_EQ(error_of(dir + "/max.csv"),
+            dir + "/max.csv:2: frame 9223372036854775807 is beyond the 1000000 frames it describes");
   // A frame index far beyond the file's frames is an error, not a vector of 10^15 frames.
   std::ofstream(dir + "/far.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n1000000000000000,1,2,3,4\n";
   EXPECT_EQ(error_of(dir + "/far.csv"),
