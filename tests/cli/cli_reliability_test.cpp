@@ -2,12 +2,13 @@
 // CliBadInput holds the rest): a signal mid-run, a failing live source, warnings that let the run
 // go on, and options after the command.
 #include <fcntl.h>
-#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <csignal>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -52,6 +53,7 @@ TEST(CliReliability, CtrlCDuringReconstructLeavesNoTemporaryFile) {
                                               "--contacts",  dir + "/contacts.jsonl", "--images", dir + "/images",
                                               "--no-cache"};
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;

@@ -59,10 +59,12 @@ TEST(CalibrateJob, ChecksItsInputsFirst) {
   EXPECT_EQ(error_of<InvalidInput>(presses), "pressure calibration needs --reference, --frames, --truth and --out");
   CalibrateJob law;
   law.contact_law_path = dir + "/none.csv";
-  EXPECT_EQ(error_of<IoError>(law), dir + "/none.csv: cannot open resistance-pressure pairs file (No such file or directory)");
+  EXPECT_EQ(error_of<IoError>(law),
+            dir + "/none.csv: cannot open resistance-pressure pairs file (No such file or directory)");
   std::ofstream(dir + "/bad.csv") << "0.1,5e5\n0.2;3e5\n";
   law.contact_law_path = dir + "/bad.csv";
-  EXPECT_EQ(error_of<InvalidInput>(law), dir + "/bad.csv:2: expected pressure_N_per_mm2,resistance_ohm, got \"0.2;3e5\"");
+  EXPECT_EQ(error_of<InvalidInput>(law),
+            dir + "/bad.csv:2: expected pressure_N_per_mm2,resistance_ohm, got \"0.2;3e5\"");
 }
 
 // Frames and truth of different lengths, or no single press among them: said before the models

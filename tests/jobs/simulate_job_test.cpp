@@ -71,7 +71,8 @@ TEST(SimulateJob, ChecksItsInputsFirst) {
   EXPECT_EQ(error_of<InvalidInput>(job), "frame 0, press 1: centre (40, 10) mm is off the sheet");
   job.presses = {{10, 10, 2.5, 5}};
   job.truth_path = dir + "/no/truth.csv";
-  EXPECT_EQ(error_of<IoError>(job), "--truth " + dir + "/no/truth.csv: cannot write: folder " + dir + "/no does not exist");
+  EXPECT_EQ(error_of<IoError>(job),
+            "--truth " + dir + "/no/truth.csv: cannot write: folder " + dir + "/no does not exist");
   EXPECT_FALSE(std::filesystem::exists(job.out_path));  // nothing written
 }
 
