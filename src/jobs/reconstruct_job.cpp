@@ -119,11 +119,12 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   }
   const auto online_start = std::chrono::steady_clock::now();
   FramesCsvReader reader(job.frames_path, N);
-  std::vector<Frame> chunk(chunk_frames);
+  std::vector<Frame> chunk;
+  chunk.reserve(chunk_frames);
   for (std::size_t first = 0; first < report.frames; first += chunk_frames) {
-    std::size_t count = 0;
-    while (count < chunk_frames && reader.next(chunk[count])) ++count;
-    chunk.resize(count);
+    chunk.clear();
+    for (Frame frame; chunk.size() < chunk_frames && reader.next(frame);) chunk.push_back(frame);
+    const std::size_t count = chunk.size();
     check_no_stuck_rows(chunk, sensor.adc, options.excluded, job.frames_path, first);
     if (batch) {
       const auto contacts =
@@ -141,7 +142,6 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
       }
     }
     if (batch) progress.step("reconstructing frame", static_cast<long>(first + count), survey.frames);
-    chunk.resize(chunk_frames);
   }
   contacts_file.commit();
   report.frames_per_s = static_cast<double>(report.frames) / std::max(seconds_since(online_start), 1e-9);
