@@ -15,14 +15,27 @@ struct CalibrateArgs {
   std::string method = "fit";
 };
 
+/// The sensor's self-calibration: each parameter with its 1σ, which the presses determine and
+/// which they leave to the prior, the goodness of fit, and any doubt.
+void print_sensor_fit(const SensorCalibration& s, double factor_low, double factor_high) {
+  std::printf(
+      "fitted the sensor on %d presses: misfit %.3f mV -> %.3f mV rms (chi2 per reading %.2f; 1 is the noise)\n"
+      "  sheet conductance %.3f to %.3f times the nominal; drive %.4f V\n",
+      s.presses, 1e3 * s.rms_misfit_nominal_V, 1e3 * s.rms_misfit_corrected_V, s.chi2_per_reading, factor_low,
+      factor_high, s.drive_voltage_V);
+  std::printf("  %-40s %12s %12s %12s  %s\n", "parameter", "value", "1 sigma", "prior sigma", "determined");
+  for (const CalibratedParameter& p : s.parameters)
+    std::printf("  %-40s %12.5g %12.3g %12.3g  %s\n", p.name.c_str(), p.value, p.std, p.prior_std,
+                p.determined ? "yes" : "no: the prior holds it");
+  std::printf(
+      "  not determined by presses: the sheet's overall resistance (only series resistance x sheet conductance is "
+      "seen), a contact's radial spread (indenter profile, cover blur); the contact law absorbs both\n");
+  for (const std::string& w : s.warnings) std::fprintf(stderr, "emit: warning: calibration: %s\n", w.c_str());
+}
+
 void print_presses(const CalibrateJob& job, const PressCalibrationResult& r) {
   if (const auto* fit = std::get_if<FitCalibration>(&r.calibration)) {
-    if (r.sheet)
-      std::printf(
-          "fitted the sheet's resistance on %d presses: its conductance is %.3f to %.3f times the nominal; "
-          "misfit %.3f mV -> %.3f mV rms\n",
-          r.sheet->presses, r.sheet_factor_low, r.sheet_factor_high, 1e3 * r.sheet->rms_misfit_nominal_V,
-          1e3 * r.sheet->rms_misfit_corrected_V);
+    if (r.sheet) print_sensor_fit(*r.sheet, r.sheet_factor_low, r.sheet_factor_high);
     std::printf(
         "fitted the contact law R = alpha P^gamma as the fit sees it, on %zu presses: alpha = %.6g, gamma = %.6g; "
         "contacts will be reported with the presses' mean indenter radius, %.2f mm\n",

@@ -59,12 +59,23 @@ ContactLawFit fit_contact_law(const std::vector<double>& pressure, const std::ve
   return fit;
 }
 
+namespace {
+
+/// A calibration with the nominal law and nothing else: the fitted discs' conductance as it comes.
+FitCalibration nominal_law(const ContactLaw& law) {
+  FitCalibration c;
+  c.contact_law = law;
+  return c;
+}
+
+}  // namespace
+
 FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, ContactFitter& fitter,
                                                   const Frame& reference, const std::vector<Frame>& frames,
                                                   const std::vector<double>& true_pressure_N_per_mm2,
                                                   const ContactLaw& nominal, const FrameOptions& options) {
   if (frames.size() != true_pressure_N_per_mm2.size()) throw InvalidInput("one true pressure per frame is needed");
-  Reconstructor reconstructor(model, fitter, FitCalibration{nominal, std::nullopt, 0}, options);
+  Reconstructor reconstructor(model, fitter, nominal_law(nominal), options);
   reconstructor.set_reference(reference);
   std::vector<double> pressure, resistance;  // true P, and 1/g of the fitted disc [Ω·mm²]
   for (std::size_t f = 0; f < frames.size(); ++f) {

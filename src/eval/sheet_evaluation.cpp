@@ -13,7 +13,7 @@
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/calibrate/contact_law_calibration.hpp"
-#include "emit/calibrate/sheet_calibration.hpp"
+#include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/jacobian.hpp"
@@ -204,11 +204,13 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
       const SimulatedRun calibration =
           simulate_run(twin,
                        pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
-      const SheetCorrection correction = calibrate_sheet(c.sensor, fit_model->mesh, model.measurements,
-                                                         calibration.frames, calibration.reference, calibration.presses)
-                                             .correction;
+      const SensorCalibration sensor_fit = calibrate_sensor(c.sensor, fit_model->mesh, model.measurements,
+                                                            calibration.frames, calibration.reference,
+                                                            calibration.presses);
+      const SheetCorrection& correction = sensor_fit.correction;
+      const Sensor sensor_as_fitted = calibrated_sensor(c.sensor, sensor_fit);
       const DenseGreenFunction green = fit_green_function(fit_model->mesh, c.sensor, &correction);
-      ContactFitter corrected(c.sensor, fit_model->mesh, green, model.measurements);
+      ContactFitter corrected(sensor_as_fitted, fit_model->mesh, green, model.measurements);
       Reconstructor calibrated(model, corrected, FitCalibration::uncalibrated(c.sensor));
       result.fit_self_calibrated = localisation_errors(calibrated, run, 0.5).strongest_contact;
       std::tie(result.sheet_factor_low, result.sheet_factor_high) = correction.factor_range(fit_model->mesh);

@@ -106,6 +106,7 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
       noise_V_(reading_noise_V(sensor.adc)),
       lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
       upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {
+  predictor_.set_series_resistance(sensor.series_resistance_ohm);
   build_atoms();
 }
 

@@ -1,9 +1,24 @@
 #include "emit/frame/frame_predictor.hpp"
 
+#include <cmath>
+#include <string>
+
+#include "emit/core/errors.hpp"
+
 namespace emit {
 
 FramePredictor::FramePredictor(const Mesh& mesh, const DenseGreenFunction& green)
     : mesh_(mesh), green_(green), patch_of_dof_(green.dofs.dof_count, -1) {}
+
+void FramePredictor::set_series_resistance(const std::vector<double>& ohm) {
+  const int N = green_.dofs.electrode_count;
+  if (!ohm.empty() && static_cast<int>(ohm.size()) != N)
+    throw InvalidInput("series resistance: " + std::to_string(ohm.size()) + " values for " + std::to_string(N) +
+                       " electrodes");
+  for (double r : ohm)
+    if (!(std::isfinite(r) && r >= 0)) throw InvalidInput("series resistance: must be finite and not negative");
+  series_ohm_ = ohm;
+}
 
 /// Numbers the dofs the contact touches and assembles C on them.
 void FramePredictor::gather_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S) {
@@ -57,12 +72,16 @@ void FramePredictor::predict(const std::vector<Index>& triangles, const std::vec
   Z_p_.noalias() = G_pp_ * Y_;
   Z_e_.noalias() = G_pe_.transpose() * Y_;
 
-  // Ground 0: the unit-drive field a = G0_·P M⁻¹ C·1, scaled by E.
+  // Ground 0: the unit-drive field a = G0_·P M⁻¹ C·1. The contact feeds x·D into the sheet (x
+  // the drive across it, D per volt), all of which leaves through electrode 0 and its series
+  // resistance R0, lifting the sheet by c = R0·x·D; c + x = E gives x = E / (1 + R0·D).
   const auto a_p = Z_p_.col(0);
   const auto a_e = Z_e_.col(0);
-  frame.row(0) = E * a_e.transpose();
   const double drawn_by_a = c1_.sum() - c1_.dot(a_p);  // current the contact feeds in, unit drive
-  E_ = E, drawn_by_a_ = drawn_by_a;
+  const double R0 = series_ohm_.empty() ? 0.0 : series_ohm_[0];
+  const double x0 = E / (1.0 + R0 * drawn_by_a);
+  frame.row(0) = (Vector::Constant(N, E - x0) + x0 * a_e).transpose();
+  E_ = E, drawn_by_a_ = drawn_by_a, x0_ = x0;
   Q_.resize(p, N);
   Q_.col(0) = Vector::Ones(p) - a_p;
   Q_.rightCols(N - 1) = G_pe_.rightCols(N - 1) - Z_p_.rightCols(N - 1);  // w_l on the patch
@@ -74,10 +93,12 @@ void FramePredictor::predict(const std::vector<Index>& triangles, const std::vec
     W_e_.col(l) = green_.column(l).head(N) - Z_e_.col(l);
     const auto w_e = W_e_.col(l);
     const double lost_through_contact = c1_.dot(Q_.col(l));  // −(contact inflow)
-    // Unknowns x = E − c and I (see forward_model.hpp): u(e_l) = c + x a_l + I w_l(l) = 0, and no
-    // net current at electrode 0: x · drawn_by_a + I · (1 − lost_through_contact) = 0.
+    // Unknowns x = E − c and I (see forward_model.hpp): u(e_l) = c + x a_l + I w_l(l) = −I·R_l
+    // (the current I into electrode l is −I out of it, through R_l to ground), and no net
+    // current at electrode 0: x · drawn_by_a + I · (1 − lost_through_contact) = 0.
+    const double Rl = series_ohm_.empty() ? 0.0 : series_ohm_[static_cast<std::size_t>(l)];
     Eigen::Matrix2d A;
-    A << a_e[l] - 1.0, w_e[l], drawn_by_a, 1.0 - lost_through_contact;
+    A << a_e[l] - 1.0, w_e[l] + Rl, drawn_by_a, 1.0 - lost_through_contact;
     const Eigen::Vector2d xI = A.partialPivLu().solve(Eigen::Vector2d(-E, 0.0));
     regrounding_[l] = A, xI_[l] = xI;
     const double c = E - xI[0];
@@ -99,8 +120,11 @@ void FramePredictor::derivative(const std::vector<Index>& triangles, const std::
   const auto a_p = Z_p_.col(0);
   const auto a_e = Z_e_.col(0);
   const auto da_e = dZ_e_.col(0);
-  d_frame.row(0) = E_ * da_e.transpose();
   const double d_drawn = dc1_.sum() - dc1_.dot(a_p) - c1_.dot(dZ_p_.col(0));
+  // x0 = E / (1 + R0·D): dx0 = −E·R0·dD / (1 + R0·D)²; row 0 = (E − x0) + x0·a.
+  const double R0 = series_ohm_.empty() ? 0.0 : series_ohm_[0];
+  const double dx0 = -E_ * R0 * d_drawn / ((1.0 + R0 * drawn_by_a_) * (1.0 + R0 * drawn_by_a_));
+  d_frame.row(0) = (Vector::Constant(N, -dx0) + dx0 * a_e + x0_ * da_e).transpose();
   for (int l = 1; l < N; ++l) {
     const auto dw_e = -dZ_e_.col(l);  // w_l = G0·l − Z·l
     const double d_lost = dc1_.dot(Q_.col(l)) - c1_.dot(dZ_p_.col(l));

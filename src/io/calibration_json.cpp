@@ -28,7 +28,7 @@ std::vector<double> numbers(const std::string& where, const nlohmann::json& valu
   return out;
 }
 
-/// {"box_mm": [x0, y0, x1, y1], "log_conductance": [θ1 … θ5]}
+/// {"box_mm": [x0, y0, x1, y1], "log_conductance": [θ1 … θ5] or [θ1 … θ9]}
 SheetCorrection sheet_correction_from_json(const std::string& path, const nlohmann::json& j) {
   const std::string where = path + ": sheet_correction";
   if (!j.is_object()) throw InvalidInput(where + ": must be an object {\"box_mm\", \"log_conductance\"}");
@@ -38,13 +38,16 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
   for (const char* key : {"box_mm", "log_conductance"})
     if (!j.contains(key)) throw InvalidInput(where + ": " + key + ": missing");
   const std::vector<double> box = numbers(where + ".box_mm", j["box_mm"], 4);
-  const std::vector<double> theta = numbers(where + ".log_conductance", j["log_conductance"], SheetCorrection::terms);
+  const std::size_t terms = j["log_conductance"].is_array() && j["log_conductance"].size() == SheetCorrection::cubic_terms
+                                ? SheetCorrection::cubic_terms
+                                : SheetCorrection::quadratic_terms;  // else the error says 5
+  const std::vector<double> theta = numbers(where + ".log_conductance", j["log_conductance"], terms);
   if (!(box[2] > box[0] && box[3] > box[1]))
     throw InvalidInput(where + ".box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
   SheetCorrection c;
   c.lower_mm = {box[0], box[1]};
   c.upper_mm = {box[2], box[3]};
-  std::copy(theta.begin(), theta.end(), c.log_conductance.begin());
+  c.log_conductance = theta;
   return c;
 }
 
@@ -71,6 +74,22 @@ Calibration load_calibration(const std::string& path) {
       fit.sheet_correction = sheet_correction_from_json(path, item.value());
       continue;
     }
+    if (law && item.key() == "series_resistance_ohm") {
+      const nlohmann::json& v = item.value();
+      fit.series_resistance_ohm = numbers(path + ": series_resistance_ohm", v, v.is_array() ? v.size() : 1);
+      for (double r : fit.series_resistance_ohm)
+        if (r < 0) throw InvalidInput(path + ": series_resistance_ohm: must not be negative");
+      continue;
+    }
+    if (law && item.key() == "sensor") {
+      if (!item.value().is_string()) throw InvalidInput(path + ": sensor: must be the sensor's name, a string");
+      fit.sensor_name = item.value().get<std::string>();
+      continue;
+    }
+    if (law && item.key() == "report") {
+      if (!item.value().is_object()) throw InvalidInput(path + ": report: must be an object");
+      continue;  // what the calibration found, for people: not read back
+    }
     if (!item.value().is_number() || !std::isfinite(item.value().get<double>()))
       throw InvalidInput(path + ": " + item.key() + ": must be a finite number");
     const double v = item.value().get<double>();
@@ -82,6 +101,13 @@ Calibration load_calibration(const std::string& path) {
     else if (law && item.key() == "indenter_radius_mm" && v > 0) fit.indenter_radius_mm = v;
     else if (law && item.key() == "indenter_radius_mm")
       throw InvalidInput(path + ": indenter_radius_mm must be positive");
+    else if (law && item.key() == "drive_voltage_V" && v > 0) fit.drive_voltage_V = v;
+    else if (law && item.key() == "drive_voltage_V")
+      throw InvalidInput(path + ": drive_voltage_V must be positive");
+    else if (law && item.key() == "electrode_count" && v >= 3 && v == std::floor(v) && v < 1e6)
+      fit.electrode_count = static_cast<int>(v);
+    else if (law && item.key() == "electrode_count")
+      throw InvalidInput(path + ": electrode_count must be a whole number of at least 3");
     else
       throw InvalidInput(path + ": " + item.key() + ": unknown key" + (law ? " in a contact-fitting calibration" : ""));
   }
@@ -101,6 +127,10 @@ nlohmann::json to_json(const LinearCalibration& c) { return {{"a1", c.a1}, {"a2"
 nlohmann::json to_json(const FitCalibration& c) {
   nlohmann::json j{{"alpha_ohm_mm2", c.contact_law.alpha_ohm_mm2}, {"gamma", c.contact_law.gamma}};
   if (c.indenter_radius_mm > 0) j["indenter_radius_mm"] = c.indenter_radius_mm;
+  if (!c.sensor_name.empty()) j["sensor"] = c.sensor_name;
+  if (c.electrode_count > 0) j["electrode_count"] = c.electrode_count;
+  if (c.drive_voltage_V > 0) j["drive_voltage_V"] = c.drive_voltage_V;
+  if (!c.series_resistance_ohm.empty()) j["series_resistance_ohm"] = c.series_resistance_ohm;
   if (c.sheet_correction) {
     const SheetCorrection& s = *c.sheet_correction;
     j["sheet_correction"] = {{"box_mm", {s.lower_mm.x(), s.lower_mm.y(), s.upper_mm.x(), s.upper_mm.y()}},
@@ -109,11 +139,30 @@ nlohmann::json to_json(const FitCalibration& c) {
   return j;
 }
 
+nlohmann::json to_json(const SensorCalibration& r) {
+  nlohmann::json parameters = nlohmann::json::array();
+  for (const CalibratedParameter& p : r.parameters)
+    parameters.push_back(
+        {{"name", p.name}, {"value", p.value}, {"std", p.std}, {"prior_std", p.prior_std}, {"determined", p.determined}});
+  return {{"presses", r.presses},
+          {"rms_misfit_nominal_mV", 1e3 * r.rms_misfit_nominal_V},
+          {"rms_misfit_calibrated_mV", 1e3 * r.rms_misfit_corrected_V},
+          {"chi2_per_reading", r.chi2_per_reading},
+          {"parameters", parameters},
+          {"not_determined_by_presses",
+           {"the sheet's overall resistance (only series resistance x sheet conductance is seen; the contact law "
+            "absorbs the rest)",
+            "the contact's radial spread (indenter profile, cover blur): the contact law absorbs it"}},
+          {"warnings", r.warnings}};
+}
+
 }  // namespace
 
-void write_calibration(const std::string& path, const Calibration& calibration) {
+void write_calibration(const std::string& path, const Calibration& calibration, const SensorCalibration* report) {
   AtomicFile file(path);
-  file.stream() << std::visit([](const auto& c) { return to_json(c); }, calibration).dump(2) << '\n';
+  nlohmann::json j = std::visit([](const auto& c) { return to_json(c); }, calibration);
+  if (report) j["report"] = to_json(*report);
+  file.stream() << j.dump(2) << '\n';
   file.commit();
 }
 

@@ -60,7 +60,7 @@ PressCalibrationResult calibrate_presses(const CalibrateJob& job, const Progress
   for (const auto& presses : truth) single += presses.size() == 1;
   if (single == 0) throw InvalidInput(job.truth_path + ": no single presses to calibrate on");
   PressCalibrationResult result = calibrate_from_presses(sensor, job.options, reference, frames, truth, progress.stage);
-  write_calibration(job.out_path, result.calibration);
+  write_calibration(job.out_path, result.calibration, result.sheet ? &*result.sheet : nullptr);
   return result;
 }
 

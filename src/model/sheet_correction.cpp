@@ -5,23 +5,25 @@
 
 namespace emit {
 
-SheetCorrection SheetCorrection::identity_over(const Mesh& mesh) {
+SheetCorrection SheetCorrection::identity_over(const Mesh& mesh, int terms) {
   SheetCorrection c;
+  c.log_conductance.assign(static_cast<std::size_t>(terms == cubic_terms ? cubic_terms : quadratic_terms), 0.0);
   c.lower_mm = mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose();
   c.upper_mm = mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose();
   return c;
 }
 
-std::array<double, SheetCorrection::terms> SheetCorrection::basis(const Vector2& point_mm) const {
+std::vector<double> SheetCorrection::basis(const Vector2& point_mm) const {
   const Vector2 uv = (2 * (point_mm - lower_mm).array() / (upper_mm - lower_mm).array() - 1).matrix();
   const double u = uv.x(), v = uv.y();
+  if (terms() == cubic_terms) return {u, v, u * u, u * v, v * v, u * u * u, u * u * v, u * v * v, v * v * v};
   return {u, v, u * u, u * v, v * v};
 }
 
 double SheetCorrection::factor(const Vector2& point_mm) const {
   const auto b = basis(point_mm);
   double exponent = 0;
-  for (int k = 0; k < terms; ++k)
+  for (int k = 0; k < terms(); ++k)
     exponent += log_conductance[static_cast<std::size_t>(k)] * b[static_cast<std::size_t>(k)];
   return std::exp(exponent);
 }

@@ -37,7 +37,17 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
     return;
   }
   fit_calibration_ = calibration ? std::get<FitCalibration>(*calibration) : FitCalibration::uncalibrated(sensor);
-  fit_sensor_.contact = fit_calibration_.contact_law;
+  const int N = model_.measurements.electrode_count;
+  if (fit_calibration_.electrode_count > 0 && fit_calibration_.electrode_count != N)
+    throw InvalidInput(calibration_source + ": a calibration of a sensor with " +
+                       std::to_string(fit_calibration_.electrode_count) + " electrodes; this one has " +
+                       std::to_string(N));
+  if (!fit_calibration_.series_resistance_ohm.empty() &&
+      static_cast<int>(fit_calibration_.series_resistance_ohm.size()) != N)
+    throw InvalidInput(calibration_source + ": series_resistance_ohm has " +
+                       std::to_string(fit_calibration_.series_resistance_ohm.size()) + " values for " +
+                       std::to_string(N) + " electrodes");
+  fit_sensor_ = fit_calibration_.applied_to(sensor);
   fit_model_ = std::make_unique<FitModel>(
       build_fit_model(sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr,
                       progress));

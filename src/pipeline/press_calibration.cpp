@@ -29,18 +29,25 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
   }
   if (single.empty()) throw InvalidInput("calibration: no single presses to calibrate on");
   calibration.indenter_radius_mm /= static_cast<double>(single.size());
+  calibration.electrode_count = model.measurements.electrode_count;
+  calibration.sensor_name = sensor.name;
   PressCalibrationResult result;
   if (say) say("meshing the sheet for contact fitting");
   FitModel fit_model{fit_mesh(sensor), {}};
+  Sensor calibrated = sensor;
   if (options.fit_sheet) {
-    result.sheet = calibrate_sheet(sensor, fit_model.mesh, model.measurements, frames, reference, truth, say);
+    result.sheet =
+        calibrate_sensor(sensor, fit_model.mesh, model.measurements, frames, reference, truth, options.sensor, say);
     calibration.sheet_correction = result.sheet->correction;
+    calibration.drive_voltage_V = result.sheet->drive_voltage_V;
+    calibration.series_resistance_ohm = result.sheet->series_resistance_ohm;
+    calibrated = calibrated_sensor(sensor, *result.sheet);
     std::tie(result.sheet_factor_low, result.sheet_factor_high) = result.sheet->correction.factor_range(fit_model.mesh);
   }
   if (say) say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");
   fit_model.green = fit_green_function(fit_model.mesh, sensor,
                                        calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
-  ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
+  ContactFitter fitter(calibrated, fit_model.mesh, fit_model.green, model.measurements);
   FrameOptions frame_options;
   frame_options.threshold_fraction = options.threshold_fraction;
   const FittedLawCalibration fitted =

@@ -168,6 +168,29 @@ std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const
   return electrodes;
 }
 
+/// "series_resistance_ohm": one number for every electrode, or one per electrode; ≥ 0 Ω.
+std::vector<double> parse_series_resistance(ObjectReader& r, const Sensor& sensor) {
+  const std::string key = "series_resistance_ohm";
+  const json& v = r.value(key);
+  const auto ohm = [&](const json& x) {
+    if (!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0)
+      ObjectReader::fail(key, "must be a number of ohms, not negative, or a list of them; got " + shown(x));
+    return x.get<double>();
+  };
+  if (v.is_number()) {
+    if (sensor.shape.kind == ShapeKind::mesh_file)
+      ObjectReader::fail(key, "give one value per electrode for a mesh-file sensor");
+    return std::vector<double>(sensor.electrodes.size(), ohm(v));
+  }
+  if (!v.is_array()) ObjectReader::fail(key, "must be a number of ohms or a list of one per electrode");
+  std::vector<double> values;
+  for (const json& x : v) values.push_back(ohm(x));
+  if (sensor.shape.kind != ShapeKind::mesh_file && values.size() != sensor.electrodes.size())
+    ObjectReader::fail(key, std::to_string(values.size()) + " values for " + std::to_string(sensor.electrodes.size()) +
+                                " electrodes");
+  return values;
+}
+
 void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) {
   ObjectReader r(j, "");
   if (r.has("name")) sensor.name = r.string("name");
@@ -183,6 +206,7 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
   sensor.drive_voltage_V = r.number_or("drive_voltage_V", sensor.drive_voltage_V, Sign::positive);
   sensor.sheet_resistance_ohm_per_sq =
       r.number_or("probing_sheet_resistance_ohm_per_sq", sensor.sheet_resistance_ohm_per_sq, Sign::positive);
+  if (r.has("series_resistance_ohm")) sensor.series_resistance_ohm = parse_series_resistance(r, sensor);
   if (r.has("contact_law")) {
     ObjectReader c(r.value("contact_law"), "contact_law");
     sensor.contact.alpha_ohm_mm2 = c.number_or("alpha_ohm_mm2", sensor.contact.alpha_ohm_mm2, Sign::positive);
@@ -288,6 +312,7 @@ json sensor_to_json(const Sensor& sensor) {
   }
   j["drive_voltage_V"] = sensor.drive_voltage_V;
   j["probing_sheet_resistance_ohm_per_sq"] = sensor.sheet_resistance_ohm_per_sq;
+  if (!sensor.series_resistance_ohm.empty()) j["series_resistance_ohm"] = sensor.series_resistance_ohm;
   j["contact_law"] = {{"alpha_ohm_mm2", sensor.contact.alpha_ohm_mm2},
                       {"gamma", sensor.contact.gamma},
                       {"min_pressure_N_per_mm2", sensor.contact.min_pressure_N_per_mm2}};

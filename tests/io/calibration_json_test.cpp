@@ -51,7 +51,9 @@ TEST(CalibrationJson, FitRoundTripKeepsTheSheetAndTheIndenter) {
 // Without an indenter or a sheet, neither is written, and they read back as none.
 TEST(CalibrationJson, FitWithoutExtrasReadsBackWithout) {
   const std::string path = test::temp_folder("calibration_fit_plain") + "/c.json";
-  write_calibration(path, FitCalibration{{2e5, -1.2, 0.002}, std::nullopt, 0});
+  FitCalibration law;
+  law.contact_law = {2e5, -1.2, 0.002};
+  write_calibration(path, law);
   const std::string text = test::read_text(path);
   EXPECT_EQ(text.find("indenter_radius_mm"), std::string::npos) << text;
   EXPECT_EQ(text.find("sheet_correction"), std::string::npos) << text;

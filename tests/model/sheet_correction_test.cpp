@@ -30,12 +30,16 @@ TEST(SheetCorrection, BasisAndFactorFollowTheFormula) {
   c.lower_mm = {0, 0};
   c.upper_mm = {40, 20};
   const auto corner = c.basis({40, 0});  // u = 1, v = −1
-  EXPECT_EQ(corner, (std::array<double, 5>{1, -1, 1, -1, 1}));
+  EXPECT_EQ(corner, (std::vector<double>{1, -1, 1, -1, 1}));
   const auto quarter = c.basis({30, 15});  // u = 0.5, v = 0.5
-  EXPECT_EQ(quarter, (std::array<double, 5>{0.5, 0.5, 0.25, 0.25, 0.25}));
+  EXPECT_EQ(quarter, (std::vector<double>{0.5, 0.5, 0.25, 0.25, 0.25}));
   c.log_conductance = {0.2, -0.1, 0.05, 0.3, 0};
   EXPECT_EQ(c.factor({20, 10}), 1.0);  // the centre: every basis function is 0
   EXPECT_NEAR(c.factor({40, 0}), std::exp(0.2 + 0.1 + 0.05 - 0.3), 1e-15);
+  // Cubic: the four third-order terms follow, u³, u²v, uv², v³.
+  c.log_conductance = {0, 0, 0, 0, 0, 1, 2, 4, 8};
+  EXPECT_EQ(c.basis({30, 15}), (std::vector<double>{0.5, 0.5, 0.25, 0.25, 0.25, 0.125, 0.125, 0.125, 0.125}));
+  EXPECT_NEAR(c.factor({40, 0}), std::exp(1 - 2 + 4 - 8), 1e-15);
 }
 
 // θ = (ln 2, 0, …): the factor is 2^u. On a 6 × 2 strip over [0, 30] mm the centroids nearest the

@@ -23,6 +23,13 @@ class FramePredictor {
   /// Keeps references to both, which must outlive it.
   FramePredictor(const Mesh& mesh, const DenseGreenFunction& green);
 
+  /// Each electrode's series resistance [Ω] (electrode contact + the multiplexer's switch; README,
+  /// "Sensor description"): the grounded electrode l reaches ground through R_l, so its sheet-side
+  /// potential is the current it drains times R_l instead of 0 (a sensing electrode draws no
+  /// current: its reading is its potential). Empty or all 0: ideal grounds. \throw InvalidInput
+  /// for a wrong count or a negative or non-finite value.
+  void set_series_resistance(const std::vector<double>& ohm);
+
   /// The frame (N×N, ground-major, already sized) of a contact given as touched triangles and
   /// their 3×3 contact matrices [S], with the driving layer at `drive_voltage_V`.
   void predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S, double drive_voltage_V,
@@ -45,7 +52,8 @@ class FramePredictor {
   Vector c1_;
   // Kept from predict() for derivative(): the fields on the patch (Q) and the electrodes, and per
   // grounding l the 2×2 system and its solution.
-  double E_ = 0, drawn_by_a_ = 0;
+  double E_ = 0, drawn_by_a_ = 0, x0_ = 0;  ///< x0_: the drive across the sheet with ground 0
+  std::vector<double> series_ohm_;           ///< per electrode; empty: none
   Matrix Q_, W_e_;  ///< W_e_.col(l) = w_l on the electrodes
   std::vector<Eigen::Matrix2d> regrounding_;
   std::vector<Eigen::Vector2d> xI_;

@@ -2,9 +2,13 @@
 /// \file calibration_json.hpp
 /// Pressure calibration files, as `emit calibrate` writes them: {"a1": …, "a2": …, "a3": …}
 /// (paper eq. 8) for the linear methods, {"alpha_ohm_mm2": …, "gamma": …} (eq. 2 as the fit
-/// sees it) for contact fitting; other keys are errors.
+/// sees it, with the sheet's correction, the drive voltage, the series resistances and the sensor
+/// it was made for) for contact fitting; other keys are errors. A contact-fitting file may carry a
+/// "report" (what the sensor calibration found, with uncertainties and its goodness of fit), for
+/// people: it is not read back.
 #include <string>
 
+#include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/model/calibration.hpp"
 
 namespace emit {
@@ -12,6 +16,8 @@ namespace emit {
 /// The kind is told by the keys. \throw IoError if unreadable; InvalidInput naming the key.
 Calibration load_calibration(const std::string& path);
 /// Written via a temporary file renamed into place. \throw IoError.
-void write_calibration(const std::string& path, const Calibration& calibration);
+/// `report`, if given, is written as "report". \throw IoError.
+void write_calibration(const std::string& path, const Calibration& calibration,
+                       const SensorCalibration* report = nullptr);
 
 }  // namespace emit

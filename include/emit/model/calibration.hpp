@@ -6,6 +6,8 @@
 /// FitCalibration; only a file read from disk holds either (io/calibration_json.hpp), and the
 /// pipeline checks it against the method then (pipeline/pipeline.hpp).
 #include <optional>
+#include <string>
+#include <vector>
 #include <variant>
 
 #include "emit/model/pressure.hpp"
@@ -15,7 +17,7 @@
 namespace emit {
 
 /// Contact fitting's calibration, fitted from presses of known place and pressure
-/// (calibrate/contact_law_calibration.hpp, calibrate/sheet_calibration.hpp).
+/// (calibrate/contact_law_calibration.hpp, calibrate/sensor_calibration.hpp).
 struct FitCalibration {
   /// The contact law (paper eq. 2) as the fit sees it: the fitted disc's conductance against the
   /// true pressure.
@@ -28,9 +30,29 @@ struct FitCalibration {
   /// the pressure does not. Contacts are reported with this indenter's area, and force =
   /// pressure × that area.
   double indenter_radius_mm = 0;
+  /// The drive voltage [V] and each electrode's series resistance [Ω] as the presses showed them
+  /// (calibrate/sensor_calibration.hpp); 0 and empty: the sensor's own.
+  double drive_voltage_V = 0;
+  std::vector<double> series_resistance_ohm;
+  /// The sensor it was made for: its electrode count (0: unknown) and name. A calibration of
+  /// another sensor is refused (pipeline/pipeline.hpp).
+  int electrode_count = 0;
+  std::string sensor_name;
 
   /// Uncalibrated: the sensor's own contact law, the nominal sheet, the fitted disc's area.
-  static FitCalibration uncalibrated(const Sensor& sensor) { return {sensor.contact, std::nullopt, 0}; }
+  static FitCalibration uncalibrated(const Sensor& sensor) {
+    FitCalibration c;
+    c.contact_law = sensor.contact;
+    return c;
+  }
+  /// The sensor as this calibration sees it: its contact law, drive voltage and series resistances.
+  Sensor applied_to(const Sensor& sensor) const {
+    Sensor s = sensor;
+    s.contact = contact_law;
+    if (drive_voltage_V > 0) s.drive_voltage_V = drive_voltage_V;
+    if (!series_resistance_ohm.empty()) s.series_resistance_ohm = series_resistance_ohm;
+    return s;
+  }
 };
 
 using Calibration = std::variant<LinearCalibration, FitCalibration>;

@@ -3,16 +3,17 @@
 /// Calibration from presses of known place and force, for a method (`emit calibrate`): the models
 /// built as the pipeline builds them, the presses reconstructed, and the method's kind of
 /// calibration fitted (model/calibration.hpp). For the linear methods, eq. 8's a1, a2, a3
-/// (calibrate/pressure_calibration.hpp); for contact fitting, the sheet's resistance from where
-/// the presses were (calibrate/sheet_calibration.hpp), then the contact law as the fit sees it on
-/// the corrected sheet (calibrate/contact_law_calibration.hpp).
+/// (calibrate/pressure_calibration.hpp); for contact fitting, the sheet's resistance field, the
+/// electrodes' series resistances and the drive voltage from where the presses were
+/// (calibrate/sensor_calibration.hpp), then the contact law as the fit sees it on the calibrated
+/// sensor (calibrate/contact_law_calibration.hpp).
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "emit/calibrate/sheet_calibration.hpp"
+#include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/model/calibration.hpp"
 #include "emit/model/method.hpp"
 #include "emit/sensor/press.hpp"
@@ -23,7 +24,8 @@ struct PressCalibrationOptions {
   Method method = Method::fit;
   double lambda2 = 0;               ///< the linear operator's λ² (0: the method's)
   double threshold_fraction = 0.5;  ///< of the image's maximum (paper §2.4)
-  bool fit_sheet = true;            ///< contact fitting: fit the sheet's resistance variation too
+  bool fit_sheet = true;            ///< contact fitting: fit the sheet, electrodes and drive too
+  SensorCalibrationOptions sensor;  ///< contact fitting with fit_sheet: what to fit
   std::string cache_dir;            ///< the operator cache (empty: none)
 };
 
@@ -33,9 +35,9 @@ struct PressCalibrationResult {
   /// The calibrated pressure − the true one over those presses [N/mm²].
   double rms_N_per_mm2 = 0, max_abs_N_per_mm2 = 0;
   double lambda2 = 0;  ///< the linear operator's λ² (the seeds' operator, for fit)
-  /// Contact fitting with fit_sheet: the sheet's fit, and the corrected conductance's range over
+  /// Contact fitting with fit_sheet: the sensor's fit, and the corrected conductance's range over
   /// the fit mesh as a factor of the nominal.
-  std::optional<SheetCalibration> sheet;
+  std::optional<SensorCalibration> sheet;
   double sheet_factor_low = 1, sheet_factor_high = 1;
 };
 

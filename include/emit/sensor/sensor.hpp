@@ -71,6 +71,10 @@ struct Sensor {
   std::vector<Electrode> electrodes;
   double drive_voltage_V = 3.3;
   double sheet_resistance_ohm_per_sq = 5000.0;
+  /// Each electrode's series resistance [Ω]: its contact with the sheet plus the multiplexer's
+  /// switch. A grounded electrode reaches ground through it (frame_predictor.hpp); a sensing one
+  /// draws no current. Empty: none (ideal grounds). `emit calibrate` fits it from presses.
+  std::vector<double> series_resistance_ohm;
   ContactLaw contact;
   AdcSpec adc;
   MeshSpec mesh;

@@ -1,0 +1,91 @@
+#pragma once
+/// \file sensor_calibration.hpp
+/// Self-calibration of the sheet from presses at known places (issue 14: a real sheet is not its
+/// description). Contact fitting reads a contact's position from the shape of the frame, which the
+/// sheet shapes too. Given presses whose centres are known (the calibration presses of `emit
+/// calibrate`), it fits, to all their frames at once by Levenberg–Marquardt (Ceres):
+///
+/// - the sheet's resistance field, a smooth correction (sheet_correction.hpp, cubic: 9 terms);
+/// - each electrode's series resistance R_l (its contact plus the switch: the grounded electrode
+///   reaches ground through it, frame_predictor.hpp);
+/// - the drive voltage E;
+///
+/// each press a disc held at its true centre with its own contact conductance, solved for inside
+/// each evaluation (variable projection: the outer problem has the sheet's, the electrodes' and
+/// the drive's parameters only). Weak priors (the plausible range of a real sheet) keep a
+/// parameter the presses cannot see at its nominal value; identifiability is read from the fit's
+/// Jacobian: a parameter is *determined* when the presses shrink its uncertainty below half its
+/// prior's (the posterior 1σ from (JᵀJ + prior)⁻¹, scaled by the misfit per reading when the model
+/// misfits beyond the noise).
+///
+/// What presses cannot tell, by the physics (docs/physics.md, "Self-calibration"):
+/// - the sheet's overall resistance: scaling σ by s is the same as scaling every contact
+///   conductance by 1/s and every series resistance by s, so only R·σ is seen (R is reported as
+///   the nominal sheet sees it, which is what the reconstruction needs);
+/// - a radially symmetric spread of a contact (an elastomer cover's blur, the indenter's profile):
+///   while the contact is a current source its field outside it is a point source's (the
+///   mean-value property); the contact law, calibrated with the same indenter, absorbs it.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "emit/frame/contact_fitter.hpp"
+#include "emit/model/sheet_correction.hpp"
+#include "emit/sensor/press.hpp"
+
+namespace emit {
+
+/// One fitted parameter with its uncertainty.
+struct CalibratedParameter {
+  std::string name;    ///< "sheet θ_u", "drive_voltage_V", "series_resistance_ohm[3]"
+  double value = 0;    ///< in the unit its name says
+  double std = 0;      ///< posterior 1σ
+  double prior_std = 0;
+  bool determined = false;  ///< std < half of prior_std: the presses, not the prior, set it
+};
+
+struct SensorCalibrationOptions {
+  int sheet_terms = SheetCorrection::cubic_terms;  ///< 5 (quadratic) or 9 (cubic)
+  bool fit_series_resistance = true;
+  bool fit_drive_voltage = true;
+  int max_iterations = 20;
+  void validate() const;  ///< \throw InvalidInput naming the option
+};
+
+struct SensorCalibration {
+  SheetCorrection correction;
+  std::vector<double> series_resistance_ohm;  ///< per electrode (as the nominal sheet sees it)
+  double drive_voltage_V = 0;
+  std::vector<CalibratedParameter> parameters;
+  /// RMS of predicted − measured over the presses' readings [V], with each press at its true
+  /// centre and its conductance fitted, on the nominal sensor and on the calibrated one; and the
+  /// calibrated one's χ² per reading (about 1 when the model explains the presses to the noise).
+  double rms_misfit_nominal_V = 0, rms_misfit_corrected_V = 0, chi2_per_reading = 0;
+  int presses = 0;
+  /// Plain-language doubts: a misfit far beyond the noise (the wrong sensor file, presses not
+  /// where the truth says), a parameter at the edge of its plausible range.
+  std::vector<std::string> warnings;
+};
+
+/// \param sensor      the nominal sensor (its own series resistances and drive are the start)
+/// \param dV          per press, one value per measurement (frame − no-contact reference)
+/// \param centres_mm  per press, its true centre
+/// \param progress    told a line of news per iteration (may be empty)
+/// \throw InvalidInput for fewer than 8 presses or a centre off the mesh; SolverError if the fit
+///        fails.
+SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
+                                   const std::vector<Vector>& dV, const std::vector<Vector2>& centres_mm,
+                                   const SensorCalibrationOptions& options = {}, const FitOptions& fit_options = {},
+                                   const std::function<void(const std::string&)>& progress = {});
+
+/// The same from calibration frames and their presses (`emit calibrate`'s inputs): the
+/// single-press frames, less the no-contact reference, at their presses' centres.
+SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, const MeasurementSet& measurements,
+                                   const std::vector<Frame>& frames, const Frame& reference,
+                                   const PressSequence& presses, const SensorCalibrationOptions& options = {},
+                                   const std::function<void(const std::string&)>& progress = {});
+
+/// The sensor as calibrated: its drive voltage and series resistances replaced by the fitted ones.
+Sensor calibrated_sensor(const Sensor& nominal, const SensorCalibration& calibration);
+
+}  // namespace emit
