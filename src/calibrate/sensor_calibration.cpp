@@ -9,6 +9,7 @@
 #include <ceres/ceres.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/green_function.hpp"
 #include "emit/sensor/adc.hpp"
 
@@ -21,12 +22,15 @@ struct Blocks {
   std::vector<double> theta;        ///< the sheet correction's log-conductance terms
   std::array<double, 1> log_drive{};  ///< log(E / E_nominal)
   std::vector<double> series;       ///< R_l / series_unit_ohm
+  std::vector<double> shift_mm;     ///< each electrode's slide along the border
 };
 constexpr double series_unit_ohm = 100;
 // The priors: the plausible range of a real sheet (issue 14), one σ each.
 constexpr double theta_prior_std = 1.0;   // a factor e over half the sheet
 constexpr double log_drive_prior_std = 0.1;
 constexpr double series_prior_std = 3.0;  // 300 Ω
+constexpr double shift_prior_std_mm = 0.5;
+constexpr double shift_bound_mm = 1.5;  // slide_electrodes refuses what its room does not allow
 
 /// The presses' misfits (predicted − measured)/σ for a sensor (θ, E, R): the Green's function of
 /// the corrected sheet (on the columns the presses and electrodes need only; kept while θ stays),
@@ -37,24 +41,17 @@ class PressesMisfit {
                 const std::vector<Vector>& dV, const std::vector<Vector2>& centres_mm, const FitOptions& options,
                 int sheet_terms)
       : sensor_(sensor),
-        mesh_(mesh),
+        base_mesh_(mesh),
         measurements_(measurements),
         dV_(dV),
+        centres_mm_(centres_mm),
+        options_(options),
         noise_V_(reading_noise_V(sensor.adc)),
         box_(SheetCorrection::identity_over(mesh, sheet_terms)) {
-    const DiscContactIntegrator integrator(mesh, options.edge_mm);
-    const ElectrodeDofs dofs = number_electrode_dofs(mesh);
-    for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
-    for (const Vector2& c : centres_mm) {
+    for (const Vector2& c : centres_mm)
       if (!mesh.contains_xy(c))
         throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " +
                            std::to_string(c.y()) + ") mm is off the sheet");
-      DiscLoad load;
-      integrator.integrate({c.x(), c.y(), options.prior_radius_mm, 1.0}, load);  // g = 1: C is linear in g
-      for (Index t : load.triangles)
-        for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh.triangles(t, k)]);
-      unit_loads_.push_back(std::move(load));
-    }
     log_g_.assign(dV.size(), std::log(sensor.contact.conductance_S_per_mm2(0.1)));
   }
 
@@ -73,10 +70,27 @@ class PressesMisfit {
     return ohm;
   }
 
-  /// For ceres::DynamicNumericDiffCostFunction: blocks θ, log E, R.
+  std::vector<double> shifts(const double* shift) const {
+    return std::vector<double>(shift, shift + electrode_count());
+  }
+
+  /// For ceres::DynamicNumericDiffCostFunction: blocks θ, log E, R, electrode shifts.
   bool operator()(double const* const* blocks, double* residuals) const {
     const std::vector<double> theta(blocks[0], blocks[0] + box_.terms());
-    if (!predictor_ || theta != cached_theta_) {  // the Green's function only when the sheet moves
+    const std::vector<double> shift = shifts(blocks[3]);
+    const bool moved = !predictor_ || shift != cached_shift_;
+    if (moved) {  // the electrodes slid: the mesh, the presses' loads and the columns they need
+      predictor_.reset();
+      try {
+        const bool none = std::all_of(shift.begin(), shift.end(), [](double s) { return s == 0; });
+        mesh_ = none ? base_mesh_ : slide_electrodes(base_mesh_, sensor_, shift);
+      } catch (const InvalidInput&) {
+        return false;  // beyond the room to slide: Ceres rejects the step
+      }
+      integrate_presses();
+      cached_shift_ = shift;
+    }
+    if (moved || theta != cached_theta_) {  // the Green's function only when the sheet changes
       predictor_.reset();
       green_ = dense_green_function(
           mesh_, correction(theta.data()).element_conductance_S(mesh_, sensor_.sheet_resistance_ohm_per_sq), columns_);
@@ -92,6 +106,22 @@ class PressesMisfit {
   }
 
  private:
+  /// Each press a held disc of unit conductance at its true centre on the current mesh, and the
+  /// Green's function's columns they and the electrodes need.
+  void integrate_presses() const {
+    const DiscContactIntegrator integrator(mesh_, options_.edge_mm);
+    const ElectrodeDofs dofs = number_electrode_dofs(mesh_);
+    columns_.clear();
+    for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
+    unit_loads_.resize(centres_mm_.size());
+    for (std::size_t i = 0; i < centres_mm_.size(); ++i) {
+      const Vector2& c = centres_mm_[i];
+      integrator.integrate({c.x(), c.y(), options_.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
+      for (Index t : unit_loads_[i].triangles)
+        for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
+    }
+  }
+
   /// Gauss–Newton on s = log g (∂C/∂s = C); leaves the press's residuals in `residuals`.
   bool fit_press(double E, std::size_t i, double* residuals) const {
     const DiscLoad& unit = unit_loads_[i];
@@ -118,13 +148,17 @@ class PressesMisfit {
   }
 
   const Sensor& sensor_;
-  const Mesh& mesh_;
+  const Mesh& base_mesh_;
   const MeasurementSet& measurements_;
   const std::vector<Vector>& dV_;
+  const std::vector<Vector2>& centres_mm_;
+  FitOptions options_;
   double noise_V_;
   SheetCorrection box_;
-  std::vector<int> columns_;
-  std::vector<DiscLoad> unit_loads_;
+  mutable Mesh mesh_;  ///< the base mesh with the electrodes slid to cached_shift_
+  mutable std::vector<double> cached_shift_;
+  mutable std::vector<int> columns_;
+  mutable std::vector<DiscLoad> unit_loads_;
   mutable std::vector<double> log_g_;
   mutable std::vector<Eigen::Matrix3d> scaled_;
   mutable Frame frame_, d_frame_;
@@ -225,13 +259,14 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   Blocks x;
   x.theta.assign(static_cast<std::size_t>(options.sheet_terms), 0.0);
   x.series.assign(static_cast<std::size_t>(N), 0.0);
+  x.shift_mm.assign(static_cast<std::size_t>(N), 0.0);
   for (std::size_t e = 0; e < sensor.series_resistance_ohm.size(); ++e)
     x.series[e] = sensor.series_resistance_ohm[e] / series_unit_ohm;
   const std::vector<double> series_prior_mean = x.series;
   SensorCalibration result;
   result.presses = static_cast<int>(dV.size());
   std::vector<double> residuals(static_cast<std::size_t>(misfit->residual_count()));
-  const double* values[] = {x.theta.data(), x.log_drive.data(), x.series.data()};
+  const double* values[] = {x.theta.data(), x.log_drive.data(), x.series.data(), x.shift_mm.data()};
   if (!(*misfit)(values, residuals.data())) throw SolverError("sensor calibration: the nominal sensor's fit failed");
   result.rms_misfit_nominal_V = rms_V(residuals, noise_V);
 
@@ -242,31 +277,39 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   cost->AddParameterBlock(options.sheet_terms);
   cost->AddParameterBlock(1);
   cost->AddParameterBlock(N);
+  cost->AddParameterBlock(N);
   cost->SetNumResiduals(misfit->residual_count());
   ceres::Problem problem;
-  const ceres::ResidualBlockId data =
-      problem.AddResidualBlock(cost, nullptr, x.theta.data(), x.log_drive.data(), x.series.data());
+  const ceres::ResidualBlockId data = problem.AddResidualBlock(cost, nullptr, x.theta.data(), x.log_drive.data(),
+                                                               x.series.data(), x.shift_mm.data());
   problem.AddResidualBlock(new Prior(std::vector<double>(x.theta.size(), 0.0),
                                      std::vector<double>(x.theta.size(), theta_prior_std)),
                            nullptr, x.theta.data());
   problem.AddResidualBlock(new Prior({0.0}, {log_drive_prior_std}), nullptr, x.log_drive.data());
   problem.AddResidualBlock(new Prior(series_prior_mean, std::vector<double>(x.series.size(), series_prior_std)),
                            nullptr, x.series.data());
+  problem.AddResidualBlock(new Prior(x.shift_mm, std::vector<double>(x.shift_mm.size(), shift_prior_std_mm)), nullptr,
+                           x.shift_mm.data());
   for (int k = 0; k < options.sheet_terms; ++k) {  // a factor of e² either way at most
     problem.SetParameterLowerBound(x.theta.data(), k, -2);
     problem.SetParameterUpperBound(x.theta.data(), k, 2);
   }
   problem.SetParameterLowerBound(x.log_drive.data(), 0, -0.5);
   problem.SetParameterUpperBound(x.log_drive.data(), 0, 0.5);
-  for (int e = 0; e < N; ++e) {  // 0 … 5 kΩ
+  for (int e = 0; e < N; ++e) {  // 0 … 5 kΩ; ±1.5 mm
     problem.SetParameterLowerBound(x.series.data(), e, 0);
     problem.SetParameterUpperBound(x.series.data(), e, 50);
+    problem.SetParameterLowerBound(x.shift_mm.data(), e, -shift_bound_mm);
+    problem.SetParameterUpperBound(x.shift_mm.data(), e, shift_bound_mm);
   }
   std::vector<double*> free_blocks{x.theta.data()};
   if (options.fit_drive_voltage) free_blocks.push_back(x.log_drive.data());
   else problem.SetParameterBlockConstant(x.log_drive.data());
   if (options.fit_series_resistance) free_blocks.push_back(x.series.data());
   else problem.SetParameterBlockConstant(x.series.data());
+  const bool fit_positions = options.fit_electrode_positions && sensor.border.has_value();
+  if (fit_positions) free_blocks.push_back(x.shift_mm.data());
+  else problem.SetParameterBlockConstant(x.shift_mm.data());
 
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::DENSE_QR;
@@ -285,6 +328,7 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   result.correction = misfit->correction(x.theta.data());
   result.drive_voltage_V = misfit->drive_V(x.log_drive.data());
   result.series_resistance_ohm = misfit->series_ohm(x.series.data());
+  result.electrode_shift_mm = x.shift_mm;
   if (!(*misfit)(values, residuals.data())) throw SolverError("sensor calibration: the calibrated sensor's fit failed");
   result.rms_misfit_corrected_V = rms_V(residuals, noise_V);
   const double chi2 = (result.rms_misfit_corrected_V / noise_V) * (result.rms_misfit_corrected_V / noise_V);
@@ -309,6 +353,11 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
       named.emplace_back("series_resistance_ohm[" + std::to_string(e) + "]", series_unit_ohm);
       prior_std.push_back(series_prior_std);
     }
+  if (fit_positions)
+    for (int e = 0; e < N; ++e) {
+      named.emplace_back("electrode_shift_mm[" + std::to_string(e) + "]", 1.0);
+      prior_std.push_back(shift_prior_std_mm);
+    }
   Matrix information = J.transpose() * J;
   for (std::size_t k = 0; k < prior_std.size(); ++k)
     information(static_cast<Index>(k), static_cast<Index>(k)) += 1.0 / (prior_std[k] * prior_std[k]);
@@ -318,6 +367,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   if (options.fit_drive_voltage) flat.push_back(result.drive_voltage_V);
   if (options.fit_series_resistance)
     for (double r : result.series_resistance_ohm) flat.push_back(r);
+  if (fit_positions)
+    for (double d : result.electrode_shift_mm) flat.push_back(d);
   for (std::size_t k = 0; k < named.size(); ++k) {
     CalibratedParameter p;
     p.name = named[k].first;
@@ -341,8 +392,10 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   for (const CalibratedParameter& p : result.parameters) {
     const bool series = p.name.rfind("series", 0) == 0;
     const bool drive = p.name == "drive_voltage_V";
-    const bool at_edge = series ? p.value >= 0.99 * 50 * series_unit_ohm
+    const bool shift = p.name.rfind("electrode_shift", 0) == 0;
+    const bool at_edge = series  ? p.value >= 0.99 * 50 * series_unit_ohm
                          : drive ? std::abs(std::log(p.value / sensor.drive_voltage_V)) > 0.49
+                         : shift ? std::abs(p.value) > 0.99 * shift_bound_mm
                                  : false;
     if (at_edge) result.warnings.push_back(p.name + " is at the edge of its plausible range: implausible fit");
   }
@@ -369,7 +422,9 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
 }
 
 Sensor calibrated_sensor(const Sensor& nominal, const SensorCalibration& calibration) {
-  Sensor sensor = nominal;
+  Sensor sensor = calibration.electrode_shift_mm.empty() || !nominal.border
+                      ? nominal
+                      : with_electrodes_slid(nominal, calibration.electrode_shift_mm);
   if (calibration.drive_voltage_V > 0) sensor.drive_voltage_V = calibration.drive_voltage_V;
   sensor.series_resistance_ohm = calibration.series_resistance_ohm;
   return sensor;

@@ -15,6 +15,7 @@
 #include "emit/calibrate/contact_law_calibration.hpp"
 #include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/reconstruction_model.hpp"
@@ -209,8 +210,9 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
                                                             calibration.presses);
       const SheetCorrection& correction = sensor_fit.correction;
       const Sensor sensor_as_fitted = calibrated_sensor(c.sensor, sensor_fit);
-      const DenseGreenFunction green = fit_green_function(fit_model->mesh, c.sensor, &correction);
-      ContactFitter corrected(sensor_as_fitted, fit_model->mesh, green, model.measurements);
+      const Mesh slid = slide_electrodes(fit_model->mesh, c.sensor, sensor_fit.electrode_shift_mm);
+      const DenseGreenFunction green = fit_green_function(slid, c.sensor, &correction);
+      ContactFitter corrected(sensor_as_fitted, slid, green, model.measurements);
       Reconstructor calibrated(model, corrected, FitCalibration::uncalibrated(c.sensor));
       result.fit_self_calibrated = localisation_errors(calibrated, run, 0.5).strongest_contact;
       std::tie(result.sheet_factor_low, result.sheet_factor_high) = correction.factor_range(fit_model->mesh);

@@ -74,6 +74,11 @@ Calibration load_calibration(const std::string& path) {
       fit.sheet_correction = sheet_correction_from_json(path, item.value());
       continue;
     }
+    if (law && item.key() == "electrode_shift_mm") {
+      const nlohmann::json& v = item.value();
+      fit.electrode_shift_mm = numbers(path + ": electrode_shift_mm", v, v.is_array() ? v.size() : 1);
+      continue;
+    }
     if (law && item.key() == "series_resistance_ohm") {
       const nlohmann::json& v = item.value();
       fit.series_resistance_ohm = numbers(path + ": series_resistance_ohm", v, v.is_array() ? v.size() : 1);
@@ -131,6 +136,7 @@ nlohmann::json to_json(const FitCalibration& c) {
   if (c.electrode_count > 0) j["electrode_count"] = c.electrode_count;
   if (c.drive_voltage_V > 0) j["drive_voltage_V"] = c.drive_voltage_V;
   if (!c.series_resistance_ohm.empty()) j["series_resistance_ohm"] = c.series_resistance_ohm;
+  if (!c.electrode_shift_mm.empty()) j["electrode_shift_mm"] = c.electrode_shift_mm;
   if (c.sheet_correction) {
     const SheetCorrection& s = *c.sheet_correction;
     j["sheet_correction"] = {{"box_mm", {s.lower_mm.x(), s.lower_mm.y(), s.upper_mm.x(), s.upper_mm.y()}},

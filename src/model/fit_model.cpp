@@ -1,6 +1,7 @@
 #include "emit/model/fit_model.hpp"
 
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/slide_electrodes.hpp"
 
 namespace emit {
 
@@ -18,9 +19,11 @@ DenseGreenFunction fit_green_function(const Mesh& fit_mesh, const Sensor& sensor
 }
 
 FitModel build_fit_model(const Sensor& sensor, const SheetCorrection* correction,
-                         const std::function<void(const std::string&)>& progress) {
+                         const std::function<void(const std::string&)>& progress,
+                         const std::vector<double>& electrode_shift_mm) {
   if (progress) progress("meshing the sheet for contact fitting");
   FitModel model{fit_mesh(sensor), {}};
+  if (!electrode_shift_mm.empty()) model.mesh = slide_electrodes(model.mesh, sensor, electrode_shift_mm);
   if (progress) progress("Green's function (" + std::to_string(model.mesh.node_count()) + " nodes)");
   model.green = fit_green_function(model.mesh, sensor, correction);
   return model;

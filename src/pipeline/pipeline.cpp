@@ -42,6 +42,11 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
     throw InvalidInput(calibration_source + ": a calibration of a sensor with " +
                        std::to_string(fit_calibration_.electrode_count) + " electrodes; this one has " +
                        std::to_string(N));
+  if (!fit_calibration_.electrode_shift_mm.empty() &&
+      static_cast<int>(fit_calibration_.electrode_shift_mm.size()) != N)
+    throw InvalidInput(calibration_source + ": electrode_shift_mm has " +
+                       std::to_string(fit_calibration_.electrode_shift_mm.size()) + " values for " +
+                       std::to_string(N) + " electrodes");
   if (!fit_calibration_.series_resistance_ohm.empty() &&
       static_cast<int>(fit_calibration_.series_resistance_ohm.size()) != N)
     throw InvalidInput(calibration_source + ": series_resistance_ohm has " +
@@ -50,7 +55,7 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
   fit_sensor_ = fit_calibration_.applied_to(sensor);
   fit_model_ = std::make_unique<FitModel>(
       build_fit_model(sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr,
-                      progress));
+                      progress, fit_calibration_.electrode_shift_mm));
   fitter_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
 }
 

@@ -6,6 +6,7 @@
 #include "emit/calibrate/pressure_calibration.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/frame/reconstructor.hpp"
+#include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/reconstruction_model.hpp"
 
@@ -42,6 +43,10 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
     calibration.drive_voltage_V = result.sheet->drive_voltage_V;
     calibration.series_resistance_ohm = result.sheet->series_resistance_ohm;
     calibrated = calibrated_sensor(sensor, *result.sheet);
+    if (options.sensor.fit_electrode_positions && sensor.border) {
+      calibration.electrode_shift_mm = result.sheet->electrode_shift_mm;
+      fit_model.mesh = slide_electrodes(fit_model.mesh, sensor, calibration.electrode_shift_mm);
+    }
     std::tie(result.sheet_factor_low, result.sheet_factor_high) = result.sheet->correction.factor_range(fit_model.mesh);
   }
   if (say) say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");

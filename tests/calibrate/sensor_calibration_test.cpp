@@ -42,7 +42,7 @@ struct Sheet30 {
 SensorCalibration calibrate(const Sheet30& s, const SimulatedRun& run) {
   SensorCalibrationOptions sheet_only;
   sheet_only.sheet_terms = SheetCorrection::quadratic_terms;
-  sheet_only.fit_series_resistance = sheet_only.fit_drive_voltage = false;
+  sheet_only.fit_series_resistance = sheet_only.fit_drive_voltage = sheet_only.fit_electrode_positions = false;
   return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses, sheet_only);
 }
 

@@ -6,6 +6,8 @@
 /// calibrate`), it fits, to all their frames at once by Levenberg–Marquardt (Ceres):
 ///
 /// - the sheet's resistance field, a smooth correction (sheet_correction.hpp, cubic: 9 terms);
+/// - each electrode's place along the border (mesh/slide_electrodes.hpp: the mesh slides, its
+///   topology kept, so the frames are smooth in the shifts);
 /// - each electrode's series resistance R_l (its contact plus the switch: the grounded electrode
 ///   reaches ground through it, frame_predictor.hpp);
 /// - the drive voltage E;
@@ -48,6 +50,7 @@ struct SensorCalibrationOptions {
   int sheet_terms = SheetCorrection::cubic_terms;  ///< 5 (quadratic) or 9 (cubic)
   bool fit_series_resistance = true;
   bool fit_drive_voltage = true;
+  bool fit_electrode_positions = true;  ///< (sheets with an analytic border)
   int max_iterations = 20;
   void validate() const;  ///< \throw InvalidInput naming the option
 };
@@ -56,6 +59,7 @@ struct SensorCalibration {
   SheetCorrection correction;
   std::vector<double> series_resistance_ohm;  ///< per electrode (as the nominal sheet sees it)
   double drive_voltage_V = 0;
+  std::vector<double> electrode_shift_mm;  ///< per electrode, along the border (counter-clockwise +)
   std::vector<CalibratedParameter> parameters;
   /// RMS of predicted − measured over the presses' readings [V], with each press at its true
   /// centre and its conductance fitted, on the nominal sensor and on the calibrated one; and the
@@ -85,7 +89,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
                                    const PressSequence& presses, const SensorCalibrationOptions& options = {},
                                    const std::function<void(const std::string&)>& progress = {});
 
-/// The sensor as calibrated: its drive voltage and series resistances replaced by the fitted ones.
+/// The sensor as calibrated: its electrodes moved, its drive voltage and series resistances
+/// replaced by the fitted ones.
 Sensor calibrated_sensor(const Sensor& nominal, const SensorCalibration& calibration);
 
 }  // namespace emit

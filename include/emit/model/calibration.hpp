@@ -34,6 +34,9 @@ struct FitCalibration {
   /// (calibrate/sensor_calibration.hpp); 0 and empty: the sensor's own.
   double drive_voltage_V = 0;
   std::vector<double> series_resistance_ohm;
+  /// Each electrode's slide along the border [mm] as the presses showed it; empty: none. Contact
+  /// fitting's mesh is slid by it (mesh/slide_electrodes.hpp), as the calibration fitted it.
+  std::vector<double> electrode_shift_mm;
   /// The sensor it was made for: its electrode count (0: unknown) and name. A calibration of
   /// another sensor is refused (pipeline/pipeline.hpp).
   int electrode_count = 0;

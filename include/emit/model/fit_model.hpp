@@ -6,6 +6,7 @@
 /// the dense Green's function on it.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "emit/mesh/mesh.hpp"
 #include "emit/model/green_function.hpp"
@@ -28,7 +29,10 @@ DenseGreenFunction fit_green_function(const Mesh& fit_mesh, const Sensor& sensor
 
 /// \param correction  the sheet's fitted resistance correction, if calibrated (else nominal)
 /// \param progress    told each stage's name as it starts (may be empty).
+/// \param electrode_shift_mm  each electrode's calibrated slide along the border
+///                           (mesh/slide_electrodes.hpp); empty: where the sensor says.
 FitModel build_fit_model(const Sensor& sensor, const SheetCorrection* correction = nullptr,
-                         const std::function<void(const std::string&)>& progress = {});
+                         const std::function<void(const std::string&)>& progress = {},
+                         const std::vector<double>& electrode_shift_mm = {});
 
 }  // namespace emit
