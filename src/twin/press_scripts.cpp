@@ -142,6 +142,7 @@ PressSequence fingers_script(const Sensor& sensor, int frames, int fingers, doub
       }
     }
     std::vector<Press> presses;
+    presses.reserve(placed.size());
     for (const Vector2& p : placed) presses.push_back(sampler.press_at(p));  // forces drawn finger by finger
     sequence.push_back(presses);
   }
