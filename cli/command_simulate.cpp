@@ -1,9 +1,11 @@
 // emit simulate: frames from the digital twin, for given presses or a press script.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 
 #include "commands.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/jobs/simulate_job.hpp"
 
 namespace emit::cli {
@@ -18,7 +20,25 @@ struct SimulateArgs {
   double margin_mm = -1;
   std::vector<double> force_N{10.0}, separation_mm{12.0, 40.0}, from_mm, to_mm;
   bool exact = false, print_table = false;
+  std::string profile = "flat";
+  CLI::Option* realistic = nullptr;  ///< --realistic [SEED]
+  std::string realistic_seed;
+  RealisticSheetOptions realistic_options;
+  std::vector<double> realistic_drive_V;
 };
+
+/// The realistic sheet's summary, for the user to compare a calibration with.
+void print_realistic(const RealisticSheet& sheet, const std::string& path) {
+  std::fprintf(stderr,
+               "realistic sheet: Rs x %.4f (%.1f ohm/sq), field x %.3f to x %.3f, drive %.4f V, blur %.2f mm\n"
+               "realistic sheet: electrode shifts %+.3f to %+.3f mm, series resistance %.1f to %.1f ohm; all in %s\n",
+               sheet.sheet_scale, sheet.twin_sensor.sheet_resistance_ohm_per_sq, sheet.field_min_factor,
+               sheet.field_max_factor, sheet.drive_voltage_V, sheet.blur_mm,
+               *std::min_element(sheet.shift_mm.begin(), sheet.shift_mm.end()),
+               *std::max_element(sheet.shift_mm.begin(), sheet.shift_mm.end()),
+               *std::min_element(sheet.series_ohm.begin(), sheet.series_ohm.end()),
+               *std::max_element(sheet.series_ohm.begin(), sheet.series_ohm.end()), path.c_str());
+}
 
 std::array<double, 2> pair_or_single(const std::vector<double>& values, const char* option) {
   if (values.size() == 1) return {values[0], values[0]};
@@ -28,7 +48,31 @@ std::array<double, 2> pair_or_single(const std::vector<double>& values, const ch
 
 void run_simulate(SimulateArgs a) {
   SimulateJob& job = a.job;
-  for (const auto& text : a.presses) job.presses.push_back(parse_press(text));
+  const PressProfile profile = parse_press_profile(a.profile);
+  for (const auto& text : a.presses) {
+    job.presses.push_back(parse_press(text));
+    job.presses.back().profile = profile;
+  }
+  if (a.realistic->count() > 0) {
+    RealisticSheetOptions& realistic = job.realistic.emplace(a.realistic_options);
+    if (!a.realistic_seed.empty()) {
+      std::size_t used = 0;
+      try {
+        realistic.seed = std::stoull(a.realistic_seed, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != a.realistic_seed.size() || a.realistic_seed[0] == '-')
+        throw InvalidInput("--realistic: the seed must be a whole number 0 or larger, got " +
+                           quote_input(a.realistic_seed));
+    }
+    if (!a.realistic_drive_V.empty()) {
+      const auto drive = pair_or_single(a.realistic_drive_V, "--realistic-drive-V");
+      if (!(drive[0] > 0) || drive[1] < drive[0])
+        throw InvalidInput("--realistic-drive-V: give LOW,HIGH volts with 0 < LOW <= HIGH");
+      realistic.drive_voltage_low_V = drive[0], realistic.drive_voltage_high_V = drive[1];
+    }
+  }
   if (!a.script.empty()) {
     PressScript& script = job.script.emplace(a.script_options);
     script.kind = parse_script_kind(a.script);
@@ -36,6 +80,7 @@ void run_simulate(SimulateArgs a) {
     script.style.min_force_N = force[0], script.style.max_force_N = force[1];
     script.style.margin_mm = a.margin_mm >= 0 ? a.margin_mm : script.style.radius_mm;
     script.style.seed = job.twin.noise_seed;
+    script.style.profile = profile;
     const auto separation = pair_or_single(a.separation_mm, "--separation-mm");
     script.min_separation_mm = separation[0], script.max_separation_mm = separation[1];
     if (script.kind == PressScript::Kind::moving) {
@@ -56,6 +101,7 @@ void run_simulate(SimulateArgs a) {
     for (const Frame& frame : r.frames) print_frame_table(frame);
   else print_frames_summary(r.frames, r.presses);
   if (!job.images_dir.empty()) std::printf("wrote %zu images to %s/\n", r.frames.size(), job.images_dir.c_str());
+  if (r.realistic) print_realistic(*r.realistic, r.sheet_path);
 }
 
 }  // namespace
@@ -71,12 +117,16 @@ void add_simulate_command(CLI::App& app) {
       "  emit simulate --script none --frames 10 --out reference.csv\n"
       "  emit simulate --sensor examples/sensors/square30.json --script grid --spacing-mm 5 --out grid.csv\n"
       "  emit simulate --script two-finger --frames 50 --separation-mm 12,40 --force-N 5,20 --out two.csv\n"
-      "  emit simulate --script moving --from 10,10 --to 50,50 --frames 30 --out move.csv");
+      "  emit simulate --script moving --from 10,10 --to 50,50 --frames 30 --out move.csv\n"
+      "  emit simulate --script three-finger --frames 20 --profile spherical --out three.csv\n"
+      "  emit simulate --realistic 7 --script random --frames 30 --out real.csv   (what it drew: real_sheet.json)\n"
+      "  emit simulate --realistic --realistic-series-ohm 0 --realistic-blur-mm 2 --press 30,30,5,10 --out f.csv");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--press", a->presses, "A press x_mm,y_mm,radius_mm,force_N (repeat for simultaneous presses)");
   cmd->add_option("--script", a->script,
-                  "Press script: none (no-contact references), grid, random, two-finger or moving");
+                  "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger or "
+                  "moving");
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
   cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger and moving scripts")
@@ -85,7 +135,12 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(non_negative_number());
   cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());
   cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly")->delimiter(',');
-  cmd->add_option("--separation-mm", a->separation_mm, "Two-finger separation range MIN,MAX")->delimiter(',');
+  cmd->add_option("--separation-mm", a->separation_mm,
+                  "Two-finger separation range MIN,MAX; three- and four-finger: MIN, the least between any two")
+      ->delimiter(',');
+  cmd->add_option("--profile", a->profile,
+                  "Indenter profile of --press and scripts: flat (uniform) or spherical (Hertz)")
+      ->check(CLI::IsMember({"flat", "spherical"}));
   cmd->add_option("--from", a->from_mm, "Moving press start X,Y (mm)")->delimiter(',');
   cmd->add_option("--to", a->to_mm, "Moving press end X,Y (mm)")->delimiter(',');
   cmd->add_option("--margin-mm", a->margin_mm, "Smallest distance from a press centre to the border (default: radius)");
@@ -99,6 +154,30 @@ void add_simulate_command(CLI::App& app) {
       ->check(CLI::Range(-0.9, 0.9));
   cmd->add_option("--dead-electrode", job.twin.dead_electrode, "Simulate this electrode disconnected")
       ->check(non_negative_integer());
+  RealisticSheetOptions& real = a->realistic_options;
+  a->realistic =
+      cmd->add_option("--realistic", a->realistic_seed,
+                      "A realistic sheet, drawn from SEED (default 1): Rs scaled, a smooth field, electrodes "
+                      "shifted, series resistances, the drive voltage, the cover's blur; written to "
+                      "<out>_sheet.json")
+          ->expected(0, 1);
+  const auto realistic_option = [&](const char* name, double& value, const std::string& help,
+                                    const CLI::Validator& check) {
+    cmd->add_option(name, value, help)->check(check)->needs(a->realistic);
+  };
+  realistic_option("--realistic-sheet-scale", real.sheet_scale,
+                   "Overall sheet resistance off by a factor in [1-S, 1+S] (default 0.3)", fraction_below_one());
+  realistic_option("--realistic-field", real.field,
+                   "Smooth field's range over the sheet, +/- this fraction (default 0.15)", fraction_below_one());
+  realistic_option("--realistic-shift-mm", real.electrode_shift_mm,
+                   "Electrodes moved along the border by up to +/- this (default 0.5)", non_negative_number());
+  realistic_option("--realistic-series-ohm", real.series_resistance_ohm,
+                   "Each electrode's series resistance, uniform in [0, this] (default 300)", non_negative_number());
+  realistic_option("--realistic-blur-mm", real.blur_mm, "The cover's Gaussian blur of presses (default 1; 0: none)",
+                   non_negative_number());
+  cmd->add_option("--realistic-drive-V", a->realistic_drive_V, "Drive voltage range LOW,HIGH (default 3.0,3.3)")
+      ->delimiter(',')
+      ->needs(a->realistic);
   cmd->add_flag("--table", a->print_table, "Print every frame as an N x N table instead of a summary");
   cmd->add_option("--images", job.images_dir, "Write a PNG of the sheet's potential per frame into this folder");
   cmd->callback([a] { run_simulate(*a); });

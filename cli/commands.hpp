@@ -35,6 +35,8 @@ Progress stderr_progress(long min_count = 0);
 /// not CLI11's range of doubles.
 const CLI::Validator& positive_number();
 const CLI::Validator& non_negative_number();
+/// A number in [0, 1).
+const CLI::Validator& fraction_below_one();
 const CLI::Validator& positive_integer();
 const CLI::Validator& non_negative_integer();
 

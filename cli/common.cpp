@@ -62,6 +62,12 @@ const CLI::Validator& non_negative_number() {
   return v;
 }
 
+const CLI::Validator& fraction_below_one() {
+  static const CLI::Validator v = number_validator(
+      "FRACTION", false, [](double x) { return x >= 0 && x < 1; }, "a fraction from 0 up to (not including) 1");
+  return v;
+}
+
 const CLI::Validator& positive_integer() {
   static const CLI::Validator v = number_validator(
       "POSITIVE", true, [](double x) { return x > 0; }, "a whole number 1 or larger");

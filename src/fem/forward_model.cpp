@@ -1,6 +1,8 @@
 #include "emit/fem/forward_model.hpp"
 
+#include <cmath>
 #include <optional>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -18,6 +20,7 @@ struct ForwardModel::Impl {
   SparseMatrix stiffness_dof;               ///< K in dof space [S]
   std::optional<CoupledAssembler> driving;  ///< a resistive driving layer; none: an equipotential
   mutable SparseCholesky cholesky;
+  std::vector<double> series_ohm;  ///< per electrode; empty: grounded directly
 
   void set_mesh(Mesh new_mesh) {
     if (new_mesh.electrode_count() < 2) throw InvalidInput("the mesh needs at least 2 electrodes");
@@ -59,11 +62,22 @@ struct ForwardModel::Impl {
     const Vector f0 = Vector(F.col(0)).tail(unknowns - 1);  // row 0 of F, F symmetric
     const double alpha0 = f0.dot(X.col(0)) - drive[0];
     Matrix U = Matrix::Zero(unknowns, N);
-    U.col(0).tail(unknowns - 1) = E * X.col(0);
+    const auto series = [&](int l) { return series_ohm.empty() ? 0.0 : series_ohm[static_cast<std::size_t>(l)]; };
+    if (const double R0 = series(0); R0 > 0) {
+      // Electrode 0 grounded through R0: u = c·1 + x·a with x = E − c. The current injected at
+      // electrode 0 is x·alpha0 (negative: it drains), and it comes from ground through R0, so
+      // −c/R0 = x·alpha0, i.e. E − x = −R0·alpha0·x: x = E / (1 − alpha0·R0).
+      const double x = E / (1.0 - alpha0 * R0);
+      U.col(0).setConstant(E - x);
+      U.col(0).tail(unknowns - 1) += x * X.col(0);
+    } else {
+      U.col(0).tail(unknowns - 1) = E * X.col(0);
+    }
     for (int l = 1; l < N; ++l) {
-      // Unknowns x = E − c and I: u(e_l) = c + x·a_l + I·w_l(l) = 0; net current at electrode 0 = 0.
+      // Unknowns x = E − c and I (the current injected at l; −I drains through R_l to ground):
+      // u(e_l) = c + x·a_l + I·w_l(l) = −I·R_l; net current at electrode 0 = 0.
       Eigen::Matrix2d M;
-      M << X(l - 1, 0) - 1.0, X(l - 1, l), alpha0, f0.dot(X.col(l));
+      M << X(l - 1, 0) - 1.0, X(l - 1, l) + series(l), alpha0, f0.dot(X.col(l));
       const Eigen::Vector2d xI = M.fullPivLu().solve(Eigen::Vector2d(-E, 0.0));
       const double c = E - xI[0];
       U.col(l).setConstant(c);
@@ -102,10 +116,22 @@ ForwardModel& ForwardModel::operator=(ForwardModel&&) noexcept = default;
 const Mesh& ForwardModel::mesh() const { return impl_->mesh; }
 int ForwardModel::electrode_count() const { return impl_->dofs.electrode_count; }
 
+void ForwardModel::set_series_resistance(std::vector<double> ohm) {
+  if (!ohm.empty() && static_cast<int>(ohm.size()) != electrode_count())
+    throw InvalidInput("series resistance: " + std::to_string(ohm.size()) + " values for " +
+                       std::to_string(electrode_count()) + " electrodes");
+  for (const double r : ohm)
+    if (!(r >= 0) || !std::isfinite(r)) throw InvalidInput("series resistance must be finite and >= 0 ohm");
+  impl_->series_ohm = std::move(ohm);
+}
+
 Frame ForwardModel::solve_frame(const ContactLoad& contact, double drive_voltage_V) const {
   const int N = electrode_count();
   const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);
   Frame frame = U.topRows(N).transpose();  // frame(l, m) = potential of electrode m, ground l
+  // Through a series resistance the grounded electrode's sheet side is above 0 V, but the board
+  // reads its grounded line.
+  if (!impl_->series_ohm.empty()) frame.diagonal().setZero();
   return frame;
 }
 

@@ -1,5 +1,6 @@
 #include "emit/io/presses_csv.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -17,15 +18,21 @@ const char* const header = "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2
 }
 
 void write_presses_csv(const std::string& path, const PressSequence& sequence) {
+  // The profile column only when some press is not flat, so files of flat presses stay as they were.
+  bool profiles = false;
+  for (const auto& frame : sequence)
+    for (const Press& p : frame) profiles = profiles || p.profile != PressProfile::flat;
   AtomicFile file(path);
   auto& out = file.stream();
-  out << header << '\n';
+  out << header << (profiles ? ",profile" : "") << '\n';
   char row[256];
   for (std::size_t f = 0; f < sequence.size(); ++f)
     for (const Press& p : sequence[f]) {
-      std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.6f,%.6f\n", f, p.x_mm, p.y_mm, p.radius_mm, p.force_N,
+      std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.radius_mm, p.force_N,
                     p.pressure_N_per_mm2());
       out << row;
+      if (profiles) out << ',' << profile_name(p.profile);
+      out << '\n';
     }
   file.commit();
 }
@@ -48,6 +55,20 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     // NOLINTNEXTLINE(cert-err34-c)
     const int fields = std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm, &p.radius_mm,
                                    &p.force_N, &consumed, &pressure, &consumed);
+    // An optional 7th column after the pressure: the profile, flat or spherical.
+    const auto rest = static_cast<std::size_t>(consumed);
+    // A word there that is not a profile is named as such; a number stays a malformed line.
+    if (fields == 6 && rest + 1 < line.size() && line[rest] == ',' &&
+        std::isalpha(static_cast<unsigned char>(line[rest + 1]))) {
+      std::string name = line.substr(rest + 1);
+      name.erase(name.find_last_not_of(" \t") + 1);
+      try {
+        p.profile = parse_press_profile(name);
+      } catch (const InvalidInput&) {
+        throw InvalidInput(lines.where() + ": profile " + quote_input(name) + " is not flat or spherical");
+      }
+      consumed = static_cast<int>(line.size());
+    }
     const bool whole_line =
         consumed > 0 && line.find_first_not_of(" \t", static_cast<std::size_t>(consumed)) == std::string::npos;
     if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(line));

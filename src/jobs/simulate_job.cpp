@@ -2,6 +2,9 @@
 
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
+#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/frames_csv.hpp"
@@ -14,9 +17,33 @@ namespace emit {
 
 namespace {
 
-std::string default_truth_path(const std::string& out_path) {
+std::string beside_out(const std::string& out_path, const std::string& suffix) {
   std::filesystem::path p(out_path);
-  return (p.parent_path() / (p.stem().string() + "_presses.csv")).string();
+  return (p.parent_path() / (p.stem().string() + suffix)).string();
+}
+
+/// What a realistic sheet drew, for checking a calibration against the truth.
+void write_sheet_json(const std::string& path, const Sensor& nominal, const RealisticSheet& sheet,
+                      const RealisticSheetOptions& options) {
+  nlohmann::json j;
+  j["seed"] = options.seed;
+  j["options"] = {{"sheet_scale", options.sheet_scale},
+                  {"field", options.field},
+                  {"shift_mm", options.electrode_shift_mm},
+                  {"series_ohm", options.series_resistance_ohm},
+                  {"drive_V", {options.drive_voltage_low_V, options.drive_voltage_high_V}},
+                  {"blur_mm", options.blur_mm}};
+  j["sheet_scale"] = sheet.sheet_scale;
+  j["sheet_resistance_ohm_per_sq"] = sheet.twin_sensor.sheet_resistance_ohm_per_sq;
+  j["nominal_sheet_resistance_ohm_per_sq"] = nominal.sheet_resistance_ohm_per_sq;
+  j["field_factor_range"] = {sheet.field_min_factor, sheet.field_max_factor};
+  j["drive_voltage_V"] = sheet.drive_voltage_V;
+  j["blur_mm"] = sheet.blur_mm;
+  j["electrode_shift_mm"] = sheet.shift_mm;
+  j["series_resistance_ohm"] = sheet.series_ohm;
+  AtomicFile file(path);
+  file.stream() << j.dump(2) << '\n';
+  file.commit();
 }
 
 void write_potential_images(Twin& twin, const PressSequence& sequence, const std::string& dir) {
@@ -44,17 +71,29 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
   for (std::size_t f = 0; f < report.presses.size(); ++f)
     for (std::size_t i = 0; i < report.presses[f].size(); ++i)
       validate_press(sensor, report.presses[f][i], "frame " + std::to_string(f) + ", press " + std::to_string(i));
-  report.truth_path = job.truth_path.empty() ? default_truth_path(job.out_path) : job.truth_path;
-  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
-                {{"--out", job.out_path}, {"--truth", report.truth_path}});
+  report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv") : job.truth_path;
+  if (job.realistic) {
+    validate_realistic_sheet_options(*job.realistic);
+    report.sheet_path = job.sheet_path.empty() ? beside_out(job.out_path, "_sheet.json") : job.sheet_path;
+  }
+  std::vector<NamedPath> outputs{{"--out", job.out_path}, {"--truth", report.truth_path}};
+  if (job.realistic) outputs.push_back({"the realistic sheet's description", report.sheet_path});
+  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}}, outputs);
   const int N = static_cast<int>(sensor.electrodes.size());
   if (job.twin.dead_electrode >= N)
     throw InvalidInput("--dead-electrode " + std::to_string(job.twin.dead_electrode) + ": the sensor has " +
                        std::to_string(N) + " electrodes, 0 to " + std::to_string(N - 1));
   prepare_output_folder({"--images", job.images_dir});
 
+  Sensor twin_sensor = sensor;
+  TwinOptions twin_options = job.twin;
+  if (job.realistic) {
+    report.realistic = make_realistic_sheet(sensor, *job.realistic, job.twin);
+    twin_sensor = report.realistic->twin_sensor;
+    twin_options = report.realistic->twin_options;
+  }
   progress.say("meshing the twin of " + sensor.name);
-  Twin twin(sensor, job.twin);
+  Twin twin(twin_sensor, twin_options);
   report.twin_mesh = measure_mesh_quality(twin.mesh());
   for (std::size_t f = 0; f < report.presses.size(); ++f) {
     report.frames.push_back(twin.frame(report.presses[f]));
@@ -62,6 +101,7 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
   }
   write_frames_csv(job.out_path, report.frames);
   write_presses_csv(report.truth_path, report.presses);
+  if (report.realistic) write_sheet_json(report.sheet_path, sensor, *report.realistic, *job.realistic);
   if (!job.images_dir.empty()) write_potential_images(twin, report.presses, job.images_dir);
   return report;
 }

@@ -1,15 +1,33 @@
 #include "emit/sensor/press.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <sstream>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 
 namespace emit {
 
 double Press::pressure_N_per_mm2() const { return force_N / (std::numbers::pi * radius_mm * radius_mm); }
+
+double Press::pressure_at_N_per_mm2(double distance_mm) const {
+  if (!(distance_mm <= radius_mm)) return 0.0;
+  if (profile == PressProfile::flat) return pressure_N_per_mm2();
+  // Hertz: p0 = 3F/(2π a²), which integrates to F over the disc (2π p0 a²/3).
+  const double s = distance_mm / radius_mm;
+  return 1.5 * pressure_N_per_mm2() * std::sqrt(std::max(0.0, 1.0 - s * s));
+}
+
+const char* profile_name(PressProfile profile) { return profile == PressProfile::flat ? "flat" : "spherical"; }
+
+PressProfile parse_press_profile(const std::string& name) {
+  if (name == "flat") return PressProfile::flat;
+  if (name == "spherical") return PressProfile::spherical;
+  throw InvalidInput("press profile " + quote_input(name) + " is not flat or spherical");
+}
 
 Press parse_press(const std::string& text) {
   std::vector<double> values;

@@ -1,10 +1,13 @@
 #include "emit/twin/press_scripts.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 
 namespace emit {
 
@@ -38,7 +41,7 @@ class Sampler {
     return style_.min_force_N == style_.max_force_N ? style_.min_force_N
                                                     : uniform(style_.min_force_N, style_.max_force_N);
   }
-  Press press_at(const Vector2& p) { return Press{p.x(), p.y(), style_.radius_mm, force()}; }
+  Press press_at(const Vector2& p) { return Press{p.x(), p.y(), style_.radius_mm, force(), style_.profile}; }
   bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
   Vector2 random_point() {
     for (int attempt = 0; attempt < 100000; ++attempt) {
@@ -112,6 +115,40 @@ PressSequence two_finger_script(const Sensor& sensor, int frames, double min_sep
   return sequence;
 }
 
+PressSequence fingers_script(const Sensor& sensor, int frames, int fingers, double min_separation_mm,
+                             const PressStyle& style) {
+  if (frames < 1) throw InvalidInput("frames must be at least 1");
+  if (fingers < 1) throw InvalidInput("fingers must be at least 1");
+  if (!(min_separation_mm > 0)) throw InvalidInput("the fingers' separation must be positive");
+  Sampler sampler(sensor, style);
+  PressSequence sequence;
+  for (int f = 0; f < frames; ++f) {
+    // Place the fingers one by one, each far enough from those placed; after 1000 misses in a
+    // row the first ones may have crowded the sheet, so start the frame again.
+    std::vector<Vector2> placed;
+    for (int tries = 0, misses = 0; static_cast<int>(placed.size()) < fingers; ++tries) {
+      if (tries == 200'000) {
+        char message[128];
+        std::snprintf(message, sizeof message, "no room on the sheet for %d presses %g mm apart", fingers,
+                      min_separation_mm);
+        throw InvalidInput(message);
+      }
+      const Vector2 p = sampler.random_point();
+      if (std::all_of(placed.begin(), placed.end(),
+                      [&](const Vector2& q) { return (p - q).norm() >= min_separation_mm; })) {
+        placed.push_back(p), misses = 0;
+      } else if (++misses == 1000) {
+        placed.clear(), misses = 0;
+      }
+    }
+    std::vector<Press> presses;
+    presses.reserve(placed.size());
+    for (const Vector2& p : placed) presses.push_back(sampler.press_at(p));  // forces drawn finger by finger
+    sequence.push_back(presses);
+  }
+  return sequence;
+}
+
 PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
                             const PressStyle& style) {
   if (frames < 2) throw InvalidInput("a moving press needs at least 2 frames");
@@ -131,8 +168,11 @@ PressScript::Kind parse_script_kind(const std::string& name) {
   if (name == "grid") return PressScript::Kind::grid;
   if (name == "random") return PressScript::Kind::random;
   if (name == "two-finger") return PressScript::Kind::two_finger;
+  if (name == "three-finger") return PressScript::Kind::three_finger;
+  if (name == "four-finger") return PressScript::Kind::four_finger;
   if (name == "moving") return PressScript::Kind::moving;
-  throw InvalidInput("--script: unknown script \"" + name + "\" (none, grid, random, two-finger, moving)");
+  throw InvalidInput("--script: unknown script " + quote_input(name) +
+                     " (none, grid, random, two-finger, three-finger, four-finger, moving)");
 }
 
 PressSequence run_script(const Sensor& sensor, const PressScript& script) {
@@ -142,6 +182,10 @@ PressSequence run_script(const Sensor& sensor, const PressScript& script) {
     case PressScript::Kind::random: return random_script(sensor, script.frames, script.style);
     case PressScript::Kind::two_finger:
       return two_finger_script(sensor, script.frames, script.min_separation_mm, script.max_separation_mm, script.style);
+    case PressScript::Kind::three_finger:
+      return fingers_script(sensor, script.frames, 3, script.min_separation_mm, script.style);
+    case PressScript::Kind::four_finger:
+      return fingers_script(sensor, script.frames, 4, script.min_separation_mm, script.style);
     case PressScript::Kind::moving:
       return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
   }

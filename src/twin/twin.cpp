@@ -11,25 +11,35 @@ namespace emit {
 
 namespace {
 
-/// Sheet conductance per triangle: uniform, or varying linearly along x by ± `variation`.
-Vector sheet_conductance_S(const Mesh& mesh, double sheet_resistance_ohm_per_sq, double variation) {
+/// Sheet conductance per triangle: uniform, or varying linearly along x by ± `variation`, times
+/// the options' resistance factor at the centroid if there is one.
+Vector sheet_conductance_S(const Mesh& mesh, double sheet_resistance_ohm_per_sq, const TwinOptions& options) {
+  const double variation = options.sheet_resistance_variation;
   const double x_min = mesh.nodes_mm.col(0).minCoeff(), x_max = mesh.nodes_mm.col(0).maxCoeff();
   Vector conductance(mesh.triangle_count());
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
-    const double across = (mesh.triangle_centroid_mm(t).x() - x_min) / (x_max - x_min);  // 0 … 1
+    const Vector3 centroid = mesh.triangle_centroid_mm(t);
+    const double across = (centroid.x() - x_min) / (x_max - x_min);  // 0 … 1
     conductance[t] = 1.0 / (sheet_resistance_ohm_per_sq * (1.0 + variation * (2.0 * across - 1.0)));
+    if (options.sheet_resistance_factor) {
+      const double factor = options.sheet_resistance_factor(centroid.head<2>());
+      if (!(factor > 0) || !std::isfinite(factor))
+        throw InvalidInput("sheet resistance factor must be positive and finite");
+      conductance[t] /= factor;
+    }
   }
   return conductance;
 }
 
 ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
   Mesh mesh = generate_mesh(sensor, options.mesh ? *options.mesh : twin_mesh_options(sensor, options.mesh_seed));
-  const Vector conductance =
-      sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options.sheet_resistance_variation);
+  const Vector conductance = sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options);
   std::optional<DrivingLayer> driving;
   if (options.driving_sheet_resistance_ohm_per_sq != 0)
     driving = bottom_fed_driving_layer(mesh, options.driving_sheet_resistance_ohm_per_sq);
-  return ForwardModel(std::move(mesh), conductance, driving);
+  ForwardModel model(std::move(mesh), conductance, driving);
+  model.set_series_resistance(options.series_resistance_ohm);
+  return model;
 }
 
 }  // namespace
@@ -38,6 +48,8 @@ Twin::Twin(Sensor sensor, const TwinOptions& options)
     : sensor_(std::move(sensor)), options_(options), model_(twin_model(sensor_, options)), rng_(options.noise_seed) {
   if (!(std::abs(options.sheet_resistance_variation) < 1))
     throw InvalidInput("sheet resistance variation must be a fraction below 1");
+  if (!(options.cover_blur_mm >= 0) || !std::isfinite(options.cover_blur_mm))
+    throw InvalidInput("cover blur must be finite and >= 0 mm");
 }
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
@@ -48,7 +60,7 @@ ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
     if (!sensor_.border && !mesh().contains_xy(Vector2(presses[i].x_mm, presses[i].y_mm)))
       throw InvalidInput(where + ": centre is off the sheet");
   }
-  return press_contact_load(mesh(), presses, sensor_.contact, options_.quadrature_levels);
+  return press_contact_load(mesh(), presses, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
 }
 
 Frame Twin::exact_frame(const std::vector<Press>& presses) const {

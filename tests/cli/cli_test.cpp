@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
@@ -76,6 +78,72 @@ TEST(Cli, TwoFingerAndMovingScripts) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_frames_csv(dir + "/move.csv", 16).size(), 5u);
   EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
+}
+
+// Issue 14: a realistic sheet with three spherical fingers, and what it drew beside the frames.
+TEST(Cli, RealisticSheetWithThreeFingers) {
+  const std::string dir = test::temp_folder("cli_realistic");
+  const auto r = run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
+                          " --realistic 5 --script three-finger --frames 2 --radius-mm 3 --profile spherical --exact "
+                          "--out " +
+                          dir + "/r.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("realistic sheet: Rs x"), std::string::npos) << r.err;
+  const auto frames = read_frames_csv(dir + "/r.csv", 16);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0].diagonal().cwiseAbs().maxCoeff(), 0.0);
+  const PressSequence truth = read_presses_csv(dir + "/r_presses.csv");
+  ASSERT_EQ(truth.size(), 2u);
+  for (const auto& frame : truth) {
+    ASSERT_EQ(frame.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(frame[i].profile, PressProfile::spherical);
+      for (std::size_t j = 0; j < i; ++j)  // the default least separation, 12 mm
+        EXPECT_GE(std::hypot(frame[i].x_mm - frame[j].x_mm, frame[i].y_mm - frame[j].y_mm), 12.0 - 1e-3);
+    }
+  }
+  const auto sheet = nlohmann::json::parse(test::read_text(dir + "/r_sheet.json"));
+  const double drive = sheet.at("drive_voltage_V").get<double>();
+  EXPECT_GE(drive, 3.0);
+  EXPECT_LE(drive, 3.3);
+  // No reading above the drive: the sheet's potentials lie in [0, E] (maximum principle).
+  EXPECT_LE(std::max(frames[0].maxCoeff(), frames[1].maxCoeff()), drive);
+  ASSERT_EQ(sheet.at("electrode_shift_mm").size(), 16u);
+  for (const auto& shift : sheet.at("electrode_shift_mm")) EXPECT_LE(std::abs(shift.get<double>()), 0.5 + 1e-12);
+  for (const auto& ohm : sheet.at("series_resistance_ohm")) {
+    EXPECT_GE(ohm.get<double>(), 0.0);
+    EXPECT_LE(ohm.get<double>(), 300.0);
+  }
+  EXPECT_NEAR(sheet.at("sheet_scale").get<double>(), 1.0, 0.3 + 1e-12);
+  // The same seed draws the same sheet: the same frames.
+  ASSERT_EQ(run_emit(
+                "simulate --sensor " + source_path("examples/sensors/square30.json") +
+                " --realistic 5 --script three-finger --frames 2 --radius-mm 3 --profile spherical --exact --out " +
+                dir + "/again.csv")
+                .exit_code,
+            0);
+  EXPECT_EQ(test::read_text(dir + "/again.csv"), test::read_text(dir + "/r.csv"));
+}
+
+// Four fingers, with the realistic sheet's sizes set one by one.
+TEST(Cli, FourFingersOnASheetWithoutSeriesResistance) {
+  const std::string dir = test::temp_folder("cli_four");
+  const auto r = run_emit(
+      "simulate --script four-finger --frames 2 --separation-mm 15 --exact --realistic --realistic-series-ohm 0 "
+      "--realistic-blur-mm 0 --realistic-sheet-scale 0.1 --realistic-field 0.05 --realistic-shift-mm 0.2 "
+      "--realistic-drive-V 3.1,3.2 --out " +
+      dir + "/four.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const PressSequence truth = read_presses_csv(dir + "/four_presses.csv");
+  ASSERT_EQ(truth.size(), 2u);
+  EXPECT_EQ(truth[1].size(), 4u);
+  EXPECT_EQ(test::read_text(dir + "/four_presses.csv").find("profile"), std::string::npos);  // flat: no column
+  const auto sheet = nlohmann::json::parse(test::read_text(dir + "/four_sheet.json"));
+  EXPECT_NEAR(sheet.at("drive_voltage_V").get<double>(), 3.15, 0.05 + 1e-12);
+  EXPECT_NEAR(sheet.at("sheet_scale").get<double>(), 1.0, 0.1 + 1e-12);
+  EXPECT_NEAR(sheet.at("field_factor_range")[1].get<double>(), 1.05, 0.05 + 1e-12);
+  for (const auto& ohm : sheet.at("series_resistance_ohm")) EXPECT_EQ(ohm.get<double>(), 0.0);
+  for (const auto& shift : sheet.at("electrode_shift_mm")) EXPECT_LE(std::abs(shift.get<double>()), 0.2 + 1e-12);
 }
 
 // A user's round: references, calibration presses, test presses; calibrate, reconstruct.
@@ -435,6 +503,21 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"malformed msh", "simulate --sensor DIR/msh_sensor.json --press 30,30,5,10 --out OUT", "bad.msh"},
         BadRun{"missing msh", "mesh --sensor DIR/none.json --out OUT", "none.json"},
         BadRun{"unknown script", "simulate --script zigzag --out OUT", "unknown script"},
+        BadRun{"realistic size without realistic", "simulate --realistic-field 0.1 --press 30,30,5,10 --out OUT",
+               "--realistic-field requires --realistic"},
+        BadRun{"realistic seed not a number", "simulate --realistic abc --press 30,30,5,10 --out OUT",
+               "--realistic: the seed must be a whole number 0 or larger, got \"abc\""},
+        BadRun{"realistic field too large", "simulate --realistic --realistic-field 1.5 --press 30,30,5,10 --out OUT",
+               "--realistic-field: must be a fraction from 0 up to (not including) 1, got \"1.5\""},
+        BadRun{"realistic series negative",
+               "simulate --realistic --realistic-series-ohm -3 --press 30,30,5,10 --out OUT",
+               "--realistic-series-ohm: must be a number 0 or larger, got \"-3\""},
+        BadRun{"realistic drive reversed",
+               "simulate --realistic --realistic-drive-V 3.3,3.0 --press 30,30,5,10 --out OUT",
+               "--realistic-drive-V: give LOW,HIGH volts with 0 < LOW <= HIGH"},
+        BadRun{"unknown profile", "simulate --profile round --press 30,30,5,10 --out OUT", "--profile: round"},
+        BadRun{"fingers that do not fit", "simulate --script four-finger --separation-mm 55 --frames 1 --out OUT",
+               "no room on the sheet for 4 presses 55 mm apart"},
         BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
         BadRun{"unknown option", "simulate --pres 30,30,5,10 --out OUT", "--pres"},
         BadRun{"NaN in a frame", "reconstruct --reference DIR/ref.csv --frames DIR/nan.csv --contacts OUT --no-cache",

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/SparseCholesky>
 
+#include "emit/core/errors.hpp"
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/stiffness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
@@ -157,6 +158,103 @@ TEST(ForwardModel, GroundedElectrodeReadsZero) {
   EXPECT_LE(frame.diagonal().cwiseAbs().maxCoeff(), test::solve_roundoff * E);
   EXPECT_GT(frame.minCoeff(), -test::solve_roundoff);  // potentials lie in [0, E]
   EXPECT_LT(frame.maxCoeff(), E);
+}
+
+// Series resistance (contact + switch) of the grounded electrode. Independent check: no
+// regrounding, one direct dense solve per grounding of the whole dof system with electrode l
+// tied to ground by a conductance 1/R_l (its diagonal entry), every other electrode floating.
+TEST(ForwardModel, SeriesResistanceAgreesWithDirectSolves) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{24, 33, 6, 12}, {44, 15, 4, 6}}, s.sensor.contact);
+  ForwardModel model(s.mesh, Rs);
+  std::vector<double> series(16);
+  // Large against the real 0-300 ohm, so the lift (tens of mV) is far above round-off.
+  for (int l = 0; l < 16; ++l) series[static_cast<std::size_t>(l)] = 2000.0 + 300.0 * l;
+  model.set_series_resistance(series);
+  const Frame frame = model.solve_frame(contact, E);
+  const Matrix nodal = model.solve_potentials(contact, E);
+
+  const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
+  const SparseMatrix K = to_dof_space(assemble_stiffness(s.mesh, 1.0 / Rs), dofs);
+  const Matrix F = Matrix(K) + Matrix(contact_to_dof_space(s.mesh, contact, dofs));
+  const Vector b = E * (F - Matrix(K)) * Vector::Ones(F.cols());
+  double worst = 0, largest_lift = 0;
+  for (int l = 0; l < 16; ++l) {
+    Matrix A = F;
+    A(l, l) += 1.0 / series[static_cast<std::size_t>(l)];
+    const Vector u = A.ldlt().solve(b);
+    for (int m = 0; m < 16; ++m)
+      if (m != l) worst = std::max(worst, std::abs(frame(l, m) - u[m]));
+    // The sheet side of the grounded electrode sits at I_out·R_l above ground.
+    const Index node = s.mesh.electrode_nodes[static_cast<std::size_t>(l)][0];
+    worst = std::max(worst, std::abs(nodal(node, l) - u[l]));
+    largest_lift = std::max(largest_lift, u[l]);
+  }
+  EXPECT_LE(worst, test::solve_roundoff * E);
+  EXPECT_GT(largest_lift, 1e-3);                           // the check is not vacuous: the ground is lifted by > 1 mV
+  EXPECT_EQ(frame.diagonal().cwiseAbs().maxCoeff(), 0.0);  // the board reads its grounded line
+}
+
+// With R = 0 the frame is today's to round-off (the 2×2 solve sees + 0.0).
+TEST(ForwardModel, ZeroSeriesResistanceReproducesTheFrame) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{35, 40, 5, 10}}, s.sensor.contact);
+  ForwardModel model(s.mesh, Rs);
+  const Frame ideal = model.solve_frame(contact, E);
+  model.set_series_resistance(std::vector<double>(16, 0.0));
+  Frame zero = model.solve_frame(contact, E);
+  zero.diagonal() = ideal.diagonal();  // set to exactly 0 with series resistances; round-off without
+  EXPECT_LE((zero - ideal).cwiseAbs().maxCoeff(), test::machine_epsilon * E);
+}
+
+// Current conservation: what drains through R_l, u(e_l)/R_l, is all the current the contact
+// feeds into the sheet, (C·1)ᵀE − (C u) summed, since every other electrode floats.
+TEST(ForwardModel, SeriesResistanceConservesCurrent) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{20, 20, 5, 15}}, s.sensor.contact);
+  ForwardModel model(s.mesh, Rs);
+  std::vector<double> series(16, 300.0);
+  model.set_series_resistance(series);
+  const Matrix nodal = model.solve_potentials(contact, E);
+  const ElectrodeDofs dofs = number_electrode_dofs(s.mesh);
+  const SparseMatrix C = contact_to_dof_space(s.mesh, contact, dofs);
+  for (int l : {0, 6, 13}) {
+    Vector u(dofs.dof_count);
+    for (Index v = 0; v < nodal.rows(); ++v) u[dofs.dof_of_node[v]] = nodal(v, l);
+    const double fed = (C * (Vector::Constant(u.size(), E) - u)).sum();
+    const double drained = u[l] / 300.0;
+    EXPECT_NEAR(drained, fed, 1e-9 * fed) << "ground " << l;  // two routes to one current: round-off
+    EXPECT_GT(fed, 0.0);
+  }
+}
+
+// A larger series resistance lifts the grounded row, and only it (in the other groundings that
+// electrode floats and draws nothing); R → ∞ leaves no ground: the sheet floats up to E.
+TEST(ForwardModel, LargerSeriesResistanceLiftsItsRow) {
+  SmallSensorModel s;
+  const ContactLoad contact = press_contact_load(s.mesh, {{30, 25, 5, 10}}, s.sensor.contact);
+  ForwardModel model(s.mesh, Rs);
+  const Frame ideal = model.solve_frame(contact, E);
+  for (int l : {0, 3}) {
+    Frame previous = ideal;
+    for (double R : {100.0, 1e3, 1e4, 1e12}) {
+      std::vector<double> series(16, 0.0);
+      series[static_cast<std::size_t>(l)] = R;
+      model.set_series_resistance(series);
+      const Frame frame = model.solve_frame(contact, E);
+      for (int m = 0; m < 16; ++m)
+        if (m != l) EXPECT_GT(frame(l, m), previous(l, m)) << "ground " << l << ", R " << R << ", sense " << m;
+      Frame others = frame - ideal;
+      others.row(l).setZero();
+      EXPECT_LE(others.cwiseAbs().maxCoeff(), test::solve_roundoff * E) << "ground " << l;
+      previous = frame;
+    }
+    // 1e12 ohm against a contact of tens of kilo-ohm: within 1e-6 of E.
+    for (int m = 0; m < 16; ++m)
+      if (m != l) EXPECT_NEAR(previous(l, m), E, 1e-6 * E) << "ground " << l << ", sense " << m;
+  }
+  EXPECT_THROW(model.set_series_resistance({1.0, 2.0}), InvalidInput);
+  EXPECT_THROW(model.set_series_resistance(std::vector<double>(16, -1.0)), InvalidInput);
 }
 
 }  // namespace

@@ -74,5 +74,36 @@ TEST(PressesCsv, ErrorsNameTheLine) {
   EXPECT_EQ(error_of(dir + "/none.csv"), dir + "/none.csv: cannot open presses file (No such file or directory)");
 }
 
+// The profile column: written only when a press is not flat (so files of flat presses are as
+// before), read back, and a row without it is flat.
+TEST(PressesCsv, ProfileColumnWhenSomePressIsNotFlat) {
+  const std::string dir = test::temp_folder("presses_csv_profile");
+  PressSequence sequence = {{{10.5, 20.25, 5, 12.5}}, {{1, 2, 3, 4}, {5.75, 6, 2.5, 0.5, PressProfile::spherical}}};
+  write_presses_csv(dir + "/p.csv", sequence);
+  const std::string text = test::read_text(dir + "/p.csv");
+  EXPECT_EQ(text.substr(0, text.find('\n')), "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile");
+  EXPECT_NE(text.find("0,10.5000,20.2500,5.0000,12.500000,0.159155,flat\n"), std::string::npos) << text;
+  const PressSequence read = read_presses_csv(dir + "/p.csv");
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0][0].profile, PressProfile::flat);
+  EXPECT_EQ(read[1][1].profile, PressProfile::spherical);
+  EXPECT_EQ(read[1][1].radius_mm, 2.5);
+  sequence[1][1].profile = PressProfile::flat;
+  write_presses_csv(dir + "/flat.csv", sequence);
+  EXPECT_EQ(test::read_text(dir + "/flat.csv").find("profile"), std::string::npos);
+  std::ofstream(dir + "/mixed.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile\n"
+                                    << "0,1,2,3,4\n0,1,2,3,4,0.14,spherical \n";
+  const PressSequence mixed = read_presses_csv(dir + "/mixed.csv");
+  ASSERT_EQ(mixed[0].size(), 2u);
+  EXPECT_EQ(mixed[0][0].profile, PressProfile::flat);
+  EXPECT_EQ(mixed[0][1].profile, PressProfile::spherical);
+  std::ofstream(dir + "/round.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile\n"
+                                    << "0,1,2,3,4,0.14,flat\n0,1,2,3,4,0.14,round\n";
+  EXPECT_EQ(error_of(dir + "/round.csv"), dir + "/round.csv:3: profile \"round\" is not flat or spherical");
+  std::ofstream(dir + "/eighth.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile\n"
+                                     << "0,1,2,3,4,0.14,flat,9\n";
+  EXPECT_EQ(error_of(dir + "/eighth.csv"), dir + "/eighth.csv:2: profile \"flat,9\" is not flat or spherical");
+}
+
 }  // namespace
 }  // namespace emit

@@ -76,5 +76,43 @@ TEST(PressScripts, MovingPressFollowsAStraightLine) {
   EXPECT_THROW(moving_script(default_sensor(), 5, Vector2(10, 10), Vector2(70, 30), PressStyle{}), InvalidInput);
 }
 
+// Three and four fingers: every two at least the separation apart, inside the margin, seeded,
+// each with the style's profile.
+TEST(PressScripts, FingersAreAtLeastTheSeparationApart) {
+  const Sensor sensor = default_sensor();
+  PressStyle style;
+  style.profile = PressProfile::spherical;
+  for (int fingers : {3, 4}) {
+    const PressSequence frames = fingers_script(sensor, 50, fingers, 12, style);
+    ASSERT_EQ(frames.size(), 50u);
+    expect_inside_margin(sensor, frames, style.margin_mm);
+    double closest = 1e9;
+    for (const auto& frame : frames) {
+      ASSERT_EQ(frame.size(), static_cast<std::size_t>(fingers));
+      for (std::size_t i = 0; i < frame.size(); ++i) {
+        EXPECT_EQ(frame[i].profile, PressProfile::spherical);
+        for (std::size_t j = 0; j < i; ++j)
+          closest = std::min(closest, std::hypot(frame[i].x_mm - frame[j].x_mm, frame[i].y_mm - frame[j].y_mm));
+      }
+    }
+    EXPECT_GE(closest, 12.0 - 1e-12) << fingers;
+    EXPECT_LT(closest, 20.0) << fingers;  // 50 frames of random places come near the bound
+    EXPECT_EQ(fingers_script(sensor, 50, fingers, 12, style)[7][2].x_mm, frames[7][2].x_mm);  // seeded
+  }
+  PressScript script;
+  script.kind = parse_script_kind("four-finger");
+  script.frames = 2;
+  EXPECT_EQ(run_script(sensor, script)[1].size(), 4u);
+  EXPECT_EQ(parse_script_kind("three-finger"), PressScript::Kind::three_finger);
+  // Four presses 55 mm apart do not fit in the 50 × 50 mm inside the margin (at best, its corners
+  // are 50 mm apart).
+  try {
+    fingers_script(sensor, 1, 4, 55, style);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(), "no room on the sheet for 4 presses 55 mm apart");
+  }
+}
+
 }  // namespace
 }  // namespace emit

@@ -8,8 +8,13 @@
 /// drive (E − c) plus a current I drained at electrode l; u(e_l) = 0 and zero net current at
 /// electrode 0 fix (c, I) by a 2×2 solve. This works because K·1 = 0, so shifting u by c is the
 /// same as lowering the drive by c.
+///
+/// Optionally each electrode reaches ground through a series resistance R_l (its contact and the
+/// multiplexer's switch): a sensing electrode draws no current, so it reads its potential as
+/// before; the grounded one sits at u(e_l) = I_out·R_l, I_out the current it drains.
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "emit/core/types.hpp"
 #include "emit/fem/contact_load.hpp"
@@ -35,6 +40,11 @@ class ForwardModel {
 
   const Mesh& mesh() const;
   int electrode_count() const;
+
+  /// Each electrode's series resistance to ground when grounded [Ω], one per electrode (empty:
+  /// none, an ideal ground). The frame's diagonal (the board's reading of its grounded line)
+  /// stays 0. \throw InvalidInput for a wrong count or a negative or non-finite value.
+  void set_series_resistance(std::vector<double> ohm);
 
   /// Electrode potentials for every grounding. An empty contact gives the zero frame.
   Frame solve_frame(const ContactLoad& contact, double drive_voltage_V) const;

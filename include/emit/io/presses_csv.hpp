@@ -1,7 +1,8 @@
 #pragma once
 /// \file presses_csv.hpp
 /// Ground truth of a simulated run: `frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2`, one
-/// row per press (several rows share a frame index for simultaneous presses).
+/// row per press (several rows share a frame index for simultaneous presses), and a 7th column
+/// `profile` (flat or spherical) when some press is not flat; a row without it is flat.
 #include <cstddef>
 #include <string>
 

@@ -11,6 +11,7 @@
 #include "emit/mesh/mesh_quality.hpp"
 #include "emit/sensor/press.hpp"
 #include "emit/twin/press_scripts.hpp"
+#include "emit/twin/realistic_sheet.hpp"
 #include "emit/twin/twin.hpp"
 
 namespace emit {
@@ -25,14 +26,20 @@ struct SimulateJob {
   std::optional<PressScript> script;
   TwinOptions twin;
   double noise_V = -1;  ///< ≥ 0: replaces the sensor's ADC noise
+  /// A realistic sheet (realistic_sheet.hpp) instead of the nominal one; what it drew goes to
+  /// `sheet_path` (empty: <out's stem>_sheet.json beside it) as JSON.
+  std::optional<RealisticSheetOptions> realistic;
+  std::string sheet_path;
 };
 
 struct SimulateReport {
-  Sensor sensor;  ///< as simulated
+  Sensor sensor;  ///< as described (with --noise-V); a realistic sheet's own is in `realistic`
   PressSequence presses;
   std::vector<Frame> frames;
   MeshQuality twin_mesh;
-  std::string truth_path;  ///< where the presses went
+  std::string truth_path;                   ///< where the presses went
+  std::optional<RealisticSheet> realistic;  ///< what the realistic sheet drew
+  std::string sheet_path;                   ///< where that went (realistic only)
 };
 
 /// \throw InvalidInput (neither or both of presses and script, a press off the sheet), IoError

@@ -1,6 +1,7 @@
 #pragma once
 /// \file press.hpp
-/// A press on the sheet: a flat circular indenter with uniform pressure force/(π r²) on its disc
+/// A press on the sheet: a circular indenter of radius r, by default flat, with uniform pressure
+/// force/(π r²) on its disc, or spherical, with Hertz's p(ρ) = p0·√(1 − ρ²/r²), p0 = 3F/(2π r²)
 /// (README, "Files"). Several presses in one frame add their pressures where they overlap.
 #include <string>
 #include <vector>
@@ -9,12 +10,23 @@
 
 namespace emit {
 
+enum class PressProfile { flat, spherical };
+
 struct Press {
   double x_mm = 0, y_mm = 0;
-  double radius_mm = 5;
+  double radius_mm = 5;  ///< the contact's radius (for spherical, Hertz's a)
   double force_N = 10;
+  PressProfile profile = PressProfile::flat;
+  /// The mean pressure over the disc, F/(π r²), whatever the profile.
   double pressure_N_per_mm2() const;
+  /// The pressure at distance `distance_mm` from the centre (0 outside the disc).
+  double pressure_at_N_per_mm2(double distance_mm) const;
 };
+
+/// "flat", "spherical".
+const char* profile_name(PressProfile profile);
+/// \throw InvalidInput naming the text and the choices.
+PressProfile parse_press_profile(const std::string& name);
 
 /// The presses of each frame of a sequence.
 using PressSequence = std::vector<std::vector<Press>>;

@@ -5,6 +5,11 @@
 /// cuts it subdivides adaptively (4 children per level) and integrates each child with the
 /// edge-midpoint rule, exact for the quadratic φ_i φ_j, with the pressure taken at the child's
 /// centroid. The contact edge is then resolved to h / 2^levels, not to the mesh size.
+///
+/// Spherical presses, or any press under a cover that blurs (press_pressure.hpp), have a smooth
+/// pressure field: triangles within its support are cut into pieces small against the blur (a
+/// quarter of it) or the profile (an eighth of the radius), refined `levels` more where the
+/// contact's edge crosses them, and integrated by the edge-midpoint rule with g at the midpoints.
 #include <vector>
 
 #include "emit/fem/contact_load.hpp"
@@ -14,8 +19,9 @@
 namespace emit {
 
 /// Presses are discs in the sheet's (x, y) plane. `levels` is the subdivision depth on cut
-/// triangles (6: children 64× smaller in edge length).
+/// triangles (6: children 64× smaller in edge length); `blur_mm`, the cover's Gaussian (0: none).
+/// \throw InvalidInput for a negative blur.
 ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& presses, const ContactLaw& law,
-                               int levels = 6);
+                               int levels = 6, double blur_mm = 0);
 
 }  // namespace emit

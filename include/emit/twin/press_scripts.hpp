@@ -1,7 +1,7 @@
 #pragma once
 /// \file press_scripts.hpp
-/// Sequences of presses for the twin: a grid of single presses, random presses, two-finger
-/// presses, and a press that moves over time. Every press lies inside the sheet, at least
+/// Sequences of presses for the twin: a grid of single presses, random presses, two-, three- and
+/// four-finger presses, and a press that moves over time. Every press lies inside the sheet, at least
 /// `margin_mm` from its border.
 #include <cstdint>
 #include <string>
@@ -17,6 +17,7 @@ struct PressStyle {
   double max_force_N = 10.0;
   double margin_mm = 5.0;  ///< smallest distance from a press centre to the border
   std::uint64_t seed = 1;
+  PressProfile profile = PressProfile::flat;  ///< the indenters' profile
 };
 
 /// One press per frame on a square grid of pitch spacing_mm, each moved by up to ±jitter_mm.
@@ -26,22 +27,27 @@ PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& 
 /// Two simultaneous presses per frame, their centres min..max_separation_mm apart.
 PressSequence two_finger_script(const Sensor& sensor, int frames, double min_separation_mm, double max_separation_mm,
                                 const PressStyle& style);
+/// `fingers` simultaneous presses per frame at random places, every two at least
+/// min_separation_mm apart. \throw InvalidInput when they do not fit on the sheet.
+PressSequence fingers_script(const Sensor& sensor, int frames, int fingers, double min_separation_mm,
+                             const PressStyle& style);
 /// One press moving in a straight line from `from` to `to` over `frames` frames.
 PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
                             const PressStyle& style);
 
 /// A script by name, as `emit simulate --script` takes it, with every script's parameters.
 struct PressScript {
-  enum class Kind { none, grid, random, two_finger, moving };
+  enum class Kind { none, grid, random, two_finger, three_finger, four_finger, moving };
   Kind kind = Kind::none;
   int frames = 20;                                        ///< none (no-contact references), random, two_finger, moving
   double spacing_mm = 10, jitter_mm = 0;                  ///< grid
-  double min_separation_mm = 12, max_separation_mm = 40;  ///< two_finger
+  double min_separation_mm = 12, max_separation_mm = 40;  ///< two_finger; three/four: min only
   Vector2 from_mm{0, 0}, to_mm{0, 0};                     ///< moving
   PressStyle style;
 };
 
-/// "none", "grid", "random", "two-finger", "moving". \throw InvalidInput naming the text.
+/// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving". \throw InvalidInput naming the
+/// text.
 PressScript::Kind parse_script_kind(const std::string& name);
 
 /// The script's presses, frame by frame (`none`: `frames` frames with no press).

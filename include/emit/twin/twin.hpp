@@ -4,8 +4,10 @@
 /// grounding → frame → ADC. It meshes the sheet finer than the reconstruction does (docs/physics.md, "The digital
 /// twin": no inverse crime) and grades the mesh into the electrodes' ends.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <random>
+#include <vector>
 
 #include "emit/fem/forward_model.hpp"
 #include "emit/mesh/generate_mesh.hpp"
@@ -24,6 +26,16 @@ struct TwinOptions {
   /// A sheet that is not uniform: the sheet resistance varies linearly along x by ± this
   /// fraction across the sheet (0.2: from 0.8·Rs at the left to 1.2·Rs at the right).
   double sheet_resistance_variation = 0;
+  /// Any sheet-resistance field: Rs at p is multiplied by this factor (> 0), taken at each
+  /// triangle's centroid, on top of the linear variation (sheet_field.hpp draws a smooth random
+  /// one). Empty: 1 everywhere.
+  std::function<double(const Vector2&)> sheet_resistance_factor;
+  /// Each electrode's series resistance to ground when grounded (its contact and the
+  /// multiplexer's switch) [Ω], one per electrode (forward_model.hpp); empty: none.
+  std::vector<double> series_resistance_ohm;
+  /// The elastomer cover spreads each press's pressure by a Gaussian of this standard deviation
+  /// [mm] (press_pressure.hpp); 0: none, the indenter's own profile.
+  double cover_blur_mm = 0;
   /// A driving layer with this sheet resistance, fed along a bus bar at the bottom of the sheet
   /// (driving_layer.hpp); 0: an equipotential driving layer, as the reconstruction assumes.
   double driving_sheet_resistance_ohm_per_sq = 0;
