@@ -38,7 +38,9 @@ ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
   if (options.driving_sheet_resistance_ohm_per_sq != 0)
     driving = bottom_fed_driving_layer(mesh, options.driving_sheet_resistance_ohm_per_sq);
   ForwardModel model(std::move(mesh), conductance, driving);
-  model.set_series_resistance(options.series_resistance_ohm);
+  // The twin's own departure, else what the sensor description says (sensor.hpp).
+  model.set_series_resistance(options.series_resistance_ohm.empty() ? sensor.series_resistance_ohm
+                                                                    : options.series_resistance_ohm);
   return model;
 }
 

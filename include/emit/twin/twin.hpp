@@ -31,7 +31,8 @@ struct TwinOptions {
   /// one). Empty: 1 everywhere.
   std::function<double(const Vector2&)> sheet_resistance_factor;
   /// Each electrode's series resistance to ground when grounded (its contact and the
-  /// multiplexer's switch) [Ω], one per electrode (forward_model.hpp); empty: none.
+  /// multiplexer's switch) [Ω], one per electrode (forward_model.hpp); empty: the sensor's own
+  /// (Sensor::series_resistance_ohm, none if it has none).
   std::vector<double> series_resistance_ohm;
   /// The elastomer cover spreads each press's pressure by a Gaussian of this standard deviation
   /// [mm] (press_pressure.hpp); 0: none, the indenter's own profile.
