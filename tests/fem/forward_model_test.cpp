@@ -242,16 +242,18 @@ TEST(ForwardModel, LargerSeriesResistanceLiftsItsRow) {
       series[static_cast<std::size_t>(l)] = R;
       model.set_series_resistance(series);
       const Frame frame = model.solve_frame(contact, E);
-      for (int m = 0; m < 16; ++m)
+      for (int m = 0; m < 16; ++m) {
         if (m != l) EXPECT_GT(frame(l, m), previous(l, m)) << "ground " << l << ", R " << R << ", sense " << m;
+      }
       Frame others = frame - ideal;
       others.row(l).setZero();
       EXPECT_LE(others.cwiseAbs().maxCoeff(), test::solve_roundoff * E) << "ground " << l;
       previous = frame;
     }
     // 1e12 ohm against a contact of tens of kilo-ohm: within 1e-6 of E.
-    for (int m = 0; m < 16; ++m)
+    for (int m = 0; m < 16; ++m) {
       if (m != l) EXPECT_NEAR(previous(l, m), E, 1e-6 * E) << "ground " << l << ", sense " << m;
+    }
   }
   EXPECT_THROW(model.set_series_resistance({1.0, 2.0}), InvalidInput);
   EXPECT_THROW(model.set_series_resistance(std::vector<double>(16, -1.0)), InvalidInput);
