@@ -43,10 +43,12 @@ EvalCase coarse_30mm_case() {
 // contacts on at most 5 % of single presses and of no-press frames; the same error (±10 %)
 // with the reference from ten frames one of which is very noisy, and from any one frame alone.
 TEST(SheetEvaluation, AutomaticLambdaNearTheSweepsBest) {
-  const EvalCase c = coarse_30mm_case();
+  EvalCase c = coarse_30mm_case();
+  c.sensor.mesh.element_size_mm = 0.6;  // the sheet's own mesh: the rule was measured on it
+  c.sensor.mesh.twin_refinement = 1.5;
   EvalOptions options;
   options.methods = {Method::paper};
-  for (int i = 0; i <= 24; ++i) options.lambda2.push_back(3e3 * std::pow(10.0, i / 16.0));
+  for (int i = 0; i <= 16; ++i) options.lambda2.push_back(5e3 * std::pow(10.0, i / 32.0));  // 5·10³ … 1.6·10⁴
   options.quick = true;
   options.mismatches = false;
   const MethodEvaluation m = evaluate_sheet(c, options).methods.at(0);
