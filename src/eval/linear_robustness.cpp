@@ -53,8 +53,8 @@ ReferenceSpread single_reference_spread(Reconstructor& reconstructor, const Simu
   return spread;
 }
 
-double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun& run,
-                                std::vector<Frame> references, double extra_noise_V, std::uint64_t seed) {
+double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, std::vector<Frame> references,
+                                double extra_noise_V, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> noise(0.0, extra_noise_V);
   if (!references.empty())

@@ -14,11 +14,11 @@
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/calibrate/contact_law_calibration.hpp"
 #include "emit/calibrate/sheet_calibration.hpp"
+#include "emit/eval/linear_robustness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/fit_model.hpp"
-#include "emit/eval/linear_robustness.hpp"
-#include "emit/model/jacobian.hpp"
 #include "emit/model/image_noise.hpp"
+#include "emit/model/jacobian.hpp"
 #include "emit/model/lambda_rule.hpp"
 #include "emit/model/reconstruction_model.hpp"
 #include "emit/render/image.hpp"
@@ -110,7 +110,8 @@ void evaluate_automatic_lambda(const EvalCase& c, const Runs& runs, Reconstructi
   model.op = family.compact_operator_for(result.auto_lambda2, model.options.rank_cutoff);
   Reconstructor tested(model, LinearCalibration::uncalibrated(c.sensor));
   FrameOptions untested_options;
-  untested_options.false_alarm_rate = 0;
+  untested_options.false_alarm_rate = 0;  // as before issue 14: every region above the threshold
+  untested_options.min_contact_cells = 0;
   Reconstructor untested(model, LinearCalibration::uncalibrated(c.sensor), untested_options);
   result.auto_position = localisation_errors(tested, runs.grid, 0.5).image_centroid;
   const double ghost_mm = 2 * c.radius_mm;  // more than two press radii from every press

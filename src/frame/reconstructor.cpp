@@ -33,8 +33,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
   const double cell_mm2 = sheet_area_mm2 / std::max(1, model.measurements.size());
   min_area_mm2_ = std::max(options.min_contact_area_mm2, options.min_contact_cells * cell_mm2);
   const bool test = options.false_alarm_rate > 0 && model.reading_noise_V > 0 && model.op.rows() > 0;
-  if (test)
-    noise_per_volt_ = significance_sigmas(model.op.rows(), options.false_alarm_rate) * model.op.row_norms();
+  if (test) noise_per_volt_ = significance_sigmas(model.op.rows(), options.false_alarm_rate) * model.op.row_norms();
   floor_ = Vector::Constant(model.mesh.triangle_count(), -std::numeric_limits<double>::infinity());
   if (test) floor_ = difference_noise_V(model.reading_noise_V, 1) * noise_per_volt_;
 }

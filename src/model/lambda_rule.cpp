@@ -22,7 +22,8 @@ double automatic_lambda2(const Vector& eigenvalues, double relative) {
   if (!(relative > 0) || !std::isfinite(relative))
     throw InvalidInput("the relative lambda2 must be positive, got " + std::to_string(relative));
   const double scale = spectrum_scale(eigenvalues);
-  if (!(scale > 0)) throw InvalidInput("the Jacobian has no spectrum to choose lambda2 from (its second eigenvalue is 0)");
+  if (!(scale > 0))
+    throw InvalidInput("the Jacobian has no spectrum to choose lambda2 from (its second eigenvalue is 0)");
   return relative * scale;
 }
 

@@ -102,8 +102,8 @@ std::optional<CompactOperator> load_cached_operator(const std::string& cache_dir
   std::int64_t rows = 0, cols = 0, rank = 0;
   double bound = 0, largest = 0, lambda2 = 0;
   if (!read_value(in, rows) || !read_value(in, cols) || !read_value(in, rank) || !read_value(in, bound) ||
-      !read_value(in, largest) || !read_value(in, lambda2) || !(lambda2 > 0) || rows <= 0 || cols <= 0 || rank < 0 || rank > cols || rows > (1 << 26) ||
-      cols > (1 << 20))
+      !read_value(in, largest) || !read_value(in, lambda2) || !(lambda2 > 0) || rows <= 0 || cols <= 0 || rank < 0 ||
+      rank > cols || rows > (1 << 26) || cols > (1 << 20))
     return std::nullopt;
   Eigen::MatrixXf left(rows, rank), right(rank, cols);
   if (!read_floats(in, left) || !read_floats(in, right)) return std::nullopt;

@@ -52,10 +52,11 @@ TEST(SheetEvaluation, AutomaticLambdaNearTheSweepsBest) {
   options.quick = true;
   options.mismatches = false;
   const MethodEvaluation m = evaluate_sheet(c, options).methods.at(0);
-  std::printf("auto lambda2 %.4g: %.2f mm; sweep's best %.4g: %.2f mm; false contacts %.2f, no-press %.2f; "
-              "single reference %.2f..%.2f mm, one noisy of ten %.2f mm\n",
-              m.auto_lambda2, m.auto_position.mean, m.lambda2, m.position.mean, m.false_contacts, m.noise_contacts,
-              m.single_reference_low_mm, m.single_reference_high_mm, m.noisy_reference_mm);
+  std::printf(
+      "auto lambda2 %.4g: %.2f mm; sweep's best %.4g: %.2f mm; false contacts %.2f, no-press %.2f; "
+      "single reference %.2f..%.2f mm, one noisy of ten %.2f mm\n",
+      m.auto_lambda2, m.auto_position.mean, m.lambda2, m.position.mean, m.false_contacts, m.noise_contacts,
+      m.single_reference_low_mm, m.single_reference_high_mm, m.noisy_reference_mm);
   EXPECT_LE(m.auto_position.mean, 1.15 * m.position.mean);
   EXPECT_LE(m.false_contacts, 0.05);
   EXPECT_LE(m.noise_contacts, 0.05);

@@ -24,7 +24,7 @@ ReferenceSpread single_reference_spread(Reconstructor& reconstructor, const Simu
 
 /// The same error with the reference averaged (average_frames) from `references`, the first of
 /// them made very noisy (`extra_noise_V` of Gaussian noise added, seeded).
-double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun& run,
-                                std::vector<Frame> references, double extra_noise_V, std::uint64_t seed);
+double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, std::vector<Frame> references,
+                                double extra_noise_V, std::uint64_t seed);
 
 }  // namespace emit

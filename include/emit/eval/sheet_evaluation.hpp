@@ -63,8 +63,9 @@ struct MethodEvaluation {
   double auto_lambda2 = 0, spectrum_scale = 0;
   ErrorStats auto_position;
   /// At the automatic λ²: single-press grid frames with a contact more than 2 press radii from the
-  /// press, with the significance test (FrameOptions::false_alarm_rate) and without it; no-press
-  /// frames with any contact, the same two ways.
+  /// press, with the significance test and the resolution-cell floor (FrameOptions) and with
+  /// every region above the threshold a contact (as before); no-press frames with any contact,
+  /// the same two ways.
   double false_contacts = 0, false_contacts_untested = 0, noise_contacts = 0, noise_contacts_untested = 0;
   /// At the automatic λ²: the positional error's range over ten single-frame references, and with
   /// the ten averaged when one of them is very noisy (20 mV).

@@ -19,7 +19,7 @@ struct ReconstructionModel {
   Mesh mesh;
   MeasurementSet measurements;
   OperatorOptions options;  ///< with the λ² the operator was built with (chosen, when options left it 0)
-  CompactOperator op;  ///< R (paper eq. 7) as the per-frame path applies it
+  CompactOperator op;       ///< R (paper eq. 7) as the per-frame path applies it
   /// Eq. 8's uncalibrated coefficients for the model's sensor (LinearCalibration::uncalibrated):
   /// a linear method's until calibrated, and how contact fitting ranks its seeds.
   LinearCalibration uncalibrated;

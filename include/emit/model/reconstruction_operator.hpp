@@ -36,8 +36,8 @@ struct OperatorOptions {
 std::string prior_name(Prior prior);
 
 /// The dense operator R. \param J  M by #F Jacobian (jacobian.hpp). \return #F by M.
-/// λ² = 0 chooses it (OperatorOptions::lambda2). \throw InvalidInput for a negative λ². For tests and baselines: the per-frame path uses
-/// build_compact_operator, which never forms R.
+/// λ² = 0 chooses it (OperatorOptions::lambda2). \throw InvalidInput for a negative λ². For tests and baselines: the
+/// per-frame path uses build_compact_operator, which never forms R.
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options);
 
 /// R truncated at options.rank_cutoff (compact_operator.hpp), built from the eigendecomposition
