@@ -24,6 +24,15 @@ using namespace emit;
 struct Bench {
   Sensor sensor = default_sensor();
   ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
+  /// The paper method as it was before issue 14: λ² = 10⁴ fixed, every region above the threshold
+  /// a contact (no significance test, no resolution-cell floor). BM_PaperFrameBefore's baseline.
+  ReconstructionModel before = [this] {
+    OperatorOptions options = operator_options(Method::paper);
+    options.lambda2 = 1e4;
+    ReconstructionModel m = build_reconstruction_model(sensor, options, "");
+    m.reading_noise_V = 0;
+    return m;
+  }();
   FitModel fit_model = build_fit_model(sensor);
   Twin twin{sensor, [] {
               TwinOptions o;
@@ -49,6 +58,18 @@ Bench& bench() {
 void BM_PaperFrame(benchmark::State& state) {
   Bench& b = bench();
   Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
+  reconstructor.set_reference(b.reference);
+  std::size_t f = 0;
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+/// The same frames as they were reconstructed before issue 14 (Bench::before).
+void BM_PaperFrameBefore(benchmark::State& state) {
+  Bench& b = bench();
+  FrameOptions options;
+  options.min_contact_cells = 0;
+  Reconstructor reconstructor(b.before, LinearCalibration::uncalibrated(b.sensor), options);
   reconstructor.set_reference(b.reference);
   std::size_t f = 0;
   for ([[maybe_unused]] auto _ : state)
@@ -138,6 +159,7 @@ void BM_PredictSparse(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperFrameBefore)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);

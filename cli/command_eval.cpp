@@ -18,6 +18,26 @@ struct EvalArgs {
   std::string sheet;  ///< only the sheets whose name contains this
 };
 
+/// The automatic λ² (no --lambda2) beside the sweep's best, and what the significance test and
+/// the reference's averaging do.
+void print_automatic(const MethodEvaluation& m) {
+  const double best_relative = m.spectrum_scale > 0 ? m.lambda2 / m.spectrum_scale : 0;
+  const double relative = m.spectrum_scale > 0 ? m.auto_lambda2 / m.spectrum_scale : 0;
+  std::printf("    auto lambda2 %9.3g (%.3g x spectrum scale; best %.3g): %5.2f mm, %+.0f %% of the best\n",
+              m.auto_lambda2, relative, best_relative, m.auto_position.mean,
+              m.position.mean > 0 ? 100 * (m.auto_position.mean / m.position.mean - 1) : 0.0);
+  std::printf(
+      "      false contacts: %4.1f %% of single presses (every region: %4.1f %%), "
+      "%4.1f %% of no-press frames (%4.1f %%)\n",
+      100 * m.false_contacts, 100 * m.false_contacts_untested, 100 * m.noise_contacts, 100 * m.noise_contacts_untested);
+  std::printf("      reference: one frame alone %.2f .. %.2f mm; ten with one very noisy %.2f mm",
+              m.single_reference_low_mm, m.single_reference_high_mm, m.noisy_reference_mm);
+  if (m.auto_two_press)
+    std::printf("; two presses %3.0f %% found, %3.0f %% matched", 100 * m.auto_two_press->two_contacts,
+                100 * m.auto_two_press->both_matched);
+  std::printf("\n");
+}
+
 void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
   if (sweep)
     for (const SweepPoint& p : m.sweep)
@@ -35,6 +55,7 @@ void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
   if (!is_linear(m.method))
     std::printf("  (%.0f ms a frame, %ld mesh nodes; 2 match: within 2 mm)", m.ms_per_frame, m.fit_mesh_nodes);
   std::printf("\n");
+  if (is_linear(m.method)) print_automatic(m);
 }
 
 void print_mismatches(const SheetEvaluation& e) {

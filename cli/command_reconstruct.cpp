@@ -52,7 +52,8 @@ void add_reconstruct_command(CLI::App& app) {
                   "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
-  cmd->add_option("--lambda2", job.lambda2, "Regularisation lambda^2 (default: the method's)")
+  cmd->add_option("--lambda2", job.lambda2,
+                  "Regularisation lambda^2 (default: chosen from the operator's spectrum, docs/physics.md)")
       ->check(positive_number());
   cmd->add_option("--threshold", job.threshold_fraction, "Threshold as a fraction of the image's maximum")
       ->capture_default_str();

@@ -14,10 +14,13 @@
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/calibrate/contact_law_calibration.hpp"
 #include "emit/calibrate/sensor_calibration.hpp"
+#include "emit/eval/linear_robustness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
+#include "emit/model/image_noise.hpp"
 #include "emit/model/jacobian.hpp"
+#include "emit/model/lambda_rule.hpp"
 #include "emit/model/reconstruction_model.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/line_plot.hpp"
@@ -72,7 +75,11 @@ int pressure_press_count(const EvalOptions& options) { return options.quick ? 10
 
 struct Runs {
   SimulatedRun grid, calibration, test, two_press;
+  SimulatedRun no_press;          ///< frames without a press (for false contacts)
+  std::vector<Frame> references;  ///< single no-contact frames (for the reference's spread)
 };
+
+constexpr int no_press_frames = 100, single_references = 10;
 
 Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
   TwinOptions twin_options;
@@ -81,6 +88,8 @@ Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
   Twin twin(c.sensor, twin_options);
   Runs runs;
   runs.grid = simulate_run(twin, grid_presses(c, options));
+  runs.no_press = simulate_run(twin, PressSequence(options.quick ? 20 : no_press_frames));
+  for (int i = 0; i < single_references; ++i) runs.references.push_back(twin.frame({}));
   if (c.pressure_and_two_press) {
     const int n = pressure_press_count(options);
     runs.calibration = simulate_run(twin, pressure_presses(c.sensor, c.radius_mm, n, options.seed + 100));
@@ -93,6 +102,30 @@ Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
   return runs;
 }
 
+/// A linear method at the λ² its rule chooses (model/lambda_rule.hpp): error, false contacts and
+/// the reference's influence. Leaves `model` with that operator.
+void evaluate_automatic_lambda(const EvalCase& c, const Runs& runs, ReconstructionModel& model,
+                               const OperatorFamily& family, MethodEvaluation& result) {
+  model.options = operator_options(result.method);
+  result.auto_lambda2 = model.options.lambda2 = family.lambda2_for(model.options);
+  model.op = family.compact_operator_for(result.auto_lambda2, model.options.rank_cutoff);
+  Reconstructor tested(model, LinearCalibration::uncalibrated(c.sensor));
+  FrameOptions untested_options;
+  untested_options.false_alarm_rate = 0;  // as before issue 14: every region above the threshold
+  untested_options.min_contact_cells = 0;
+  Reconstructor untested(model, LinearCalibration::uncalibrated(c.sensor), untested_options);
+  result.auto_position = localisation_errors(tested, runs.grid, 0.5).image_centroid;
+  const double ghost_mm = 2 * c.radius_mm;  // more than two press radii from every press
+  result.false_contacts = false_contact_rate(tested, runs.grid, ghost_mm);
+  result.false_contacts_untested = false_contact_rate(untested, runs.grid, ghost_mm);
+  result.noise_contacts = false_contact_rate(tested, runs.no_press, ghost_mm);
+  result.noise_contacts_untested = false_contact_rate(untested, runs.no_press, ghost_mm);
+  const ReferenceSpread spread = single_reference_spread(tested, runs.grid, runs.references);
+  result.single_reference_low_mm = spread.low_mm, result.single_reference_high_mm = spread.high_mm;
+  result.noisy_reference_mm = noisy_reference_error_mm(tested, runs.grid, runs.references, 0.02, 7);
+  if (c.pressure_and_two_press) result.auto_two_press = two_press_rates(tested, runs.two_press, 0.4 * c.radius_mm * 4);
+}
+
 /// A linear method over the λ² sweep; the best λ² by the paper's positional error.
 MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, ReconstructionModel& model, const Matrix& J,
                                  Method method, const EvalOptions& options) {
@@ -101,6 +134,7 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
   const std::vector<double> sweep = options.lambda2.empty() ? default_sweep(c.lambdas_per_decade) : options.lambda2;
   model.options = operator_options(method);
   const OperatorFamily family(J, model.mesh, model.options.prior, model.options.noser_exponent);
+  result.spectrum_scale = spectrum_scale(family.eigenvalues());
   const SweepPoint* best = nullptr;
   for (double lambda2 : sweep) {
     model.options.lambda2 = lambda2;
@@ -116,6 +150,7 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
   result.lambda2 = best->lambda2;
   result.position = best->image_centroid;
   result.strongest_contact = best->strongest_contact;
+  evaluate_automatic_lambda(c, runs, model, family, result);
   if (c.pressure_and_two_press) {
     model.options.lambda2 = result.lambda2;
     model.op = family.compact_operator_for(result.lambda2, model.options.rank_cutoff);
@@ -243,6 +278,7 @@ SheetEvaluation evaluate_sheet(const EvalCase& eval_case, const EvalOptions& opt
   model.mesh = generate_mesh(eval_case.sensor, reconstruction_mesh_options(eval_case.sensor));
   model.measurements = make_measurement_set(model.mesh.electrode_count());
   model.uncalibrated = LinearCalibration::uncalibrated(eval_case.sensor);
+  model.reading_noise_V = reading_noise_V(eval_case.sensor.adc);
   evaluation.triangles = static_cast<long>(model.mesh.triangle_count());
   const Matrix J = compute_jacobian(model.mesh, model.measurements);
   for (Method method : options.methods) {

@@ -1,9 +1,12 @@
 #include "emit/frame/reconstructor.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "emit/core/errors.hpp"
+#include "emit/model/image_noise.hpp"
 
 namespace emit {
 
@@ -21,6 +24,18 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
   if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
     throw InvalidInput("threshold must be a fraction between 0 and 1, got " +
                        std::to_string(options.threshold_fraction));
+  if (!(options.false_alarm_rate >= 0 && options.false_alarm_rate < 1))
+    throw InvalidInput("false-alarm rate must be in [0, 1), got " + std::to_string(options.false_alarm_rate));
+  if (!(options.min_contact_cells >= 0))
+    throw InvalidInput("min contact cells must be 0 or more, got " + std::to_string(options.min_contact_cells));
+  double sheet_area_mm2 = 0;
+  for (Index t = 0; t < model.mesh.triangle_count(); ++t) sheet_area_mm2 += model.mesh.triangle_area_mm2(t);
+  const double cell_mm2 = sheet_area_mm2 / std::max(1, model.measurements.size());
+  min_area_mm2_ = std::max(options.min_contact_area_mm2, options.min_contact_cells * cell_mm2);
+  const bool test = options.false_alarm_rate > 0 && model.reading_noise_V > 0 && model.op.rows() > 0;
+  if (test) noise_per_volt_ = significance_sigmas(model.op.rows(), options.false_alarm_rate) * model.op.row_norms();
+  floor_ = Vector::Constant(model.mesh.triangle_count(), -std::numeric_limits<double>::infinity());
+  if (test) floor_ = difference_noise_V(model.reading_noise_V, 1) * noise_per_volt_;
 }
 
 Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
@@ -30,7 +45,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fi
   indenter_radius_mm_ = calibration.indenter_radius_mm;
 }
 
-void Reconstructor::set_reference(const Frame& reference) {
+void Reconstructor::set_reference(const Frame& reference, int frames_averaged) {
   const int N = model_.measurements.electrode_count;
   if (reference.rows() != N || reference.cols() != N)
     throw InvalidInput("reference frame has " + std::to_string(reference.size()) + " values, expected " +
@@ -39,6 +54,8 @@ void Reconstructor::set_reference(const Frame& reference) {
   for (int i = 0; i < model_.measurements.size(); ++i)
     reference_[i] = reference.data()[model_.measurements.frame_index[i]];
   previous_discs_.clear();  // a new reference starts a new stream
+  if (noise_per_volt_.size() == floor_.size())
+    floor_ = difference_noise_V(model_.reading_noise_V, frames_averaged) * noise_per_volt_;
 }
 
 const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
@@ -58,7 +75,8 @@ const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
   const double peak = dphi_.maxCoeff();
   const double threshold = options_.threshold_fraction * peak;
   linear_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
-  const std::vector<Contact>& linear = finder_.find(selected_, pressure_, dphi_, options_.min_contact_area_mm2);
+  const std::vector<Contact>& linear =
+      finder_.find(selected_, pressure_, dphi_, min_area_mm2_, &floor_);  // significant ones, a cell or more
   return fitter_ ? fit_contacts(linear) : linear;
 }
 
@@ -109,14 +127,48 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
   return fitted_;
 }
 
-Frame average_frames(const std::vector<Frame>& frames) {
+namespace {
+
+/// Which frames average_frames keeps (see there).
+std::vector<bool> frames_kept(const std::vector<Frame>& frames) {
   if (frames.empty()) throw InvalidInput("no frames to average");
-  Frame mean = Frame::Zero(frames[0].rows(), frames[0].cols());
-  for (const Frame& f : frames) {
-    if (f.rows() != mean.rows() || f.cols() != mean.cols()) throw InvalidInput("frames of different sizes");
-    mean += f;
+  for (const Frame& f : frames)
+    if (f.rows() != frames[0].rows() || f.cols() != frames[0].cols()) throw InvalidInput("frames of different sizes");
+  std::vector<bool> kept(frames.size(), true);
+  if (frames.size() < 3) return kept;
+  Frame median(frames[0].rows(), frames[0].cols());
+  std::vector<double> values(frames.size());
+  for (Index i = 0; i < median.size(); ++i) {
+    for (std::size_t f = 0; f < frames.size(); ++f) values[f] = frames[f].data()[i];
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    median.data()[i] = *middle;
   }
-  return mean / static_cast<double>(frames.size());
+  std::vector<double> distance(frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) distance[f] = (frames[f] - median).norm();
+  std::vector<double> sorted = distance;
+  const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+  std::nth_element(sorted.begin(), middle, sorted.end());
+  // Pure noise frames' distances agree within a few % (χ with M degrees of freedom), so 3× the
+  // median distance leaves them all in and takes out a frame three times as noisy or worse.
+  for (std::size_t f = 0; f < frames.size(); ++f) kept[f] = !(distance[f] > 3 * *middle);
+  return kept;
+}
+
+}  // namespace
+
+int frames_averaged(const std::vector<Frame>& frames) {
+  const std::vector<bool> kept = frames_kept(frames);
+  return static_cast<int>(std::count(kept.begin(), kept.end(), true));
+}
+
+Frame average_frames(const std::vector<Frame>& frames) {
+  const std::vector<bool> kept = frames_kept(frames);
+  Frame mean = Frame::Zero(frames[0].rows(), frames[0].cols());
+  int count = 0;
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    if (kept[f]) mean += frames[f], ++count;
+  return mean / static_cast<double>(count);
 }
 
 }  // namespace emit

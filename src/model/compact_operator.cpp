@@ -7,15 +7,18 @@
 namespace emit {
 
 CompactOperator::CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound,
-                                 double largest_singular_value)
+                                 double largest_singular_value, double lambda2)
     : left_(std::move(left)),
       right_(std::move(right)),
       truncation_bound_(truncation_bound),
-      largest_singular_value_(largest_singular_value) {
+      largest_singular_value_(largest_singular_value),
+      lambda2_(lambda2) {
   if (left_.cols() != right_.rows())
     throw InvalidInput("compact operator: factors of " + std::to_string(left_.cols()) + " and " +
                        std::to_string(right_.rows()) + " singular values");
 }
+
+Vector CompactOperator::row_norms() const { return left_.cast<double>().rowwise().norm(); }
 
 CompactOperatorScratch CompactOperator::scratch() const {
   return {Eigen::VectorXf(cols()), Eigen::VectorXf(rank()), Eigen::VectorXf(rows())};

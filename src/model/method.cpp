@@ -21,13 +21,14 @@ Method parse_method(const std::string& name) {
 }
 
 OperatorOptions operator_options(Method method) {
-  OperatorOptions options;  // Q = I, λ² = 10⁴: the paper's method
+  OperatorOptions options;  // Q = I: the paper's method
+  options.relative_lambda2 = 1.63;
   if (method == Method::noser) {
     options.prior = Prior::noser;
-    options.lambda2 = 1.5e3;
+    options.relative_lambda2 = 2.4;
   } else if (method == Method::laplacian) {
     options.prior = Prior::laplacian;
-    options.lambda2 = 6.0e5;
+    options.relative_lambda2 = 1.27;
   }
   return options;
 }

@@ -17,7 +17,7 @@ namespace emit {
 
 namespace {
 
-constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '2'};  // 2: compact factors in float
+constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '3'};  // 2: compact factors in float; 3: and λ²
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 1469598103934665603ull) {
   const auto* bytes = static_cast<const unsigned char*>(data);
@@ -55,11 +55,15 @@ std::string operator_cache_key(const Sensor& sensor, const Mesh& mesh, const Mea
                                const OperatorOptions& options) {
   std::ostringstream key;
   key.precision(17);
-  key << "emit-operator-v2|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
+  key << "emit-operator-v3|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
       << "|triangles:" << mesh.triangle_count() << "|measurements:";
   for (int i : measurements.frame_index) key << i << ',';
-  key << "|prior:" << prior_name(options.prior) << "|lambda2:" << options.lambda2
-      << "|noser_exponent:" << options.noser_exponent << "|rank_cutoff:" << options.rank_cutoff;
+  key << "|prior:" << prior_name(options.prior) << "|lambda2:";
+  // An automatic λ² is a function of the rest of the key (the Jacobian's spectrum): the key names
+  // the rule, and the file holds the λ² it chose (CompactOperator::lambda2), checked on loading.
+  if (options.lambda2 == 0) key << "auto(" << options.relative_lambda2 << "x spectrum_scale)";
+  else key << options.lambda2;
+  key << "|noser_exponent:" << options.noser_exponent << "|rank_cutoff:" << options.rank_cutoff;
   return key.str();
 }
 
@@ -96,14 +100,14 @@ std::optional<CompactOperator> load_cached_operator(const std::string& cache_dir
   std::string file_key(key_size, '\0');
   if (!in.read(file_key.data(), static_cast<std::streamsize>(key_size)) || file_key != key) return std::nullopt;
   std::int64_t rows = 0, cols = 0, rank = 0;
-  double bound = 0, largest = 0;
+  double bound = 0, largest = 0, lambda2 = 0;
   if (!read_value(in, rows) || !read_value(in, cols) || !read_value(in, rank) || !read_value(in, bound) ||
-      !read_value(in, largest) || rows <= 0 || cols <= 0 || rank < 0 || rank > cols || rows > (1 << 26) ||
-      cols > (1 << 20))
+      !read_value(in, largest) || !read_value(in, lambda2) || !(lambda2 > 0) || rows <= 0 || cols <= 0 || rank < 0 ||
+      rank > cols || rows > (1 << 26) || cols > (1 << 20))
     return std::nullopt;
   Eigen::MatrixXf left(rows, rank), right(rank, cols);
   if (!read_floats(in, left) || !read_floats(in, right)) return std::nullopt;
-  return CompactOperator(std::move(left), std::move(right), bound, largest);
+  return CompactOperator(std::move(left), std::move(right), bound, largest, lambda2);
 }
 
 void store_cached_operator(const std::string& cache_dir, const std::string& key, const CompactOperator& op) {
@@ -120,6 +124,7 @@ void store_cached_operator(const std::string& cache_dir, const std::string& key,
   write_value(out, static_cast<std::int64_t>(op.rank()));
   write_value(out, op.truncation_bound());
   write_value(out, op.largest_singular_value());
+  write_value(out, op.lambda2());
   write_floats(out, op.left());
   write_floats(out, op.right());
   file.commit();

@@ -1,6 +1,7 @@
 #include "emit/model/reconstruction_model.hpp"
 
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/model/image_noise.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/operator_cache.hpp"
 
@@ -15,6 +16,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   ReconstructionModel model;
   model.options = options;
   model.uncalibrated = LinearCalibration::uncalibrated(sensor);
+  model.reading_noise_V = reading_noise_V(sensor.adc);
   say("meshing");
   model.mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
   model.measurements = make_measurement_set(model.mesh.electrode_count(), excluded);
@@ -23,6 +25,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
     if (auto cached = load_cached_operator(cache_dir, key);
         cached && cached->rows() == model.mesh.triangle_count() && cached->cols() == model.measurements.size()) {
       model.op = std::move(*cached);
+      model.options.lambda2 = model.op.lambda2();
       model.loaded_from_cache = true;
       say("loaded the operator from the cache");
       return model;
@@ -32,6 +35,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   Matrix J = compute_jacobian(model.mesh, model.measurements);
   say("building the operator");
   model.op = build_compact_operator(std::move(J), model.mesh, options);
+  model.options.lambda2 = model.op.lambda2();  // the λ² chosen, when it was left to the rule
   if (!cache_dir.empty()) store_cached_operator(cache_dir, key, model.op);
   return model;
 }

@@ -11,6 +11,7 @@
 #include "emit/core/errors.hpp"
 #include "emit/core/large_matrix.hpp"
 #include "emit/fem/sparse_cholesky.hpp"
+#include "emit/model/lambda_rule.hpp"
 #include "emit/model/symmetric_eigen.hpp"
 
 namespace emit {
@@ -82,12 +83,19 @@ void check_lambda2(double lambda2) {
 }  // namespace
 
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options) {
-  return OperatorFamily(J, mesh, options.prior, options.noser_exponent).operator_for(options.lambda2);
+  const OperatorFamily family(J, mesh, options.prior, options.noser_exponent);
+  return family.operator_for(family.lambda2_for(options));
 }
 
 CompactOperator build_compact_operator(Matrix J, const Mesh& mesh, const OperatorOptions& options) {
-  return OperatorFamily(std::move(J), mesh, options.prior, options.noser_exponent)
-      .compact_operator_for(options.lambda2, options.rank_cutoff);
+  const OperatorFamily family(std::move(J), mesh, options.prior, options.noser_exponent);
+  return family.compact_operator_for(family.lambda2_for(options), options.rank_cutoff);
+}
+
+double OperatorFamily::lambda2_for(const OperatorOptions& options) const {
+  if (options.lambda2 == 0) return automatic_lambda2(sigma_, options.relative_lambda2);
+  check_lambda2(options.lambda2);
+  return options.lambda2;
 }
 
 OperatorFamily::OperatorFamily(Matrix J, const Mesh& mesh, Prior prior, double noser_exponent) : prior_(prior) {
@@ -165,7 +173,8 @@ CompactOperator OperatorFamily::compact_operator_for(double lambda2, double rela
   for (Index j = 0; j < k; ++j) V_k.col(j) = V.col(order[static_cast<std::size_t>(j)]);
   const double bound = k < M && s1 > 0 ? std::sqrt(std::max(0.0, s2[order[static_cast<std::size_t>(k)]])) / s1 : 0.0;
   const Matrix right = (U_ * V_k).transpose();
-  return CompactOperator(prior_inverse_jt_times_in_float(U_ * f.asDiagonal() * V_k), right.cast<float>(), bound, s1);
+  return CompactOperator(prior_inverse_jt_times_in_float(U_ * f.asDiagonal() * V_k), right.cast<float>(), bound, s1,
+                         lambda2);
 }
 
 }  // namespace emit

@@ -81,7 +81,7 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
   PressCalibrationResult result;
   if (!is_linear(options.method))
     result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
-  result.lambda2 = operator_options_.lambda2;
+  result.lambda2 = model.options.lambda2;  // the λ² chosen, when left to the rule
   if (!is_linear(options.method)) return result;
 
   FrameOptions frame_options;

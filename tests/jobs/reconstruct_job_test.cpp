@@ -41,7 +41,7 @@ TEST(ReconstructJob, ThreadsAndImagesChangeNoContact) {
   EXPECT_EQ(one.measurements, 16 * 15);
   EXPECT_FALSE(one.calibrated);
   EXPECT_FALSE(one.operator_from_cache);  // no cache folder given
-  EXPECT_EQ(one.lambda2, 1e4);            // the paper method's
+  EXPECT_GT(one.lambda2, 0.0);            // the rule's choice, reported
   EXPECT_TRUE(one.dead_electrodes.empty());
 
   job.threads = 2;

@@ -85,8 +85,10 @@ TEST(CompactOperator, FromTheEigendecompositionForEachPrior) {
     const OperatorOptions options = operator_options(m);
     const std::string method = method_name(m);
     const OperatorFamily family(f.J, f.model.mesh, options.prior, options.noser_exponent);
-    const Matrix R = family.operator_for(options.lambda2);
-    const CompactOperator direct = family.compact_operator_for(options.lambda2, options.rank_cutoff);
+    const double lambda2 = family.lambda2_for(options);  // the rule's (options.lambda2 is 0)
+    const Matrix R = family.operator_for(lambda2);
+    const CompactOperator direct = family.compact_operator_for(lambda2, options.rank_cutoff);
+    EXPECT_EQ(direct.lambda2(), lambda2) << method;
     const Vector s = Eigen::BDCSVD<Matrix>(R).singularValues();  // descending
     const auto above = (s.array() > options.rank_cutoff * s[0]).count();
     EXPECT_NEAR(direct.largest_singular_value(), s[0], 1e-9 * s[0]) << method;

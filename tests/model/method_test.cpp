@@ -26,16 +26,18 @@ TEST(Method, UnknownNameListsTheMethods) {
   }
 }
 
-// The header's figures: paper and fit Q = I at 10⁴, noser 1.5·10³, laplacian 6·10⁵.
+// The header's figures: λ² left to the rule (0) at paper and fit 1.63, noser 2.4, laplacian
+// 1.27 times the spectrum's scale.
 TEST(Method, OperatorOptionsAreTheDocumentedOnes) {
   EXPECT_EQ(operator_options(Method::paper).prior, Prior::identity);
-  EXPECT_EQ(operator_options(Method::paper).lambda2, 1e4);
+  EXPECT_EQ(operator_options(Method::paper).lambda2, 0.0);
+  EXPECT_EQ(operator_options(Method::paper).relative_lambda2, 1.63);
   EXPECT_EQ(operator_options(Method::fit).prior, Prior::identity);
-  EXPECT_EQ(operator_options(Method::fit).lambda2, 1e4);
+  EXPECT_EQ(operator_options(Method::fit).relative_lambda2, 1.63);
   EXPECT_EQ(operator_options(Method::noser).prior, Prior::noser);
-  EXPECT_EQ(operator_options(Method::noser).lambda2, 1.5e3);
+  EXPECT_EQ(operator_options(Method::noser).relative_lambda2, 2.4);
   EXPECT_EQ(operator_options(Method::laplacian).prior, Prior::laplacian);
-  EXPECT_EQ(operator_options(Method::laplacian).lambda2, 6e5);
+  EXPECT_EQ(operator_options(Method::laplacian).relative_lambda2, 1.27);
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ INSTANTIATE_TEST_SUITE_P(Priors, OperatorForms, ::testing::Values(Prior::identit
                          [](const auto& info) { return prior_name(info.param); });
 
 TEST(ReconstructionOperator, MethodsAndBadLambda) {
-  EXPECT_EQ(operator_options(Method::paper).lambda2, 1.0e4);
+  EXPECT_EQ(operator_options(Method::paper).lambda2, 0.0);  // chosen by the rule (lambda_rule.hpp)
   EXPECT_EQ(operator_options(Method::paper).prior, Prior::identity);
   EXPECT_EQ(operator_options(Method::fit).prior, Prior::identity);  // fit is seeded by the paper's image
   EXPECT_EQ(operator_options(Method::noser).prior, Prior::noser);

@@ -58,6 +58,19 @@ struct MethodEvaluation {
   double ms_per_frame = 0;                         ///< fit: the grid's frames
   long fit_mesh_nodes = 0;                         ///< fit
   std::vector<SweepPoint> sweep;                   ///< linear methods
+  /// Linear methods with no λ² given: the automatic rule's λ² (model/lambda_rule.hpp), its
+  /// positional error on the same frames, and the spectrum's scale (trace/M of J Q⁻¹ Jᵀ).
+  double auto_lambda2 = 0, spectrum_scale = 0;
+  ErrorStats auto_position;
+  /// At the automatic λ²: single-press grid frames with a contact more than 2 press radii from the
+  /// press, with the significance test and the resolution-cell floor (FrameOptions) and with
+  /// every region above the threshold a contact (as before); no-press frames with any contact,
+  /// the same two ways.
+  double false_contacts = 0, false_contacts_untested = 0, noise_contacts = 0, noise_contacts_untested = 0;
+  /// At the automatic λ²: the positional error's range over ten single-frame references, and with
+  /// the ten averaged when one of them is very noisy (20 mV).
+  double single_reference_low_mm = 0, single_reference_high_mm = 0, noisy_reference_mm = 0;
+  std::optional<TwoPressResult> auto_two_press;  ///< at the automatic λ²
 };
 
 struct MismatchEvaluation {

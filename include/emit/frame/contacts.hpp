@@ -35,10 +35,12 @@ class ContactFinder {
   /// \param weight    #F non-negative weights for the centroid (e.g. the reconstructed
   ///                  potential); the centroid is Σ w_k A_k c_k / Σ w_k A_k, or the area-weighted
   ///                  centroid when all weights of a contact are 0
+  /// \param floor   null, or #F values: a contact is kept only if the weight of one of its
+  ///                 elements exceeds the floor there (the image's significance: reconstructor.hpp)
   /// \return the contacts, largest force first; valid until the next call. Contacts smaller than
   ///         min_area_mm2 are dropped.
   const std::vector<Contact>& find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
-                                   const Vector& weight, double min_area_mm2 = 0.0);
+                                   const Vector& weight, double min_area_mm2 = 0.0, const Vector* floor = nullptr);
 
   /// The image's peaks: elements whose value is at least min_value and no smaller than any edge
   /// neighbour's, strongest first, each at least min_separation_mm from every stronger one kept.
@@ -52,6 +54,7 @@ class ContactFinder {
  private:
   std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
   std::vector<double> areas_mm2_;
+  Vector no_floor_;  ///< −∞ everywhere: the floor when none is given
   std::vector<Vector2> centroids_mm_;
   std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
   std::vector<int> stack_;             ///< scratch

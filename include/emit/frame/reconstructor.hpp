@@ -17,11 +17,20 @@ namespace emit {
 struct FrameOptions {
   double threshold_fraction = 0.5;  ///< of the image's maximum (paper §2.4)
   double min_contact_area_mm2 = 0;  ///< smaller regions are dropped
+  /// And regions smaller than this many of the image's resolution cells, sheet area / M: M
+  /// readings resolve no finer, and what is finer is the electrode ends' single-element spikes
+  /// (the Jacobian's edge singularity), 0.1–2 mm² where a press's region is hundreds.
+  double min_contact_cells = 1.0;
   /// With a fitter: start each frame from the last frame's contacts (ContactFitter::track), and
   /// seed afresh from the linear image only when that does not explain the frame. A stream of
   /// frames from a moving finger then costs a fraction of a cold fit; frames that are not a stream
   /// cost one tracking attempt more. While tracking holds, the linear image is not computed.
   bool track_contacts = true;
+  /// A contact is reported only where the image stands out from its noise: some element of the
+  /// region above k·σ_k, σ_k = σ(δV)·‖row k of R‖ (model/image_noise.hpp), k chosen so that a
+  /// frame of pure noise reports a contact with at most this probability. 0: no such test (nor
+  /// without the model's reading noise).
+  double false_alarm_rate = 0.01;
 };
 
 class Reconstructor {
@@ -38,8 +47,9 @@ class Reconstructor {
   Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
                 FrameOptions options = {});
 
-  /// The no-contact reference frame. \throw InvalidInput if it is not N×N or not finite.
-  void set_reference(const Frame& reference);
+  /// The no-contact reference frame, the mean of `frames_averaged` frames (its noise adds to every
+  /// δV: model/image_noise.hpp). \throw InvalidInput if it is not N×N or not finite.
+  void set_reference(const Frame& reference, int frames_averaged = 1);
 
   /// The last frame's fit (null for a linear method).
   const FitResult* fit_result() const { return fitter_ ? &fitter_result_ : nullptr; }
@@ -50,6 +60,8 @@ class Reconstructor {
 
   const Vector& image() const { return dphi_; }         ///< δφ per element [V] (0 while tracking holds)
   const Vector& pressure() const { return pressure_; }  ///< per element [N/mm²], 0 below threshold
+  /// Per element, the image value a contact must exceed somewhere (−∞ without the test).
+  const Vector& significance_floor() const { return floor_; }
   const Mesh& mesh() const { return model_.mesh; }
 
  private:
@@ -59,8 +71,11 @@ class Reconstructor {
   LinearCalibration linear_;
   double indenter_radius_mm_ = 0;  ///< contact fitting's (FitCalibration::indenter_radius_mm)
   FrameOptions options_;
+  double min_area_mm2_ = 0;  ///< the larger of min_contact_area_mm2 and min_contact_cells' area
   ContactFinder finder_;
   Vector reference_, dV_, dphi_, pressure_;
+  Vector noise_per_volt_;  ///< ‖row k of R‖ times the significance's k
+  Vector floor_;
   std::vector<std::uint8_t> selected_;
   ContactFitter* fitter_ = nullptr;
   FitResult fitter_result_;
@@ -73,8 +88,13 @@ class Reconstructor {
   const std::vector<Contact>& report_fitted();
 };
 
-/// The mean of several frames (the reference is captured as an average). \throw InvalidInput
-/// if there are none or their sizes differ.
+/// The mean of several frames (the reference is captured as an average), robust to a bad one:
+/// frames whose RMS distance from the per-reading median exceeds 3× the median of those
+/// distances (a glitch, a touch, a burst of noise) are left out; with one or two frames, the plain
+/// mean. \throw InvalidInput if there are none or their sizes differ.
 Frame average_frames(const std::vector<Frame>& frames);
+
+/// How many of `frames` average_frames keeps.
+int frames_averaged(const std::vector<Frame>& frames);
 
 }  // namespace emit

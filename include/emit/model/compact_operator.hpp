@@ -23,7 +23,8 @@ class CompactOperator {
   CompactOperator() = default;
   /// From its factors, as OperatorFamily::compact_operator_for builds them (without forming R)
   /// and the cache stores them. \throw InvalidInput if their sizes do not match.
-  CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound, double largest_singular_value);
+  CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound, double largest_singular_value,
+                  double lambda2 = 0);
 
   /// Scratch already sized for this operator.
   CompactOperatorScratch scratch() const;
@@ -37,13 +38,18 @@ class CompactOperator {
   double truncation_bound() const { return truncation_bound_; }
   /// s₁, R's largest singular value.
   double largest_singular_value() const { return largest_singular_value_; }
+  /// The λ² it was built with (0 when not told).
+  double lambda2() const { return lambda2_; }
+  /// ‖row k of R‖ for each element k, computed from A: B's rows are orthonormal, so R's row k has
+  /// A's row k's norm. An image's noise per element is σ(δV)·‖row k‖ for white reading noise.
+  Vector row_norms() const;
   const Eigen::MatrixXf& left() const { return left_; }    ///< A, #F by k
   const Eigen::MatrixXf& right() const { return right_; }  ///< B, k by M
 
  private:
   Eigen::MatrixXf left_;   ///< A = U_k S_k, column-major #F by k
   Eigen::MatrixXf right_;  ///< B = V_kᵀ, column-major k by M
-  double truncation_bound_ = 0, largest_singular_value_ = 0;
+  double truncation_bound_ = 0, largest_singular_value_ = 0, lambda2_ = 0;
 };
 
 }  // namespace emit

@@ -24,10 +24,10 @@ const char* method_name(Method method);
 /// The method named `name`. \throw InvalidInput naming it and the methods there are.
 Method parse_method(const std::string& name);
 
-/// The linear operator a method applies: its prior at the λ² `emit eval` measured best on the
-/// 60 mm sheet (paper 10⁴, noser 1.5·10³, laplacian 6·10⁵; the paper's own λ² = 1000 belongs to
-/// its Jacobian's scale). Contact fitting is seeded by the paper method's image, so `fit` gets
-/// the paper method's operator.
+/// The linear operator a method applies: its prior, with λ² left to the rule (lambda_rule.hpp)
+/// at the multiple of the spectrum's scale `emit eval` measured best on the 60 mm, 30 mm,
+/// circle and 120 mm sheets (paper 1.63, noser 2.4, laplacian 1.27). Contact fitting is seeded by the paper
+/// method's image, so `fit` gets the paper method's operator.
 OperatorOptions operator_options(Method method);
 
 }  // namespace emit

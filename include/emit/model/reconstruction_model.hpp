@@ -18,11 +18,14 @@ namespace emit {
 struct ReconstructionModel {
   Mesh mesh;
   MeasurementSet measurements;
-  OperatorOptions options;
-  CompactOperator op;  ///< R (paper eq. 7) as the per-frame path applies it
+  OperatorOptions options;  ///< with the λ² the operator was built with (chosen, when options left it 0)
+  CompactOperator op;       ///< R (paper eq. 7) as the per-frame path applies it
   /// Eq. 8's uncalibrated coefficients for the model's sensor (LinearCalibration::uncalibrated):
   /// a linear method's until calibrated, and how contact fitting ranks its seeds.
   LinearCalibration uncalibrated;
+  /// One reading's noise σ [V] (model/image_noise.hpp): contacts are reported only where the
+  /// image stands out from the noise this puts in it. 0: no such test.
+  double reading_noise_V = 0;
   bool loaded_from_cache = false;
 };
 

@@ -20,10 +20,13 @@ enum class Prior {
 
 struct OperatorOptions {
   Prior prior = Prior::identity;
-  /// λ². The paper chose 1000 by L-curve and positional error (§3.1) for its own Jacobian's
-  /// scale; the same procedure on ours (`emit eval`) puts the optimum near 10⁴ on the 60 and
-  /// 30 mm sheets (~6–8k triangles), so that is the default.
-  double lambda2 = 1.0e4;
+  /// λ², or 0 (the default) to choose it from the spectrum of J Q⁻¹ Jᵀ: relative_lambda2 times
+  /// its second eigenvalue (model/lambda_rule.hpp). The paper chose its λ² = 1000 by
+  /// L-curve and positional error (§3.1) for its own Jacobian's scale; a fixed λ² does not carry
+  /// over between sheets, whose Jacobians' scales differ ~20×.
+  double lambda2 = 0;
+  /// λ²/spectrum_scale when lambda2 is 0: the prior's, as `emit eval` measured it (model/method.hpp).
+  double relative_lambda2 = 1.63;
   double noser_exponent = 0.5;  ///< p for the NOSER prior
   /// Per frame, R is applied truncated to its singular values above this fraction of the
   /// largest (compact_operator.hpp); 0 keeps them all.
@@ -33,8 +36,8 @@ struct OperatorOptions {
 std::string prior_name(Prior prior);
 
 /// The dense operator R. \param J  M by #F Jacobian (jacobian.hpp). \return #F by M.
-/// \throw InvalidInput for a non-positive λ². For tests and baselines: the per-frame path uses
-/// build_compact_operator, which never forms R.
+/// λ² = 0 chooses it (OperatorOptions::lambda2). \throw InvalidInput for a negative λ². For tests and baselines: the
+/// per-frame path uses build_compact_operator, which never forms R.
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options);
 
 /// R truncated at options.rank_cutoff (compact_operator.hpp), built from the eigendecomposition
@@ -54,6 +57,8 @@ class OperatorFamily {
   /// ‖(R − A·B) δV‖ ≤ 2⁻¹² s₁ ‖δV‖, at the resolution of a 12-bit ADC (paper §3.1).
   /// \throw InvalidInput for a non-positive λ² or a cutoff outside [0, 1).
   CompactOperator compact_operator_for(double lambda2, double relative_cutoff) const;
+  /// options.lambda2, or when it is 0 the automatic choice from the spectrum (lambda_rule.hpp).
+  double lambda2_for(const OperatorOptions& options) const;
   /// The eigenvalues σ of J Q⁻¹ Jᵀ, ascending (the data's singular values squared).
   const Vector& eigenvalues() const { return sigma_; }
 

@@ -1,0 +1,65 @@
+#include "emit/eval/linear_robustness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace emit {
+
+namespace {
+
+/// localisation_errors' image-centroid mean, with a reference averaged from `frames` frames.
+double position_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, const Frame& reference, int frames) {
+  std::vector<double> errors;
+  int missed = 0;
+  reconstructor.set_reference(reference, frames);
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const Press& truth = run.presses[f].at(0);
+    reconstructor.process(run.frames[f]);
+    const Vector2 c = thresholded_centroid(reconstructor, 0.5);
+    if (!c.allFinite()) ++missed;
+    else errors.push_back(std::hypot(c.x() - truth.x_mm, c.y() - truth.y_mm));
+  }
+  return summarize_errors(errors, missed).mean;
+}
+
+}  // namespace
+
+double false_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run, double distance_mm,
+                          int reference_frames) {
+  reconstructor.set_reference(run.reference, reference_frames);
+  int ghosts = 0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    bool ghost = false;
+    for (const Contact& c : reconstructor.process(run.frames[f])) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Press& p : run.presses[f]) nearest = std::min(nearest, std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm));
+      ghost = ghost || nearest > distance_mm;
+    }
+    ghosts += ghost;
+  }
+  return run.frames.empty() ? 0.0 : static_cast<double>(ghosts) / static_cast<double>(run.frames.size());
+}
+
+ReferenceSpread single_reference_spread(Reconstructor& reconstructor, const SimulatedRun& run,
+                                        const std::vector<Frame>& references) {
+  ReferenceSpread spread{std::numeric_limits<double>::infinity(), 0};
+  for (const Frame& reference : references) {
+    const double e = position_error_mm(reconstructor, run, reference, 1);
+    spread.low_mm = std::min(spread.low_mm, e);
+    spread.high_mm = std::max(spread.high_mm, e);
+  }
+  return spread;
+}
+
+double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, std::vector<Frame> references,
+                                double extra_noise_V, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, extra_noise_V);
+  if (!references.empty())
+    for (Index i = 0; i < references[0].size(); ++i) references[0].data()[i] += noise(rng);
+  return position_error_mm(reconstructor, run, average_frames(references), frames_averaged(references));
+}
+
+}  // namespace emit
