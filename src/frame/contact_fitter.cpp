@@ -135,30 +135,76 @@ void ContactFitter::build_atoms() {
   atom_gram_ = atoms_.transpose() * atoms_;
 }
 
-/// The pair of atoms, at least the plausible separation apart, whose positive combination best
-/// explains `target` (σ units): a global search for the starts of a two-contact fit, where
-/// seeds from linear images mislead (their peaks sit by the electrodes, and one disc fitted to two
-/// presses settles between them). \return false if no pair has two positive weights.
-bool ContactFitter::best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const {
+/// The set of `count` atoms, pairwise at least the plausible separation apart, whose positive
+/// combination best explains `target` (σ units): a global search for the starts of a fit of that
+/// many contacts, where seeds from linear images mislead (their peaks sit by the electrodes, and
+/// one disc fitted to two presses settles between them). Greedy, each atom added the one that
+/// explains most with all weights positive, then each member swapped for any atom that explains
+/// more (the greedy first choice is often between two presses). The explained sum of squares of
+/// a set S is bᵀ_S G_S⁻¹ b_S, G the atoms' Gram matrix: a solve of at most max_contacts unknowns.
+/// \return false if no such set has all weights positive.
+bool ContactFitter::best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const {
   const Vector b = atoms_.transpose() * target;
   const double min_separation = plausible_separation_mm();
-  double best = 0;
-  for (Index i = 0; i < b.size(); ++i)
-    for (Index j = i + 1; j < b.size(); ++j) {
-      const Disc &p = atom_discs_[static_cast<std::size_t>(i)], &q = atom_discs_[static_cast<std::size_t>(j)];
-      if (std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) < min_separation) continue;
-      // The 2×2 normal equations; the explained sum of squares is wᵀb.
-      const double gii = atom_gram_(i, i), gjj = atom_gram_(j, j), gij = atom_gram_(i, j);
-      const double det = gii * gjj - gij * gij;
-      if (!(det > 1e-12 * gii * gjj)) continue;
-      const double wi = (gjj * b[i] - gij * b[j]) / det, wj = (gii * b[j] - gij * b[i]) / det;
-      if (wi <= 0 || wj <= 0 || wi * b[i] + wj * b[j] <= best) continue;
-      best = wi * b[i] + wj * b[j];
-      // In the current-source regime a disc's frame scales with its conductance.
-      pair = {Disc{p.x_mm, p.y_mm, p.radius_mm, p.conductance_S_per_mm2 * wi},
-              Disc{q.x_mm, q.y_mm, q.radius_mm, q.conductance_S_per_mm2 * wj}};
+  const auto atoms = static_cast<Index>(atom_discs_.size());
+  const auto apart = [&](Index i, Index j) {
+    const Disc &p = atom_discs_[static_cast<std::size_t>(i)], &q = atom_discs_[static_cast<std::size_t>(j)];
+    return std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) >= min_separation;
+  };
+  // The explained sum of squares of a set, and its weights; −1 if a weight is not positive.
+  const auto explained_by = [&](const std::vector<Index>& members, Vector& w) {
+    const auto k = static_cast<Index>(members.size());
+    Matrix G(k, k);
+    Vector bs(k);
+    for (Index r = 0; r < k; ++r) {
+      bs[r] = b[members[static_cast<std::size_t>(r)]];
+      for (Index c = 0; c < k; ++c)
+        G(r, c) = atom_gram_(members[static_cast<std::size_t>(r)], members[static_cast<std::size_t>(c)]);
     }
-  return best > 0;
+    const Eigen::LDLT<Matrix> ldlt(G);
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 1e-12 * G.diagonal().maxCoeff()).all())
+      return -1.0;
+    w = ldlt.solve(bs);
+    if (!(w.array() > 0).all()) return -1.0;
+    return w.dot(bs);
+  };
+  std::vector<Index> members;
+  Vector w;
+  // Best replacement of slot `slot` (or a new member at the end), keeping the others.
+  const auto best_for_slot = [&](std::size_t slot, double current) {
+    double best = current;
+    Index best_atom = -1;
+    std::vector<Index> trial = members;
+    if (slot == trial.size()) trial.push_back(-1);
+    for (Index a = 0; a < atoms; ++a) {
+      bool ok = true;
+      for (std::size_t m = 0; m < trial.size() && ok; ++m) ok = m == slot || (trial[m] != a && apart(trial[m], a));
+      if (!ok) continue;
+      trial[slot] = a;
+      const double e = explained_by(trial, w);
+      if (e > best) best = e, best_atom = a;
+    }
+    if (best_atom < 0) return current;
+    if (slot == members.size()) members.push_back(best_atom);
+    else members[slot] = best_atom;
+    return best;
+  };
+  double explained = 0;
+  for (int k = 0; k < count; ++k) {
+    const std::size_t before = members.size();
+    explained = best_for_slot(members.size(), explained);
+    if (members.size() == before) return false;  // no further atom with all weights positive
+  }
+  for (int sweep = 0; sweep < 2; ++sweep)
+    for (std::size_t slot = 0; slot < members.size(); ++slot) explained = best_for_slot(slot, explained);
+  if (explained_by(members, w) <= 0) return false;
+  set.clear();
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const Disc& d = atom_discs_[static_cast<std::size_t>(members[m])];
+    // In the current-source regime a disc's frame scales with its conductance.
+    set.push_back({d.x_mm, d.y_mm, d.radius_mm, d.conductance_S_per_mm2 * w[static_cast<Index>(m)]});
+  }
+  return true;
 }
 
 Frame ContactFitter::predict(const std::vector<Disc>& discs) {
@@ -375,38 +421,67 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   double misfit_sq = fit_discs(dV, discs);
   std::size_t next_seed = 1;
   Vector residual;
-  // Look for another contact only while the misfit is clearly above the readings' noise and
-  // the model's error (explained()).
-  // The starts for one more contact. First the fit's own proposals: for a second contact the
-  // best pair of atoms (a fresh start of both), and where the linear image of what the fit leaves
-  // unexplained peaks. Then the caller's remaining seeds, one at a time.
-  bool fresh = true;
+  // The starts for one more contact, all fitted, the best kept: a fresh start of every contact
+  // from the best set of atoms for the frame; the fitted discs plus the atom that best explains
+  // what they leave; plus where the linear image of what they leave peaks. Then the caller's
+  // remaining seeds, one at a time.
+  // Then, where one more does not explain enough (one disc sits among several presses, and any
+  // one more leaves the others), fresh starts of two and three more from the best atom sets.
+  int stage = 0;
   std::vector<std::vector<Disc>> starts;
   const auto next_starts = [&] {
     starts.clear();
-    if (fresh) {
-      fresh = false;
-      std::array<Disc, 2> pair;
-      if (discs.size() == 1 && best_atom_pair(dV / noise_V_, pair))
-        starts.push_back({clamp_seed(pair[0]), clamp_seed(pair[1])});
-      Disc seed;
+    const int k = static_cast<int>(discs.size());
+    std::vector<Disc> set;
+    if (stage == 0) {
+      if (best_atom_set(dV / noise_V_, k + 1, set)) {
+        for (Disc& d : set) d = clamp_seed(d);
+        starts.push_back(std::move(set));
+      }
       this->misfit(discs, dV, residual);
+      std::vector<Disc> one;
+      if (best_atom_set(-residual / noise_V_, 1, one)) add_starts(discs, one[0], starts);
+      Disc seed;
       if (residual_peak && residual_peak(residual, seed)) add_starts(discs, seed, starts);
+    } else if (stage <= 2) {
+      // Only where the contacts leave more than a press's model error: several presses missed.
+      if (k + stage + 1 <= options_.max_contacts && !explained(misfit_sq, dV) &&
+          best_atom_set(dV / noise_V_, k + stage + 1, set)) {
+        for (Disc& d : set) d = clamp_seed(d);
+        starts.push_back(std::move(set));
+      }
     } else if (next_seed < seeds.size()) {
       add_starts(discs, seeds[next_seed++], starts);
     }
-    return !starts.empty();
+    ++stage;
+    return !starts.empty() || stage <= 3;
   };
-  int failed = 0;  // each try costs a fit or few: give up after a few
-  while (static_cast<int>(discs.size()) < options_.max_contacts && !explained(misfit_sq, dV) && failed < 3 &&
-         next_starts()) {
+  // One more contact is tried while the contacts do not explain the frame (explained(): beyond the
+  // noise and a press's model error) or, once there are two or more, while the misfit is beyond
+  // the noise (χ² above M by 4 of its σ, √(2M)): among three or four presses, two 12 mm apart
+  // fitted by one disc between them leave less than the model's error of a strong press, so the
+  // first rule alone misses them; a single press stops at the first, as cheap as before. It is kept if it
+  // halves what the misfit has beyond the noise (a quarter for two more, an eighth for three) and
+  // the set lies on the sheet, its discs apart (a single press's model error is its shape, which
+  // a disc elsewhere does not halve).
+  const double noise_sq = noise_V_ * noise_V_ * measurements_.size();
+  const double beyond_noise_sq = noise_V_ * noise_V_ * 4 * std::sqrt(2.0 * measurements_.size());
+  int failed = 0;  // the caller's seeds cost a few fits each: give up after a few
+  const auto another = [&] {
+    if (!explained(misfit_sq, dV)) return true;
+    return discs.size() >= 2 && misfit_sq > noise_sq + beyond_noise_sq;
+  };
+  while (static_cast<int>(discs.size()) < options_.max_contacts && another() && failed < 3 && next_starts()) {
+    if (starts.empty()) continue;
     std::vector<Disc> more;
     double more_sq = 0;
-    if (fit_best_start(dV, starts, more, more_sq) && more_sq <= (1 - new_contact_gain) * misfit_sq) {
+    const bool any = fit_best_start(dV, starts, more, more_sq);
+    const auto added = static_cast<int>(more.size()) - static_cast<int>(discs.size());
+    if (any && more_sq - noise_sq <= std::pow(1 - new_contact_gain, added) * (misfit_sq - noise_sq)) {
       discs = std::move(more);
       misfit_sq = more_sq;
-      fresh = true;
-    } else {
+      stage = 0;
+    } else if (stage > 3) {
       ++failed;
     }
   }

@@ -21,7 +21,7 @@
 namespace emit {
 
 struct FitOptions {
-  int max_contacts = 3;
+  int max_contacts = 4;  ///< fingers at once (a hand's: issue 14 measures three and four)
   double edge_mm = 0;  ///< the disc's rim smoothing half-width; 0: a quarter of the mesh size
   /// The model disc's radius, held. While the contact's resistance dwarfs the sheet's spreading
   /// resistance (the current-source regime, docs/physics.md, "Contact fitting"), a disc's field
@@ -107,7 +107,7 @@ class ContactFitter {
   double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
   void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);
   void build_atoms();
-  bool best_atom_pair(const Vector& target, std::array<Disc, 2>& pair) const;
+  bool best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const;
   void add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const;
   bool fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best,
                       double& best_sq);
