@@ -86,8 +86,18 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--lambda2", job.options.lambda2, "lambda^2 (default: the method's)")->check(positive_number());
   cmd->add_option("--threshold", job.options.threshold_fraction, "Threshold fraction")->capture_default_str();
   cmd->add_flag("!--no-sheet", job.options.fit_sheet,
-                "With --method fit: keep the nominal sheet resistance instead of fitting its variation from the "
-                "presses");
+                "With --method fit: keep the nominal sensor (sheet, electrodes, drive) instead of fitting it from "
+                "the presses");
+  cmd->add_option("--sheet-terms", job.options.sensor.sheet_terms,
+                  "With --method fit: the sheet's resistance field, 5 (quadratic) or 9 (cubic) terms")
+      ->check(CLI::IsMember({5, 9}))
+      ->capture_default_str();
+  cmd->add_flag("!--no-electrodes", job.options.sensor.fit_electrode_positions,
+                "With --method fit: keep the electrodes where the sensor file says (do not fit their positions)");
+  cmd->add_flag("!--no-series-resistance", job.options.sensor.fit_series_resistance,
+                "With --method fit: keep the sensor file's series resistances (do not fit them)");
+  cmd->add_flag("!--no-drive", job.options.sensor.fit_drive_voltage,
+                "With --method fit: keep the sensor file's drive voltage (do not fit it)");
   cmd->add_option("--cache", job.options.cache_dir,
                   "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->callback([a] { run_calibrate(*a); });

@@ -29,6 +29,7 @@ constexpr Field fields[] = {
     {"x_std_mm", &Contact::x_std_mm, true},
     {"y_std_mm", &Contact::y_std_mm, true},
     {"pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2, true},
+    {"force_std_N", &Contact::force_std_N, true},
 };
 
 bool has_uncertainty(const Contact& c) { return c.x_std_mm > 0 || c.y_std_mm > 0 || c.pressure_std_N_per_mm2 > 0; }

@@ -218,14 +218,16 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
                 .exit_code,
             0);
   ASSERT_EQ(run_emit("simulate" + twin + " --press 9,20,2.5,3 --out " + d + "/one.csv").exit_code, 0);
+  // The sheet alone (a quadratic field, as issue 4 made it): 12 presses pin its range.
   auto r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
-                    "/cal_presses.csv --out " + d + "/calib.json");
+                    "/cal_presses.csv --out " + d + "/calib.json --sheet-terms 5 --no-electrodes "
+                    "--no-series-resistance --no-drive");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   double low = 0, high = 0;
-  const auto at = r.out.find("its conductance is ");
+  const auto at = r.out.find("sheet conductance ");
   ASSERT_NE(at, std::string::npos) << r.out;
   // NOLINTNEXTLINE(cert-err34-c): emit's own output, the field count checks its shape
-  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "its conductance is %lf to %lf", &low, &high), 2) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "sheet conductance %lf to %lf", &low, &high), 2) << r.out;
   EXPECT_NEAR(low, 1 / 1.2, 0.02) << "the twin's sheet: 1/(1 ± 0.2) of the nominal conductance";
   EXPECT_NEAR(high, 1 / 0.8, 0.02);
   const auto error_mm = [&](const std::string& calibration) {
@@ -237,6 +239,15 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   };
   EXPECT_LT(error_mm(" --calibration " + d + "/calib.json"), 0.2);
   EXPECT_GT(error_mm(""), 1.0);
+  // The whole sensor (cubic field, electrodes, series resistances, drive: 42 parameters from 12
+  // presses): the press is found as well, and the file says which parameters the presses set.
+  r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
+               "/cal_presses.csv --out " + d + "/full.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(error_mm(" --calibration " + d + "/full.json"), 0.2);
+  const std::string full = test::read_text(d + "/full.json");
+  EXPECT_NE(full.find("\"electrode_shift_mm\""), std::string::npos) << full;
+  EXPECT_NE(full.find("\"determined\": true"), std::string::npos) << full;
 }
 
 // emit eval as a user runs it, on one sheet: contact fitting meets issue 4's target for the 30 mm

@@ -23,6 +23,9 @@ struct Contact {
   double force_N = 0;                  ///< Σ P_k A_k
   /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
   double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;
+  /// The force's 1σ: the fit's, and the indenter's unknown size (contact fitting reports the
+  /// calibration indenter's area; frame/reconstructor.hpp says how much that leaves open).
+  double force_std_N = 0;
   int element_count = 0;
 };
 

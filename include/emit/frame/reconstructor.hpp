@@ -70,6 +70,7 @@ class Reconstructor {
   /// for contact fitting's seeds.
   LinearCalibration linear_;
   double indenter_radius_mm_ = 0;  ///< contact fitting's (FitCalibration::indenter_radius_mm)
+  double gamma_ = -1.2;            ///< contact fitting's contact law's exponent (for the force's σ)
   FrameOptions options_;
   double min_area_mm2_ = 0;  ///< the larger of min_contact_area_mm2 and min_contact_cells' area
   ContactFinder finder_;
