@@ -19,14 +19,14 @@ namespace {
 
 /// Parameter blocks of the fit, in the units Ceres sees (each about 1 over its plausible range).
 struct Blocks {
-  std::vector<double> theta;        ///< the sheet correction's log-conductance terms
+  std::vector<double> theta;          ///< the sheet correction's log-conductance terms
   std::array<double, 1> log_drive{};  ///< log(E / E_nominal)
-  std::vector<double> series;       ///< R_l / series_unit_ohm
-  std::vector<double> shift_mm;     ///< each electrode's slide along the border
+  std::vector<double> series;         ///< R_l / series_unit_ohm
+  std::vector<double> shift_mm;       ///< each electrode's slide along the border
 };
 constexpr double series_unit_ohm = 100;
 // The priors: the plausible range of a real sheet (issue 14), one σ each.
-constexpr double theta_prior_std = 1.0;   // a factor e over half the sheet
+constexpr double theta_prior_std = 1.0;  // a factor e over half the sheet
 constexpr double log_drive_prior_std = 0.1;
 constexpr double series_prior_std = 3.0;  // 300 Ω
 constexpr double shift_prior_std_mm = 0.5;
@@ -92,8 +92,10 @@ class PressesMisfit {
     }
     if (moved || theta != cached_theta_) {  // the Green's function only when the sheet changes
       predictor_.reset();
-      green_ = dense_green_function(
-          mesh_, correction(theta.data()).element_conductance_S(mesh_, sensor_.sheet_resistance_ohm_per_sq), columns_);
+      green_ = dense_green_function(mesh_,
+                                    correction(theta.data())
+                                        .element_conductance_S(mesh_, sensor_.sheet_resistance_ohm_per_sq),
+                                    columns_);
       predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
       cached_theta_ = theta;
     }
@@ -280,8 +282,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   cost->AddParameterBlock(N);
   cost->SetNumResiduals(misfit->residual_count());
   ceres::Problem problem;
-  const ceres::ResidualBlockId data = problem.AddResidualBlock(cost, nullptr, x.theta.data(), x.log_drive.data(),
-                                                               x.series.data(), x.shift_mm.data());
+  const ceres::ResidualBlockId data =
+      problem.AddResidualBlock(cost, nullptr, x.theta.data(), x.log_drive.data(), x.series.data(), x.shift_mm.data());
   problem.AddResidualBlock(new Prior(std::vector<double>(x.theta.size(), 0.0),
                                      std::vector<double>(x.theta.size(), theta_prior_std)),
                            nullptr, x.theta.data());
@@ -361,8 +363,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   Matrix information = J.transpose() * J;
   for (std::size_t k = 0; k < prior_std.size(); ++k)
     information(static_cast<Index>(k), static_cast<Index>(k)) += 1.0 / (prior_std[k] * prior_std[k]);
-  const Matrix covariance = information.ldlt().solve(Matrix::Identity(information.rows(), information.cols())) *
-                            std::max(1.0, chi2);
+  const Matrix covariance =
+      information.ldlt().solve(Matrix::Identity(information.rows(), information.cols())) * std::max(1.0, chi2);
   std::vector<double> flat = x.theta;
   if (options.fit_drive_voltage) flat.push_back(result.drive_voltage_V);
   if (options.fit_series_resistance)
@@ -409,8 +411,7 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
                                    const std::vector<Frame>& frames, const Frame& reference,
                                    const PressSequence& presses, const SensorCalibrationOptions& options,
                                    const std::function<void(const std::string&)>& progress) {
-  if (frames.size() != presses.size())
-    throw InvalidInput("sensor calibration: one set of presses per frame is needed");
+  if (frames.size() != presses.size()) throw InvalidInput("sensor calibration: one set of presses per frame is needed");
   std::vector<Vector> dV;
   std::vector<Vector2> centres;
   for (std::size_t f = 0; f < frames.size(); ++f) {

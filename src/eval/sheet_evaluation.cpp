@@ -240,9 +240,9 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
       const SimulatedRun calibration =
           simulate_run(twin,
                        pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
-      const SensorCalibration sensor_fit = calibrate_sensor(c.sensor, fit_model->mesh, model.measurements,
-                                                            calibration.frames, calibration.reference,
-                                                            calibration.presses);
+      const SensorCalibration sensor_fit =
+          calibrate_sensor(c.sensor, fit_model->mesh, model.measurements, calibration.frames, calibration.reference,
+                           calibration.presses);
       const SheetCorrection& correction = sensor_fit.correction;
       const Sensor sensor_as_fitted = calibrated_sensor(c.sensor, sensor_fit);
       const Mesh slid = slide_electrodes(fit_model->mesh, c.sensor, sensor_fit.electrode_shift_mm);

@@ -162,8 +162,7 @@ bool ContactFitter::best_atom_set(const Vector& target, int count, std::vector<D
         G(r, c) = atom_gram_(members[static_cast<std::size_t>(r)], members[static_cast<std::size_t>(c)]);
     }
     const Eigen::LDLT<Matrix> ldlt(G);
-    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 1e-12 * G.diagonal().maxCoeff()).all())
-      return -1.0;
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().array() > 1e-12 * G.diagonal().maxCoeff()).all()) return -1.0;
     w = ldlt.solve(bs);
     if (!(w.array() > 0).all()) return -1.0;
     return w.dot(bs);
@@ -491,9 +490,8 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     dropped = false;
     for (const FittedContact& c : result_.contacts)
       if (std::max(c.x_std_mm, c.y_std_mm) > plausible_separation_mm()) {
-        const auto it = std::find_if(discs.begin(), discs.end(), [&](const Disc& d) {
-          return d.x_mm == c.disc.x_mm && d.y_mm == c.disc.y_mm;
-        });
+        const auto it = std::find_if(discs.begin(), discs.end(),
+                                     [&](const Disc& d) { return d.x_mm == c.disc.x_mm && d.y_mm == c.disc.y_mm; });
         if (it == discs.end()) continue;
         discs.erase(it);
         const int evaluations = result_.evaluations;

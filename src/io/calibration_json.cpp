@@ -38,9 +38,10 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
   for (const char* key : {"box_mm", "log_conductance"})
     if (!j.contains(key)) throw InvalidInput(where + ": " + key + ": missing");
   const std::vector<double> box = numbers(where + ".box_mm", j["box_mm"], 4);
-  const std::size_t terms = j["log_conductance"].is_array() && j["log_conductance"].size() == SheetCorrection::cubic_terms
-                                ? SheetCorrection::cubic_terms
-                                : SheetCorrection::quadratic_terms;  // else the error says 5
+  const std::size_t terms =
+      j["log_conductance"].is_array() && j["log_conductance"].size() == SheetCorrection::cubic_terms
+          ? SheetCorrection::cubic_terms
+          : SheetCorrection::quadratic_terms;  // else the error says 5
   const std::vector<double> theta = numbers(where + ".log_conductance", j["log_conductance"], terms);
   if (!(box[2] > box[0] && box[3] > box[1]))
     throw InvalidInput(where + ".box_mm: must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
@@ -107,8 +108,7 @@ Calibration load_calibration(const std::string& path) {
     else if (law && item.key() == "indenter_radius_mm")
       throw InvalidInput(path + ": indenter_radius_mm must be positive");
     else if (law && item.key() == "drive_voltage_V" && v > 0) fit.drive_voltage_V = v;
-    else if (law && item.key() == "drive_voltage_V")
-      throw InvalidInput(path + ": drive_voltage_V must be positive");
+    else if (law && item.key() == "drive_voltage_V") throw InvalidInput(path + ": drive_voltage_V must be positive");
     else if (law && item.key() == "electrode_count" && v >= 3 && v == std::floor(v) && v < 1e6)
       fit.electrode_count = static_cast<int>(v);
     else if (law && item.key() == "electrode_count")
@@ -148,8 +148,11 @@ nlohmann::json to_json(const FitCalibration& c) {
 nlohmann::json to_json(const SensorCalibration& r) {
   nlohmann::json parameters = nlohmann::json::array();
   for (const CalibratedParameter& p : r.parameters)
-    parameters.push_back(
-        {{"name", p.name}, {"value", p.value}, {"std", p.std}, {"prior_std", p.prior_std}, {"determined", p.determined}});
+    parameters.push_back({{"name", p.name},
+                          {"value", p.value},
+                          {"std", p.std},
+                          {"prior_std", p.prior_std},
+                          {"determined", p.determined}});
   return {{"presses", r.presses},
           {"rms_misfit_nominal_mV", 1e3 * r.rms_misfit_nominal_V},
           {"rms_misfit_calibrated_mV", 1e3 * r.rms_misfit_corrected_V},

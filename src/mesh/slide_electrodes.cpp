@@ -102,9 +102,8 @@ Mesh slide_electrodes(const Mesh& mesh, const Sensor& sensor, const std::vector<
     double along = 0;  // the node's displacement along the border [mm]
     for (std::size_t e = 0; e < zone.size(); ++e) {
       if (shift_mm[e] == 0 || zone[e].reach_mm == 0) continue;
-      const double from_electrode =
-          std::max(0.0, std::abs(arc_between(sensor.electrodes[e].center_s_mm, at.s_mm, L)) -
-                            0.5 * sensor.electrodes[e].width_mm);
+      const double from_electrode = std::max(0.0, std::abs(arc_between(sensor.electrodes[e].center_s_mm, at.s_mm, L)) -
+                                                      0.5 * sensor.electrodes[e].width_mm);
       along += shift_mm[e] * falloff(from_electrode, zone[e].rigid_mm, zone[e].reach_mm) *
                falloff(at.distance_mm, zone[e].rigid_mm, zone[e].reach_mm);
     }

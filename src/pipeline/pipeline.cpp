@@ -42,11 +42,10 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
     throw InvalidInput(calibration_source + ": a calibration of a sensor with " +
                        std::to_string(fit_calibration_.electrode_count) + " electrodes; this one has " +
                        std::to_string(N));
-  if (!fit_calibration_.electrode_shift_mm.empty() &&
-      static_cast<int>(fit_calibration_.electrode_shift_mm.size()) != N)
+  if (!fit_calibration_.electrode_shift_mm.empty() && static_cast<int>(fit_calibration_.electrode_shift_mm.size()) != N)
     throw InvalidInput(calibration_source + ": electrode_shift_mm has " +
-                       std::to_string(fit_calibration_.electrode_shift_mm.size()) + " values for " +
-                       std::to_string(N) + " electrodes");
+                       std::to_string(fit_calibration_.electrode_shift_mm.size()) + " values for " + std::to_string(N) +
+                       " electrodes");
   if (!fit_calibration_.series_resistance_ohm.empty() &&
       static_cast<int>(fit_calibration_.series_resistance_ohm.size()) != N)
     throw InvalidInput(calibration_source + ": series_resistance_ohm has " +

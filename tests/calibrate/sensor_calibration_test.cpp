@@ -116,5 +116,38 @@ TEST(SheetCalibration, TravelsInTheCalibrationFile) {
   }
 }
 
+// Series resistances: a twin whose electrodes reach ground through 0–300 Ω. The fit's values
+// carry an offset of their own (the fit mesh's electrodes against the twin's finer ones: what the
+// nominal twin's presses give), so the difference between the two fits is what is compared.
+TEST(SensorCalibration, RecoversTheSeriesResistances) {
+  const Sheet30 s;
+  std::vector<double> truth(16);
+  for (std::size_t e = 0; e < truth.size(); ++e) truth[e] = 300.0 * static_cast<double>((7 * e) % 16) / 15.0;
+  const auto fitted = [&](const std::vector<double>& series) {
+    TwinOptions options;
+    options.mesh_seed = 4;
+    options.series_resistance_ohm = series;
+    Twin twin(s.sensor, options);
+    PressStyle style;
+    style.radius_mm = 2.5, style.margin_mm = 3.5, style.min_force_N = 2, style.max_force_N = 8, style.seed = 5;
+    const SimulatedRun run = simulate_run(twin, random_script(s.sensor, 12, style), 1);
+    SensorCalibrationOptions only;
+    only.sheet_terms = SheetCorrection::quadratic_terms;
+    only.fit_drive_voltage = only.fit_electrode_positions = false;
+    return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses, only);
+  };
+  const SensorCalibration with = fitted(truth), without = fitted({});
+  double worst = 0;
+  for (std::size_t e = 0; e < truth.size(); ++e)
+    worst = std::max(worst, std::abs(with.series_resistance_ohm[e] - without.series_resistance_ohm[e] - truth[e]));
+  // 12 presses of 2–8 N draw ~50–200 µA: 1 mV of noise is ~10 Ω of one reading; over the ~100
+  // readings of its row, the fit's 1σ is a few Ω (the report's), 30 Ω is a tenth of the range.
+  EXPECT_LT(worst, 30.0);
+  EXPECT_LT(with.chi2_per_reading, 2.0);  // the model explains the presses to the noise
+  for (const CalibratedParameter& p : with.parameters) {
+    if (p.name.rfind("series", 0) == 0) EXPECT_TRUE(p.determined) << p.name;
+  }
+}
+
 }  // namespace
 }  // namespace emit

@@ -220,7 +220,8 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   ASSERT_EQ(run_emit("simulate" + twin + " --press 9,20,2.5,3 --out " + d + "/one.csv").exit_code, 0);
   // The sheet alone (a quadratic field, as issue 4 made it): 12 presses pin its range.
   auto r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
-                    "/cal_presses.csv --out " + d + "/calib.json --sheet-terms 5 --no-electrodes "
+                    "/cal_presses.csv --out " + d +
+                    "/calib.json --sheet-terms 5 --no-electrodes "
                     "--no-series-resistance --no-drive");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   double low = 0, high = 0;

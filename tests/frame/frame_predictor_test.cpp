@@ -180,8 +180,8 @@ TEST(FramePredictor, SeriesResistanceAgreesWithADirectSolve) {
   for (const std::vector<Press>& presses :
        {std::vector<Press>{{30, 30, 5, 8}}, std::vector<Press>{{15, 20, 4, 5}, {45, 40, 3, 30}}}) {
     const ContactLoad load = press_contact_load(mesh, presses, sensor.contact);
-    const Frame exact = frame_with_series_resistance(mesh, sensor.sheet_resistance_ohm_per_sq, load,
-                                                     sensor.drive_voltage_V, ohm);
+    const Frame exact =
+        frame_with_series_resistance(mesh, sensor.sheet_resistance_ohm_per_sq, load, sensor.drive_voltage_V, ohm);
     Frame predicted;
     predictor.predict(load.triangles, load.local_S, sensor.drive_voltage_V, predicted);
     predicted.diagonal().setZero();  // the grounded electrode's own reading is not modelled

@@ -51,7 +51,8 @@ TEST(SlideElectrodes, GivesTheRemeshedSheetsFrames) {
   options.electrode_edge_size_factor = 0.25;
   const Mesh mesh = generate_mesh(sensor, options);
   std::vector<double> shift(16, 0.0);
-  for (std::size_t e = 0; e < shift.size(); ++e) shift[e] = (e % 2 ? 0.3 : -0.3) * (1 + 0.1 * static_cast<double>(e % 3));
+  for (std::size_t e = 0; e < shift.size(); ++e)
+    shift[e] = (e % 2 ? 0.3 : -0.3) * (1 + 0.1 * static_cast<double>(e % 3));
   const Mesh slid = slide_electrodes(mesh, sensor, shift);
   const Mesh remeshed = generate_mesh(with_electrodes_slid(sensor, shift), options);
   const std::vector<Press> press{{11, 17, 2.5, 3}};

@@ -39,9 +39,9 @@ namespace emit {
 
 /// One fitted parameter with its uncertainty.
 struct CalibratedParameter {
-  std::string name;    ///< "sheet θ_u", "drive_voltage_V", "series_resistance_ohm[3]"
-  double value = 0;    ///< in the unit its name says
-  double std = 0;      ///< posterior 1σ
+  std::string name;  ///< "sheet θ_u", "drive_voltage_V", "series_resistance_ohm[3]"
+  double value = 0;  ///< in the unit its name says
+  double std = 0;    ///< posterior 1σ
   double prior_std = 0;
   bool determined = false;  ///< std < half of prior_std: the presses, not the prior, set it
 };

@@ -53,8 +53,8 @@ class FramePredictor {
   // Kept from predict() for derivative(): the fields on the patch (Q) and the electrodes, and per
   // grounding l the 2×2 system and its solution.
   double E_ = 0, drawn_by_a_ = 0, x0_ = 0;  ///< x0_: the drive across the sheet with ground 0
-  std::vector<double> series_ohm_;           ///< per electrode; empty: none
-  Matrix Q_, W_e_;  ///< W_e_.col(l) = w_l on the electrodes
+  std::vector<double> series_ohm_;          ///< per electrode; empty: none
+  Matrix Q_, W_e_;                          ///< W_e_.col(l) = w_l on the electrodes
   std::vector<Eigen::Matrix2d> regrounding_;
   std::vector<Eigen::Vector2d> xI_;
   Matrix dC_, dY_, dZ_p_, dZ_e_;

@@ -7,8 +7,8 @@
 /// pipeline checks it against the method then (pipeline/pipeline.hpp).
 #include <optional>
 #include <string>
-#include <vector>
 #include <variant>
+#include <vector>
 
 #include "emit/model/pressure.hpp"
 #include "emit/model/sheet_correction.hpp"

@@ -17,7 +17,7 @@ namespace emit {
 
 struct SheetCorrection {
   static constexpr int quadratic_terms = 5, cubic_terms = 9;
-  Vector2 lower_mm = Vector2::Zero(), upper_mm = Vector2::Ones();  ///< the box (u, v) is scaled on
+  Vector2 lower_mm = Vector2::Zero(), upper_mm = Vector2::Ones();                   ///< the box (u, v) is scaled on
   std::vector<double> log_conductance = std::vector<double>(quadratic_terms, 0.0);  ///< θ: 5 or 9 terms
 
   /// The uncorrected sheet over the mesh's bounding box, with `terms` (5 or 9) terms.
