@@ -145,7 +145,8 @@ TEST(SensorCalibration, RecoversTheSeriesResistances) {
   EXPECT_LT(worst, 30.0);
   EXPECT_LT(with.chi2_per_reading, 2.0);  // the model explains the presses to the noise
   for (const CalibratedParameter& p : with.parameters) {
-    if (p.name.rfind("series", 0) == 0) EXPECT_TRUE(p.determined) << p.name;
+    if (p.name.rfind("series", 0) != 0) continue;
+    EXPECT_TRUE(p.determined) << p.name;
   }
 }
 
