@@ -219,7 +219,8 @@ TEST(FramePredictor, SeriesResistanceDerivativeMatchesFiniteDifferences) {
   const double step = 1e-5;
   const auto scaled = [&](double factor) {
     std::vector<Eigen::Matrix3d> out;
-    for (const auto& m : load.local_S) out.push_back(factor * m);
+    out.reserve(load.local_S.size());
+    for (const auto& m : load.local_S) out.emplace_back(factor * m);
     return out;
   };
   Frame fa, fb;

@@ -76,10 +76,12 @@ TEST(LinearSignificance, WeakPressesAboveTheNoiseAreFound) {
   twin_options.noise_seed = 12;
   Twin twin(sensor, twin_options);
   std::vector<Frame> references;
+  references.reserve(10);
   for (int i = 0; i < 10; ++i) references.push_back(twin.frame({}));
   reconstructor.set_reference(average_frames(references), 10);
   int weak_found = 0;
-  for (double force_N = 0.6; force_N > 0.1; force_N /= 1.2) {
+  for (int step = 0; 0.6 / std::pow(1.2, step) > 0.1; ++step) {  // 0.6 N down by 1.2 a step
+    const double force_N = 0.6 / std::pow(1.2, step);
     const Press press{22, 35, 5, force_N};
     const std::vector<Contact>& contacts = reconstructor.process(twin.frame({press}));
     const double z = (reconstructor.image().array() / reconstructor.significance_floor().array()).maxCoeff();
