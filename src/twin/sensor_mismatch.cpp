@@ -3,19 +3,17 @@
 #include <random>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/slide_electrodes.hpp"
 
 namespace emit {
 
 Sensor with_shifted_electrodes(const Sensor& nominal, double max_shift_mm, std::uint64_t seed) {
   if (!nominal.border) throw InvalidInput("shifting electrodes needs an analytic border");
-  Sensor shifted = nominal;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> shift(-max_shift_mm, max_shift_mm);
-  for (Electrode& e : shifted.electrodes) {
-    e.center_s_mm = wrap_arclength(e.center_s_mm + shift(rng), nominal.border->length_mm());
-    e.center_mm = nominal.border->point_at(e.center_s_mm);
-  }
-  return shifted;
+  std::vector<double> shift_mm(nominal.electrodes.size());
+  for (double& s : shift_mm) s = shift(rng);  // drawn in electrode order, as before
+  return with_electrodes_slid(nominal, shift_mm);
 }
 
 std::vector<Mismatch> standard_mismatches(const Sensor& nominal, const TwinOptions& base, std::uint64_t seed) {
