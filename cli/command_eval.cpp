@@ -1,9 +1,16 @@
 // emit eval: simulate presses with the twin (a finer, different mesh; 12-bit ADC, 1 mV noise),
 // reconstruct them, and report positional and pressure errors per method at its best lambda,
-// beside the paper's figures (eval/sheet_evaluation.hpp).
+// beside the paper's figures (eval/sheet_evaluation.hpp); with --realistic, the round a user
+// runs with a real sheet, on a realistic one, beside issue 14's targets
+// (eval/realistic_evaluation.hpp).
 #include <cstdio>
+#include <sstream>
+#include <string>
 
 #include "commands.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
+#include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
 
 namespace emit::cli {
@@ -15,8 +22,128 @@ struct EvalArgs {
   std::vector<std::string> methods{"paper", "noser", "laplacian", "fit"};
   bool sweep = false;
   std::string plots_dir = "emit-eval";
-  std::string sheet;  ///< only the sheets whose name contains this
+  std::string sheet;                 ///< only the sheets whose name contains this
+  CLI::Option* realistic = nullptr;  ///< --realistic [SEED]
+  CLI::Option* seed = nullptr;       ///< --seed, given or not
+  std::string realistic_seed;
+  RealisticEvalOptions realistic_options;
 };
+
+/// `--realistic`'s SEED: a whole number 0 or larger (not CLI11's unsigned parse, which takes -1).
+std::uint64_t parse_seed(const std::string& text) {
+  std::size_t used = 0;
+  std::uint64_t seed = 0;
+  try {
+    seed = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || text[0] == '-')
+    throw InvalidInput("--realistic: the seed must be a whole number 0 or larger, got " + quote_input(text));
+  return seed;
+}
+
+/// A figure of the realistic round beside its target: the nominal file's, the calibrated one's.
+void print_row(const char* figure, const std::string& nominal, const std::string& calibrated, const std::string& target,
+               bool met) {
+  std::printf("  %-52s %-14s %-20s %-14s %s\n", figure, nominal.c_str(), calibrated.c_str(), target.c_str(),
+              target.empty() ? "" : (met ? "met" : "MISSED"));
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::string percent(double fraction) { return format("%.1f %%", 100 * fraction); }
+
+std::string of_frames(double fraction, int frames) {
+  return format("%.0f %%", 100 * fraction) + " of " + std::to_string(frames);
+}
+
+void print_realistic(const RealisticEvaluation& e) {
+  using T = RealisticTargets;
+  const SinglePressScore &n = e.nominal, &c = e.calibrated, &o = e.other_indenters;
+  const RealisticEvalCounts& k = e.counts;
+  std::printf(
+      "  %d reference frames, %d calibration and %d test presses (r = %.1f mm, flat); reconstruction mesh "
+      "%ld triangles\n",
+      k.reference_frames, k.calibration_presses, k.test_presses, e.radius_mm, e.triangles);
+  if (k.calibration_iterations > 0)
+    std::printf("  the sensor calibration stopped after at most %d iterations\n", k.calibration_iterations);
+  std::printf("  %-52s %-14s %-20s %-14s\n", "contact fitting", "nominal file", "calibrated", "issue 14");
+  print_row("position, mean", format("%.3f mm", n.position_mm.mean), format("%.3f mm", c.position_mm.mean),
+            format("<= %.1f mm", T::position_mean_mm), c.position_mm.mean <= T::position_mean_mm);
+  print_row("position, p95", format("%.3f mm", n.position_mm.p95), format("%.3f mm", c.position_mm.p95),
+            format("<= %.1f mm", T::position_p95_mm), c.position_mm.p95 <= T::position_p95_mm);
+  print_row("presses without a contact", std::to_string(n.position_mm.missed), std::to_string(c.position_mm.missed), "",
+            true);
+  print_row("force, mean |relative error| (same indenter)", percent(n.force_error), percent(c.force_error),
+            format("<= %.0f %%", 100 * T::force_error), c.force_error <= T::force_error);
+  print_row("pressure, mean |error| (N/mm2)", format("%.4f", n.pressure_error_N_per_mm2),
+            format("%.4f", c.pressure_error_N_per_mm2), format("<= %.2f", T::pressure_error_N_per_mm2),
+            c.pressure_error_N_per_mm2 <= T::pressure_error_N_per_mm2);
+  const double false_rate = e.single_presses ? e.false_contacts / static_cast<double>(e.single_presses) : 0;
+  print_row("false contacts (single presses, > 1 contact)",
+            std::to_string(n.extra_contacts) + " of " + std::to_string(n.frames),
+            std::to_string(e.false_contacts) + " of " + std::to_string(e.single_presses),
+            format("<= %.0f %%", 100 * T::false_contacts), false_rate <= T::false_contacts);
+  print_row("other indenters (3-10 mm), mean |force error|", "-", percent(o.force_error),
+            format("<= %.0f %%", 100 * T::other_indenters_force_error),
+            o.force_error <= T::other_indenters_force_error);
+  print_row("  |force error| within the reported 1 sigma", "-", percent(o.within_1_sigma),
+            format(">= %.0f %%", 100 * T::within_1_sigma), o.within_1_sigma >= T::within_1_sigma);
+  print_row("  |force error| within 2 sigma", "-", percent(o.within_2_sigma),
+            format(">= %.0f %%", 100 * T::within_2_sigma), o.within_2_sigma >= T::within_2_sigma);
+  const std::string apart = format("%.0f mm apart", 12 * e.radius_mm / 5);
+  const std::string within = format("within %.0f mm", e.match_mm);
+  print_row(("three presses >= " + apart + ", all " + within).c_str(), "-",
+            of_frames(e.three_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::three_presses),
+            e.three_presses >= T::three_presses);
+  print_row(("four presses >= " + apart + ", all " + within).c_str(), "-",
+            of_frames(e.four_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::four_presses),
+            e.four_presses >= T::four_presses);
+  print_row("calibration, wall time", "-", format("%.1f s", e.calibration_s), format("<= %.0f s", T::calibration_s),
+            e.calibration_s <= T::calibration_s);
+  print_row("contact fitting, a frame of one press", "-", format("%.1f ms", e.fit_ms_per_frame), "", true);
+  print_row("  of three or four presses", "-", format("%.0f ms", e.several_ms_per_frame), "", true);
+  std::printf("  other indenters, mean force error (%d presses each):", k.presses_per_indenter);
+  for (const IndenterScore& i : e.indenters)
+    std::printf(" %s %.1f mm %+.1f %%%s", profile_name(i.profile), i.radius_mm, 100 * i.score.force_bias,
+                &i == &e.indenters.back() ? "\n" : ",");
+  for (const std::string& w : e.calibration_warnings)
+    std::fprintf(stderr, "emit: warning: calibration: %s\n", w.c_str());
+}
+
+/// `emit eval --realistic`: the realistic round on each chosen sheet (the 60 mm one by default).
+void run_realistic(EvalArgs& args) {
+  RealisticEvalOptions& o = args.realistic_options;
+  if (!args.realistic_seed.empty()) o.sheet.seed = parse_seed(args.realistic_seed);
+  o.mesh_seed = args.options.mesh_seed;
+  if (args.seed->count() > 0) o.seed = args.options.seed;
+  if (args.options.quick) o.counts = quick_realistic_counts();
+  o.validate();
+  const std::string sheet = args.sheet.empty() ? "60" : args.sheet;
+  std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
+  std::erase_if(cases, [&](const EvalCase& c) { return c.name.find(sheet) == std::string::npos; });
+  if (cases.empty())
+    throw InvalidInput("--sheet " + quote_input(sheet) + ": no sheet's name has it (60, 30, circle, 120)");
+  std::printf(
+      "emit eval --realistic %llu: the round of README \"A realistic sheet\" on the twin (mesh seed %d; noise "
+      "and presses from seed %llu), beside issue 14's targets%s\n",
+      static_cast<unsigned long long>(o.sheet.seed), o.mesh_seed, static_cast<unsigned long long>(o.seed),
+      args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
+  for (const EvalCase& c : cases) {
+    std::printf("\n%s, %d electrodes, realistic sheet %llu\n", c.name.c_str(), c.sensor.electrode_count(),
+                static_cast<unsigned long long>(o.sheet.seed));
+    std::fflush(stdout);
+    const RealisticEvaluation e = evaluate_realistic_sheet(c, o, stderr_progress());
+    std::istringstream description(e.sheet_description);
+    for (std::string line; std::getline(description, line);) std::printf("  | %s\n", line.c_str());
+    print_realistic(e);
+  }
+}
 
 /// The automatic λ² (no --lambda2) beside the sweep's best, and what the significance test and
 /// the reference's averaging do.
@@ -73,6 +200,7 @@ void print_mismatches(const SheetEvaluation& e) {
 }
 
 void run_eval(EvalArgs args) {
+  if (args.realistic->count() > 0) return run_realistic(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
   std::printf("emit eval: twin on a finer mesh (seed %d), 12-bit ADC, 1 mV noise; %s grid of single presses\n",
@@ -110,10 +238,16 @@ void add_eval_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lambda2", o.lambda2, "lambda^2 values to sweep (default: 1 to 1e6, 8 per decade)")->delimiter(',');
   cmd->add_option("--mesh-seed", o.mesh_seed, "Seed of the twin's mesh")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise")->capture_default_str();
+  a->seed =
+      cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise (default 1; with --realistic, 11)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_option("--sheet", a->sheet, "Only the sheets whose name contains this (60, 30, circle, 120)");
   cmd->add_flag("--quick", o.quick, "Fewer presses (a smoke test)");
+  a->realistic = cmd->add_option("--realistic", a->realistic_seed,
+                                 "The round a user runs with a real sheet, on a realistic sheet drawn from SEED "
+                                 "(default 3): calibrate, reconstruct, score against issue 14's targets; only the "
+                                 "60 mm sheet unless --sheet says; --methods, --lambda2 and the sweep do not apply")
+                     ->expected(0, 1);
   cmd->add_flag("!--no-mismatches", o.mismatches, "Skip the sensor-mismatch runs");
   cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
       ->capture_default_str();
