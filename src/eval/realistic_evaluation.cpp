@@ -164,17 +164,17 @@ RealisticRuns simulate_round(const EvalCase& c, const RealisticSheet& sheet, con
 
 }  // namespace
 
-RealisticEvaluation evaluate_realistic_sheet(const EvalCase& c, const RealisticEvalOptions& options,
+RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const RealisticEvalOptions& options,
                                              const Progress& progress) {
   options.validate();
   TwinOptions base;
   base.mesh_seed = options.mesh_seed;  // finer than and different from the reconstruction's mesh
-  const RealisticSheet sheet = make_realistic_sheet(c.sensor, options.sheet, base);
+  const RealisticSheet sheet = make_realistic_sheet(eval_case.sensor, options.sheet, base);
   RealisticEvaluation result;
   result.sheet_description = sheet.description;
   result.counts = options.counts;
-  result.radius_mm = c.radius_mm;
-  const RealisticRuns runs = simulate_round(c, sheet, options, result.indenters, progress);
+  result.radius_mm = eval_case.radius_mm;
+  const RealisticRuns runs = simulate_round(eval_case, sheet, options, result.indenters, progress);
 
   progress.say("calibrating from " + std::to_string(runs.calibration.size()) + " presses, as emit calibrate does");
   const Clock::time_point calibration_start = Clock::now();
@@ -182,21 +182,21 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& c, const RealisticE
   if (options.counts.calibration_iterations > 0)
     calibration_options.sensor.max_iterations = options.counts.calibration_iterations;
   const PressCalibrationResult calibration =
-      calibrate_from_presses(c.sensor, calibration_options, runs.reference, runs.calibration_frames, runs.calibration,
-                             progress.stage);
+      calibrate_from_presses(eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames,
+                             runs.calibration, progress.stage);
   result.calibration_s = seconds_since(calibration_start);
   if (calibration.sheet) result.calibration_warnings = calibration.sheet->warnings;
 
   {  // the nominal description, as before calibrating; its models freed before the calibrated ones
     progress.say("contact fitting with the nominal description");
-    Pipeline nominal(c.sensor, PipelineOptions{}, std::nullopt, progress.stage);
+    Pipeline nominal(eval_case.sensor, PipelineOptions{}, std::nullopt, progress.stage);
     result.triangles = static_cast<long>(nominal.model().mesh.triangle_count());
     result.nominal =
         score_single_presses(reconstruct(nominal, runs.reference, runs.test_frames, "test press (nominal)", progress),
                              runs.test);
   }
   progress.say("contact fitting with the calibration");
-  Pipeline calibrated(c.sensor, PipelineOptions{}, calibration.calibration, progress.stage);
+  Pipeline calibrated(eval_case.sensor, PipelineOptions{}, calibration.calibration, progress.stage);
   const Clock::time_point fit_start = Clock::now();
   result.calibrated = score_single_presses(reconstruct(calibrated, runs.reference, runs.test_frames,
                                                        "test press (calibrated)", progress),
