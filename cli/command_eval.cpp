@@ -89,14 +89,17 @@ void print_realistic(const RealisticEvaluation& e) {
             std::to_string(n.extra_contacts) + " of " + std::to_string(n.frames),
             std::to_string(e.false_contacts) + " of " + std::to_string(e.single_presses),
             format("<= %.0f %%", 100 * T::false_contacts), false_rate <= T::false_contacts);
-  print_row("other indenters (3-10 mm), mean |force error|", "-", percent(o.force_error),
-            format("<= %.0f %%", 100 * T::other_indenters_force_error),
+  char others[96] = "other indenters, mean |force error|";
+  if (!e.indenters.empty())
+    std::snprintf(others, sizeof others, "other indenters (%g-%g mm), mean |force error|",
+                  e.indenters.front().radius_mm, e.indenters.back().radius_mm);
+  print_row(others, "-", percent(o.force_error), format("<= %.0f %%", 100 * T::other_indenters_force_error),
             o.force_error <= T::other_indenters_force_error);
   print_row("  |force error| within the reported 1 sigma", "-", percent(o.within_1_sigma),
             format(">= %.0f %%", 100 * T::within_1_sigma), o.within_1_sigma >= T::within_1_sigma);
   print_row("  |force error| within 2 sigma", "-", percent(o.within_2_sigma),
             format(">= %.0f %%", 100 * T::within_2_sigma), o.within_2_sigma >= T::within_2_sigma);
-  const std::string apart = format("%.0f mm apart", 12 * e.radius_mm / 5);
+  const std::string apart = format("%.0f mm apart", e.separation_mm);
   const std::string within = format("within %.0f mm", e.match_mm);
   print_row(("three presses >= " + apart + ", all " + within).c_str(), "-",
             of_frames(e.three_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::three_presses),
@@ -247,7 +250,8 @@ void add_eval_command(CLI::App& app) {
                                  "The round a user runs with a real sheet, on a realistic sheet drawn from SEED "
                                  "(default 3): calibrate, reconstruct, score against issue 14's targets; only the "
                                  "60 mm sheet unless --sheet says; --methods, --lambda2 and the sweep do not apply")
-                     ->expected(0, 1);
+                     ->expected(0, 1)
+                     ->type_name("[SEED]");
   cmd->add_flag("!--no-mismatches", o.mismatches, "Skip the sensor-mismatch runs");
   cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
       ->capture_default_str();

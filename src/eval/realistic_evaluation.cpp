@@ -174,6 +174,7 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
   result.sheet_description = sheet.description;
   result.counts = options.counts;
   result.radius_mm = eval_case.radius_mm;
+  result.separation_mm = eval_case.radius_mm / round_radius_mm * fingers_separation_mm;
   const RealisticRuns runs = simulate_round(eval_case, sheet, options, result.indenters, progress);
 
   progress.say("calibrating from " + std::to_string(runs.calibration.size()) + " presses, as emit calibrate does");

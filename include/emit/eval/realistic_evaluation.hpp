@@ -80,6 +80,7 @@ struct RealisticEvaluation {
   RealisticEvalCounts counts;
   double radius_mm = 5;                  ///< the calibration's and the test presses' indenter (flat)
   double match_mm = 2;                   ///< a press of several is found when a contact of its own is this close
+  double separation_mm = 12;             ///< the least distance between two presses of a frame of several
   SinglePressScore nominal, calibrated;  ///< the test presses, with the nominal file and calibrated
   std::vector<IndenterScore> indenters;  ///< calibrated
   SinglePressScore other_indenters;      ///< all of them at once
