@@ -2,6 +2,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <optional>
 
 #include "emit/core/errors.hpp"
@@ -147,10 +148,9 @@ RealisticRuns simulate_round(const EvalCase& c, const RealisticSheet& sheet, con
       runs.indenters.push_back(
           random_script(c.sensor, n.presses_per_indenter,
                         style_of(r, round_min_force_N, round_max_force_N, force_scale, script_seed++, profile)));
-      runs.indenter_frames.push_back(
-          simulate(twin, runs.indenters.back(),
-                   std::string(profile_name(profile)) + " " + std::to_string(static_cast<int>(radius_mm)) + " mm press",
-                   progress));
+      char what[64];
+      std::snprintf(what, sizeof what, "%s %g mm press", profile_name(profile), r);
+      runs.indenter_frames.push_back(simulate(twin, runs.indenters.back(), what, progress));
     }
   const PressStyle fingers = style_of(c.radius_mm, fingers_min_force_N, fingers_max_force_N, force_scale, script_seed);
   runs.three = fingers_script(c.sensor, n.multi_press_frames, 3, scale * fingers_separation_mm, fingers);
