@@ -1,5 +1,6 @@
 #include "emit/eval/contact_scoring.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -71,6 +72,19 @@ double fraction_every_press_matched(const ContactSequence& contacts, const Press
   int matched = 0;
   for (std::size_t f = 0; f < presses.size(); ++f) matched += every_press_matched(contacts[f], presses[f], match_mm);
   return matched / static_cast<double>(presses.size());
+}
+
+bool has_false_contact(const std::vector<Contact>& contacts, const std::vector<Press>& presses, double distance_mm) {
+  const auto distance = [](const Contact& c, const Press& p) { return std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm); };
+  std::vector<Contact> left(contacts.begin(), contacts.end());
+  for (const Press& p : presses) {
+    if (left.empty()) break;
+    left.erase(std::min_element(left.begin(), left.end(),
+                                [&](const Contact& a, const Contact& b) { return distance(a, p) < distance(b, p); }));
+  }
+  return std::any_of(left.begin(), left.end(), [&](const Contact& c) {
+    return std::all_of(presses.begin(), presses.end(), [&](const Press& p) { return distance(c, p) > distance_mm; });
+  });
 }
 
 }  // namespace emit

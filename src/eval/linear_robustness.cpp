@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+#include "emit/eval/contact_scoring.hpp"
+
 namespace emit {
 
 namespace {
@@ -30,15 +32,8 @@ double false_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run,
                           int reference_frames) {
   reconstructor.set_reference(run.reference, reference_frames);
   int ghosts = 0;
-  for (std::size_t f = 0; f < run.frames.size(); ++f) {
-    bool ghost = false;
-    for (const Contact& c : reconstructor.process(run.frames[f])) {
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const Press& p : run.presses[f]) nearest = std::min(nearest, std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm));
-      ghost = ghost || nearest > distance_mm;
-    }
-    ghosts += ghost;
-  }
+  for (std::size_t f = 0; f < run.frames.size(); ++f)
+    ghosts += has_false_contact(reconstructor.process(run.frames[f]), run.presses[f], distance_mm);
   return run.frames.empty() ? 0.0 : static_cast<double>(ghosts) / static_cast<double>(run.frames.size());
 }
 

@@ -95,5 +95,18 @@ TEST(ContactScoring, FractionOfFramesMatched) {
   EXPECT_THROW(score_single_presses(contacts, {{press_at(0, 0)}}), InvalidInput);
 }
 
+// A false contact is a contact no press takes and far from all: the press's own contact 12 mm
+// off is a position error, not one; a second contact 12 mm off is; one 8 mm off (within the 10 mm
+// of two radii) is not; any contact in a frame without presses is.
+TEST(ContactScoring, FalseContactsAreContactsNoPressTakes) {
+  EXPECT_FALSE(has_false_contact({contact_at(22, 10)}, {press_at(10, 10)}, 10));
+  EXPECT_TRUE(has_false_contact({contact_at(10, 10), contact_at(22, 10)}, {press_at(10, 10)}, 10));
+  EXPECT_TRUE(has_false_contact({contact_at(22, 10), contact_at(10, 10)}, {press_at(10, 10)}, 10));
+  EXPECT_FALSE(has_false_contact({contact_at(10, 10), contact_at(18, 10)}, {press_at(10, 10)}, 10));
+  EXPECT_FALSE(has_false_contact({contact_at(10, 10), contact_at(40, 40)}, {press_at(10, 10), press_at(40, 41)}, 10));
+  EXPECT_TRUE(has_false_contact({contact_at(0, 0)}, {}, 10));
+  EXPECT_FALSE(has_false_contact({}, {press_at(10, 10)}, 10));
+}
+
 }  // namespace
 }  // namespace emit

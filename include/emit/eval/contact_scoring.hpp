@@ -43,4 +43,11 @@ bool every_press_matched(const std::vector<Contact>& contacts, const std::vector
 /// `contacts` and `presses` differ in length.
 double fraction_every_press_matched(const ContactSequence& contacts, const PressSequence& presses, double match_mm);
 
+/// Whether a frame has a contact that is not a press: one left over when each press has taken
+/// its nearest contact still left, and farther than `distance_mm` from every press (any contact,
+/// in a frame without presses). A press's own contact placed far off is a position error, not a
+/// false contact: on the 120 mm sheet the paper method's image of a central press is above half
+/// its maximum nearly everywhere, one contact the size of the sheet, its centroid ~10 mm off.
+bool has_false_contact(const std::vector<Contact>& contacts, const std::vector<Press>& presses, double distance_mm);
+
 }  // namespace emit

@@ -9,8 +9,9 @@
 
 namespace emit {
 
-/// The fraction of frames with a contact farther than `distance_mm` from every press of the
-/// frame (any contact, in a frame without presses).
+/// The fraction of frames with a contact that is not a press (has_false_contact,
+/// contact_scoring.hpp).
+
 double false_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run, double distance_mm,
                           int reference_frames = 10);
 
