@@ -43,80 +43,13 @@ std::uint64_t parse_seed(const std::string& text) {
   return seed;
 }
 
-/// A figure of the realistic round beside its target: the nominal file's, the calibrated one's.
-void print_row(const char* figure, const std::string& nominal, const std::string& calibrated, const std::string& target,
-               bool met) {
-  std::printf("  %-52s %-14s %-20s %-14s %s\n", figure, nominal.c_str(), calibrated.c_str(), target.c_str(),
-              target.empty() ? "" : (met ? "met" : "MISSED"));
-}
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-std::string percent(double fraction) { return format("%.1f %%", 100 * fraction); }
-
-std::string of_frames(double fraction, int frames) {
-  return format("%.0f %%", 100 * fraction) + " of " + std::to_string(frames);
-}
-
-void print_realistic(const RealisticEvaluation& e) {
-  using T = RealisticTargets;
-  const SinglePressScore &n = e.nominal, &c = e.calibrated, &o = e.other_indenters;
-  const RealisticEvalCounts& k = e.counts;
-  std::printf(
-      "  %d reference frames, %d calibration and %d test presses (r = %.1f mm, flat); reconstruction mesh "
-      "%ld triangles\n",
-      k.reference_frames, k.calibration_presses, k.test_presses, e.radius_mm, e.triangles);
-  if (k.calibration_iterations > 0)
-    std::printf("  the sensor calibration stopped after at most %d iterations\n", k.calibration_iterations);
-  std::printf("  %-52s %-14s %-20s %-14s\n", "contact fitting", "nominal file", "calibrated", "issue 14");
-  print_row("position, mean", format("%.3f mm", n.position_mm.mean), format("%.3f mm", c.position_mm.mean),
-            format("<= %.1f mm", T::position_mean_mm), c.position_mm.mean <= T::position_mean_mm);
-  print_row("position, p95", format("%.3f mm", n.position_mm.p95), format("%.3f mm", c.position_mm.p95),
-            format("<= %.1f mm", T::position_p95_mm), c.position_mm.p95 <= T::position_p95_mm);
-  print_row("presses without a contact", std::to_string(n.position_mm.missed), std::to_string(c.position_mm.missed), "",
-            true);
-  print_row("force, mean |relative error| (same indenter)", percent(n.force_error), percent(c.force_error),
-            format("<= %.0f %%", 100 * T::force_error), c.force_error <= T::force_error);
-  print_row("pressure, mean |error| (N/mm2)", format("%.4f", n.pressure_error_N_per_mm2),
-            format("%.4f", c.pressure_error_N_per_mm2), format("<= %.2f", T::pressure_error_N_per_mm2),
-            c.pressure_error_N_per_mm2 <= T::pressure_error_N_per_mm2);
-  const double false_rate = e.single_presses ? e.false_contacts / static_cast<double>(e.single_presses) : 0;
-  print_row("false contacts (single presses, > 1 contact)",
-            std::to_string(n.extra_contacts) + " of " + std::to_string(n.frames),
-            std::to_string(e.false_contacts) + " of " + std::to_string(e.single_presses),
-            format("<= %.0f %%", 100 * T::false_contacts), false_rate <= T::false_contacts);
-  char others[96] = "other indenters, mean |force error|";
-  if (!e.indenters.empty())
-    std::snprintf(others, sizeof others, "other indenters (%g-%g mm), mean |force error|",
-                  e.indenters.front().radius_mm, e.indenters.back().radius_mm);
-  print_row(others, "-", percent(o.force_error), format("<= %.0f %%", 100 * T::other_indenters_force_error),
-            o.force_error <= T::other_indenters_force_error);
-  print_row("  |force error| within the reported 1 sigma", "-", percent(o.within_1_sigma),
-            format(">= %.0f %%", 100 * T::within_1_sigma), o.within_1_sigma >= T::within_1_sigma);
-  print_row("  |force error| within 2 sigma", "-", percent(o.within_2_sigma),
-            format(">= %.0f %%", 100 * T::within_2_sigma), o.within_2_sigma >= T::within_2_sigma);
-  const std::string apart = format("%.0f mm apart", e.separation_mm);
-  const std::string within = format("within %.0f mm", e.match_mm);
-  print_row(("three presses >= " + apart + ", all " + within).c_str(), "-",
-            of_frames(e.three_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::three_presses),
-            e.three_presses >= T::three_presses);
-  print_row(("four presses >= " + apart + ", all " + within).c_str(), "-",
-            of_frames(e.four_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::four_presses),
-            e.four_presses >= T::four_presses);
-  print_row("calibration, wall time", "-", format("%.1f s", e.calibration_s), format("<= %.0f s", T::calibration_s),
-            e.calibration_s <= T::calibration_s);
-  print_row("contact fitting, a frame of one press", "-", format("%.1f ms", e.fit_ms_per_frame), "", true);
-  print_row("  of three or four presses", "-", format("%.0f ms", e.several_ms_per_frame), "", true);
-  std::printf("  other indenters, mean force error (%d presses each):", k.presses_per_indenter);
-  for (const IndenterScore& i : e.indenters)
-    std::printf(" %s %.1f mm %+.1f %%%s", profile_name(i.profile), i.radius_mm, 100 * i.score.force_bias,
-                &i == &e.indenters.back() ? "\n" : ",");
-  for (const std::string& w : e.calibration_warnings)
-    std::fprintf(stderr, "emit: warning: calibration: %s\n", w.c_str());
+/// The standard sheets whose name contains `sheet` (all for ""). \throw InvalidInput if none.
+std::vector<EvalCase> matching_cases(const std::string& sheet) {
+  std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
+  std::erase_if(cases, [&](const EvalCase& c) { return c.name.find(sheet) == std::string::npos; });
+  if (cases.empty())
+    throw InvalidInput("--sheet " + quote_input(sheet) + ": no sheet's name has it (60, 30, circle, 120)");
+  return cases;
 }
 
 /// `emit eval --realistic`: the realistic round on each chosen sheet (the 60 mm one by default).
@@ -127,11 +60,7 @@ void run_realistic(EvalArgs& args) {
   if (args.seed->count() > 0) o.seed = args.options.seed;
   if (args.options.quick) o.counts = quick_realistic_counts();
   o.validate();
-  const std::string sheet = args.sheet.empty() ? "60" : args.sheet;
-  std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
-  std::erase_if(cases, [&](const EvalCase& c) { return c.name.find(sheet) == std::string::npos; });
-  if (cases.empty())
-    throw InvalidInput("--sheet " + quote_input(sheet) + ": no sheet's name has it (60, 30, circle, 120)");
+  const std::vector<EvalCase> cases = matching_cases(args.sheet.empty() ? "60" : args.sheet);
   std::printf(
       "emit eval --realistic %llu: the round of README \"A realistic sheet\" on the twin (mesh seed %d; noise "
       "and presses from seed %llu), beside issue 14's targets%s\n",
@@ -144,7 +73,7 @@ void run_realistic(EvalArgs& args) {
     const RealisticEvaluation e = evaluate_realistic_sheet(c, o, stderr_progress());
     std::istringstream description(e.sheet_description);
     for (std::string line; std::getline(description, line);) std::printf("  | %s\n", line.c_str());
-    print_realistic(e);
+    print_realistic_evaluation(e);
   }
 }
 
@@ -206,13 +135,13 @@ void run_eval(EvalArgs args) {
   if (args.realistic->count() > 0) return run_realistic(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
+  const std::vector<EvalCase> cases = matching_cases(args.sheet);
   std::printf("emit eval: twin on a finer mesh (seed %d), 12-bit ADC, 1 mV noise; %s grid of single presses\n",
               args.options.mesh_seed, args.options.quick ? "a coarse" : "a jittered");
   std::printf(
       "position: the paper's estimate (centroid of the image above 50 %% of its max); also the strongest\n"
       "contact's centroid. pressure: after calibration on separate presses, |error| vs 0.5 N/mm2 full scale.\n");
-  for (const EvalCase& c : standard_eval_cases(EMIT_EXAMPLES_DIR)) {
-    if (c.name.find(args.sheet) == std::string::npos) continue;
+  for (const EvalCase& c : cases) {
     std::printf("\n%s, %d electrodes (%s; pressure paper: 0.0457 N/mm2)\n", c.name.c_str(), c.sensor.electrode_count(),
                 c.paper_position.c_str());
     std::fflush(stdout);

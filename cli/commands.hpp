@@ -12,6 +12,10 @@
 #include "emit/model/method.hpp"
 #include "emit/sensor/press.hpp"
 
+namespace emit {
+struct RealisticEvaluation;
+}
+
 namespace emit::cli {
 
 void add_mesh_command(CLI::App& app);
@@ -48,6 +52,10 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& erro
 std::vector<std::string> method_names();
 /// The operator cache: none with --no-cache, else --cache or the default folder.
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache);
+
+/// `emit eval --realistic`'s table for one sheet: each figure beside issue 14's target
+/// (realistic_eval_table.cpp).
+void print_realistic_evaluation(const RealisticEvaluation& evaluation);
 
 /// A short table of frames: presses and the largest readings.
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses);

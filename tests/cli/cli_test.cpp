@@ -585,6 +585,8 @@ INSTANTIATE_TEST_SUITE_P(
                "--realistic: the seed must be a whole number 0 or larger, got \"x\""},
         BadRun{"realistic eval on no sheet", "eval --realistic --sheet 45 --quick",
                "--sheet \"45\": no sheet's name has it (60, 30, circle, 120)"},
+        BadRun{"eval on no sheet", "eval --sheet 45 --quick",
+               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120)"},
         BadRun{"fingers that do not fit", "simulate --script four-finger --separation-mm 55 --frames 1 --out OUT",
                "no room on the sheet for 4 presses 55 mm apart"},
         BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
