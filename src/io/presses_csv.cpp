@@ -15,21 +15,31 @@ namespace emit {
 
 namespace {
 const char* const header = "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2";
-}
+/// On a curved sheet the centre's height too (the surface's point above x, y).
+const char* const header_with_z = "frame,x_mm,y_mm,z_mm,radius_mm,force_N,pressure_N_per_mm2";
+}  // namespace
 
 void write_presses_csv(const std::string& path, const PressSequence& sequence) {
   // The profile column only when some press is not flat, so files of flat presses stay as they were.
-  bool profiles = false;
+  // Likewise the z column only where some press is off the plane (a curved sheet).
+  bool profiles = false, heights = false;
   for (const auto& frame : sequence)
-    for (const Press& p : frame) profiles = profiles || p.profile != PressProfile::flat;
+    for (const Press& p : frame) {
+      profiles = profiles || p.profile != PressProfile::flat;
+      heights = heights || p.z_mm != 0;
+    }
   AtomicFile file(path);
   auto& out = file.stream();
-  out << header << (profiles ? ",profile" : "") << '\n';
+  out << (heights ? header_with_z : header) << (profiles ? ",profile" : "") << '\n';
   char row[256];
   for (std::size_t f = 0; f < sequence.size(); ++f)
     for (const Press& p : sequence[f]) {
-      std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.radius_mm, p.force_N,
-                    p.pressure_N_per_mm2());
+      if (heights)
+        std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.z_mm, p.radius_mm,
+                      p.force_N, p.pressure_N_per_mm2());
+      else
+        std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.radius_mm, p.force_N,
+                      p.pressure_N_per_mm2());
       out << row;
       if (profiles) out << ',' << profile_name(p.profile);
       out << '\n';
@@ -40,9 +50,13 @@ void write_presses_csv(const std::string& path, const PressSequence& sequence) {
 PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) {
   LineReader lines(path, "presses file");
   std::string line;
-  if (!lines.next(line) || line.rfind("frame,x_mm,y_mm,radius_mm,force_N", 0) != 0)
-    throw InvalidInput(path + ":1: expected the header \"" + std::string(header) + "\", got " + quote_input(line));
-  const std::string expected = ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
+  const bool read = lines.next(line);
+  const bool with_z = read && line.rfind("frame,x_mm,y_mm,z_mm,radius_mm,force_N", 0) == 0;
+  if (!read || (!with_z && line.rfind("frame,x_mm,y_mm,radius_mm,force_N", 0) != 0))
+    throw InvalidInput(path + ":1: expected the header \"" + std::string(header) +
+                       "\" (or with z_mm after y_mm), got " + quote_input(line));
+  const std::string expected = with_z ? ": expected frame,x_mm,y_mm,z_mm,radius_mm,force_N[,pressure_N_per_mm2], got "
+                                      : ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
   PressSequence sequence;
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
@@ -53,8 +67,12 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     // glibc's sscanf converts as strtol and strtod do (saturating on overflow); the field count
     // and the end of the line reject a malformed line, the check below a negative frame.
     // NOLINTNEXTLINE(cert-err34-c)
-    const int fields = std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm, &p.radius_mm,
-                                   &p.force_N, &consumed, &pressure, &consumed);
+    // With z the fields are counted as without it: 5 required, a 6th the pressure.
+    const int fields = with_z ? std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm,
+                                            &p.z_mm, &p.radius_mm, &p.force_N, &consumed, &pressure, &consumed) -
+                                    1
+                              : std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm,
+                                            &p.radius_mm, &p.force_N, &consumed, &pressure, &consumed);
     // An optional 7th column after the pressure: the profile, flat or spherical.
     const auto rest = static_cast<std::size_t>(consumed);
     // A word there that is not a profile is named as such; a number stays a malformed line.
@@ -72,8 +90,8 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     const bool whole_line =
         consumed > 0 && line.find_first_not_of(" \t", static_cast<std::size_t>(consumed)) == std::string::npos;
     if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(line));
-    if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) || !(p.radius_mm > 0) || !std::isfinite(p.radius_mm) ||
-        !(p.force_N >= 0) || !std::isfinite(p.force_N))
+    if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) || !std::isfinite(p.z_mm) || !(p.radius_mm > 0) ||
+        !std::isfinite(p.radius_mm) || !(p.force_N >= 0) || !std::isfinite(p.force_N))
       throw InvalidInput(lines.where() + ": a press needs a finite place, a radius > 0 and a force >= 0, got " +
                          quote_input(line));
     if (static_cast<std::size_t>(frame) >= max_frames)

@@ -12,6 +12,7 @@
 #include "emit/render/field_image.hpp"
 #include "emit/render/image.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -69,8 +70,12 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
     throw InvalidInput("nothing to simulate: give --press x,y,r,F or --script NAME");
   report.presses = job.script ? run_script(sensor, *job.script) : PressSequence{job.presses};
   for (std::size_t f = 0; f < report.presses.size(); ++f)
-    for (std::size_t i = 0; i < report.presses[f].size(); ++i)
-      validate_press(sensor, report.presses[f][i], "frame " + std::to_string(f) + ", press " + std::to_string(i));
+    for (std::size_t i = 0; i < report.presses[f].size(); ++i) {
+      Press& press = report.presses[f][i];
+      validate_press(sensor, press, "frame " + std::to_string(f) + ", press " + std::to_string(i));
+      // Where the twin centres it: on a curved sheet the truth file says so (a z_mm column).
+      press.z_mm = surface_point_mm(sensor.shape, Vector2(press.x_mm, press.y_mm)).z();
+    }
   report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv") : job.truth_path;
   if (job.realistic) {
     validate_realistic_sheet_options(*job.realistic);

@@ -9,6 +9,8 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/mesh_io.hpp"
+#include "emit/mesh/spherical_cap.hpp"
+#include "emit/sensor/surface.hpp"
 #include "gmsh_session.hpp"
 
 namespace emit {
@@ -129,20 +131,12 @@ void grade_into_electrode_ends(const std::vector<int>& end_points, const MeshOpt
 
 double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options) {
   const Shape& shape = sensor.shape;
-  double area_mm2 = 0;
-  switch (shape.kind) {
-    case ShapeKind::rectangle: area_mm2 = shape.width_mm * shape.height_mm; break;
-    case ShapeKind::circle: area_mm2 = std::numbers::pi * shape.radius_mm * shape.radius_mm; break;
-    case ShapeKind::polygon:
-      for (std::size_t i = 0; i < shape.points_mm.size(); ++i) {
-        const Vector2& p = shape.points_mm[i];
-        const Vector2& q = shape.points_mm[(i + 1) % shape.points_mm.size()];
-        area_mm2 += 0.5 * (p.x() * q.y() - q.x() * p.y());
-      }
-      area_mm2 = std::abs(area_mm2);
-      break;
-    case ShapeKind::mesh_file: return 0;
-  }
+  if (shape.kind == ShapeKind::mesh_file) return 0;
+  // A cap is meshed as its disc at a finer size (mesh/spherical_cap.hpp): the disc's count.
+  const double area_mm2 = shape.kind == ShapeKind::spherical_cap
+                              ? std::numbers::pi * shape.radius_mm * shape.radius_mm *
+                                    std::pow(spherical_cap_stretch(shape.sphere_radius_mm, shape.radius_mm), 2)
+                              : surface_area_mm2(shape);
   const double h = options.element_size_mm;
   return area_mm2 / (std::sqrt(3.0) / 4 * h * h);
 }
@@ -179,6 +173,11 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
                   options.max_triangles);
     throw InvalidInput(text);
   }
+  // A cap: its disc, at the size that the wrapping's stretch brings back to the element size.
+  const bool cap = sensor.shape.kind == ShapeKind::spherical_cap;
+  MeshOptions flat = options;
+  if (cap) flat.element_size_mm /= spherical_cap_stretch(sensor.shape.sphere_radius_mm, sensor.shape.radius_mm);
+  const double flat_size_mm = flat.element_size_mm;
   detail::GmshSession gmsh_session;
   const std::string context = "meshing " + (sensor.name.empty() ? std::string("the sensor") : sensor.name);
   gmsh_session.run<InvalidInput>(context, [&] {
@@ -187,17 +186,19 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
     gmsh::option::setNumber("Mesh.Smoothing", options.smoothing_steps);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
-    gmsh::option::setNumber("Mesh.MeshSizeMax", options.element_size_mm);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", flat_size_mm);
     gmsh::option::setNumber("Mesh.RandomSeed", options.seed);
     // The seed only moves Gmsh's tiny random perturbations; a slightly different start size
     // makes seeds give visibly different meshes of the same density.
     gmsh::option::setNumber("Mesh.MeshSizeFactor", 1.0 + 0.01 * (options.seed % 7));
     std::vector<int> electrode_ends;
-    build_geometry(sensor, options, electrode_ends);
-    if (options.electrode_edge_size_factor < 1) grade_into_electrode_ends(electrode_ends, options);
+    build_geometry(sensor, flat, electrode_ends);
+    if (flat.electrode_edge_size_factor < 1) grade_into_electrode_ends(electrode_ends, flat);
     gmsh::model::mesh::generate(2);
   });
-  return gmsh_session.extract_mesh(context);
+  Mesh mesh = gmsh_session.extract_mesh(context);
+  if (cap) wrap_onto_spherical_cap(mesh, sensor.shape.sphere_radius_mm, sensor.shape.radius_mm);
+  return mesh;
 }
 
 }  // namespace emit

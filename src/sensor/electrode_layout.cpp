@@ -47,7 +47,9 @@ std::vector<Electrode> default_electrode_layout(const Shape& shape, const Border
     return electrodes;
   }
   const double spacing = border.length_mm() / count;
-  const double offset = shape.kind == ShapeKind::circle ? 0.0 : 0.5 * spacing;
+  // A circle's (and a cap's rim's) first electrode at angle 0, as README "Sensor description" says.
+  const bool round = shape.kind == ShapeKind::circle || shape.kind == ShapeKind::spherical_cap;
+  const double offset = round ? 0.0 : 0.5 * spacing;
   for (int i = 0; i < count; ++i) electrodes.push_back(electrode_at(border, offset + i * spacing, width_mm));
   return electrodes;
 }

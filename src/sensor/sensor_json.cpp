@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -100,6 +101,13 @@ class ObjectReader {
   std::set<std::string> used_;
 };
 
+/// A length as a person writes it: "20", "2.5".
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 Shape parse_shape(const json& j, const std::string& base_dir) {
   ObjectReader r(j, "shape");
   Shape shape;
@@ -118,12 +126,21 @@ Shape parse_shape(const json& j, const std::string& base_dir) {
     if (!points.is_array()) ObjectReader::fail("shape.points_mm", "must be a list of points [x, y]");
     for (std::size_t i = 0; i < points.size(); ++i)
       shape.points_mm.push_back(ObjectReader::check_point("shape.points_mm[" + std::to_string(i) + "]", points[i]));
+  } else if (type == "spherical_cap") {
+    shape.kind = ShapeKind::spherical_cap;
+    shape.sphere_radius_mm = r.number("sphere_radius_mm", Sign::positive);
+    shape.radius_mm = r.number("base_radius_mm", Sign::positive);
+    shape.center_mm = Vector2::Zero();
+    if (shape.radius_mm > shape.sphere_radius_mm)
+      ObjectReader::fail("shape.base_radius_mm", "must not exceed sphere_radius_mm (" +
+                                                     number_text(shape.sphere_radius_mm) + "), got " +
+                                                     number_text(shape.radius_mm));
   } else if (type == "mesh") {
     shape.kind = ShapeKind::mesh_file;
     const std::filesystem::path file = r.string("file");
     shape.mesh_path = (file.is_absolute() ? file : std::filesystem::path(base_dir) / file).string();
   } else {
-    ObjectReader::fail("shape.type", "must be rectangle, circle, polygon or mesh, got \"" + type + "\"");
+    ObjectReader::fail("shape.type", "must be rectangle, circle, polygon, spherical_cap or mesh, got \"" + type + "\"");
   }
   r.finish();
   return shape;
@@ -133,6 +150,7 @@ Border border_of(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::rectangle: return Border::rectangle(shape.width_mm, shape.height_mm);
     case ShapeKind::circle: return Border::circle(shape.center_mm, shape.radius_mm);
+    case ShapeKind::spherical_cap: return Border::circle(Vector2::Zero(), shape.radius_mm);
     case ShapeKind::polygon: try { return Border::polygon(shape.points_mm);
       } catch (const InvalidInput& e) {
         ObjectReader::fail("shape.points_mm", e.what());
@@ -303,6 +321,11 @@ json sensor_to_json(const Sensor& sensor) {
       break;
     }
     case ShapeKind::mesh_file: j["shape"] = {{"type", "mesh"}, {"file", s.mesh_path}}; break;
+    case ShapeKind::spherical_cap:
+      j["shape"] = {{"type", "spherical_cap"},
+                    {"sphere_radius_mm", s.sphere_radius_mm},
+                    {"base_radius_mm", s.radius_mm}};
+      break;
   }
   if (s.kind != ShapeKind::mesh_file) {
     json electrodes = json::array();

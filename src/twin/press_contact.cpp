@@ -11,51 +11,57 @@ namespace emit {
 
 namespace {
 
+/// A press's contact: the points of the sheet within `radius` (3D distance) of `center`, a point
+/// on the sheet. On a flat sheet a disc; on a curved one the sheet inside a ball, as the
+/// conformance frames of a spherical cap define it (their README).
 struct Disc {
-  Vector2 center;
+  Vector3 center;
   double radius;
   double pressure;
 };
 
 enum class Cover { none, full, partial };
 
-double segment_distance(const Vector2& p, const Vector2& a, const Vector2& b) {
-  const Vector2 d = b - a;
-  const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (a + t * d - p).norm();
+/// The distance from p to the triangle t in 3D (the closest point's, Ericson's regions).
+double triangle_distance(const Vector3& p, const std::array<Vector3, 3>& t) {
+  const Vector3 ab = t[1] - t[0], ac = t[2] - t[0], ap = p - t[0];
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.norm();
+  const Vector3 bp = p - t[1];
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (t[0] + d1 / (d1 - d3) * ab)).norm();
+  const Vector3 cp = p - t[2];
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (t[0] + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (p - (t[1] + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (t[2] - t[1]))).norm();
+  const double denominator = 1 / (va + vb + vc);
+  return (p - (t[0] + ab * (vb * denominator) + ac * (vc * denominator))).norm();
 }
 
-bool inside_triangle(const Vector2& p, const std::array<Vector2, 3>& t) {
-  auto side = [&](int i) {
-    const Vector2& a = t[i];
-    const Vector2& b = t[(i + 1) % 3];
-    return (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
-  };
-  const double s0 = side(0), s1 = side(1), s2 = side(2);
-  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
-}
-
-Cover classify(const std::array<Vector2, 3>& t, const Disc& d) {
+Cover classify(const std::array<Vector3, 3>& t, const Disc& d) {
   int inside = 0;
   for (const auto& v : t) inside += (v - d.center).norm() <= d.radius;
-  if (inside == 3) return Cover::full;  // a disc is convex
-  if (inside > 0 || inside_triangle(d.center, t)) return Cover::partial;
-  double distance = segment_distance(d.center, t[0], t[1]);
-  distance = std::min(distance, segment_distance(d.center, t[1], t[2]));
-  distance = std::min(distance, segment_distance(d.center, t[2], t[0]));
-  return distance < d.radius ? Cover::partial : Cover::none;
+  if (inside == 3) return Cover::full;  // a ball is convex
+  if (inside > 0) return Cover::partial;
+  return triangle_distance(d.center, t) < d.radius ? Cover::partial : Cover::none;
 }
 
-/// A sub-triangle: its corners in the plane and their barycentric coordinates in the parent.
+/// A sub-triangle: its corners and their barycentric coordinates in the parent.
 struct Piece {
-  std::array<Vector2, 3> corner;
+  std::array<Vector3, 3> corner;
   std::array<Vector3, 3> barycentric;
 };
 
 /// The four children of a piece, by its edges' midpoints.
 std::array<Piece, 4> subdivide(const Piece& p) {
   auto mid = [&](int a, int b) {
-    return std::pair<Vector2, Vector3>{0.5 * (p.corner[a] + p.corner[b]), 0.5 * (p.barycentric[a] + p.barycentric[b])};
+    return std::pair<Vector3, Vector3>{0.5 * (p.corner[a] + p.corner[b]), 0.5 * (p.barycentric[a] + p.barycentric[b])};
   };
   const auto [m01, b01] = mid(0, 1);
   const auto [m12, b12] = mid(1, 2);
@@ -93,7 +99,7 @@ class Integrator {
   }
 
  private:
-  double pressure_at(const Vector2& p) const {
+  double pressure_at(const Vector3& p) const {
     double pressure = 0;
     for (const auto& d : discs_)
       if ((p - d.center).norm() <= d.radius) pressure += d.pressure;
@@ -115,7 +121,7 @@ class SmoothIntegrator {
       : law_(law), levels_(levels) {
     for (const Press& p : presses) {
       profiles_.emplace_back(p, blur_mm);
-      centres_.emplace_back(p.x_mm, p.y_mm);
+      centres_.emplace_back(p.x_mm, p.y_mm, p.z_mm);
       // Blurred: a quarter of the blur; unblurred (spherical, or a flat press beside one): an
       // eighth of the radius, the rim refined by `levels` as the flat path does.
       const double scale = blur_mm > 0 ? blur_mm / 4 : p.radius_mm / 8;
@@ -124,7 +130,7 @@ class SmoothIntegrator {
   }
 
   const std::vector<RadialPressure>& profiles() const { return profiles_; }
-  const std::vector<Vector2>& centres() const { return centres_; }
+  const std::vector<Vector3>& centres() const { return centres_; }
 
   void add(const Piece& piece, double area, int depth, int size_depth, Eigen::Matrix3d& local) const {
     bool reached = false, rim = false;
@@ -156,21 +162,21 @@ class SmoothIntegrator {
   }
 
   /// Subdivisions (each halving the edges) that bring a triangle's longest edge to the target.
-  int size_depth(const std::array<Vector2, 3>& corner) const {
+  int size_depth(const std::array<Vector3, 3>& corner) const {
     double longest = 0;
     for (int k = 0; k < 3; ++k) longest = std::max(longest, (corner[k] - corner[(k + 1) % 3]).norm());
     return longest > target_mm_ ? static_cast<int>(std::ceil(std::log2(longest / target_mm_))) : 0;
   }
 
  private:
-  double pressure_at(const Vector2& p) const {
+  double pressure_at(const Vector3& p) const {
     double pressure = 0;
     for (std::size_t i = 0; i < profiles_.size(); ++i) pressure += profiles_[i].at((p - centres_[i]).norm());
     return pressure;
   }
 
   std::vector<RadialPressure> profiles_;
-  std::vector<Vector2> centres_;
+  std::vector<Vector3> centres_;
   const ContactLaw& law_;
   int levels_;
   double target_mm_ = 1e300;
@@ -180,11 +186,11 @@ class SmoothIntegrator {
 
 namespace {
 
-/// The triangle t as a piece: its corners in the plane, barycentric coordinates the unit vectors.
-Piece triangle_piece(const Mesh& mesh, Index t, Eigen::AlignedBox2d& box) {
+/// The triangle t as a piece: its corners, barycentric coordinates the unit vectors.
+Piece triangle_piece(const Mesh& mesh, Index t, Eigen::AlignedBox3d& box) {
   Piece piece;
   for (int k = 0; k < 3; ++k) {
-    piece.corner[k] = mesh.nodes_mm.row(mesh.triangles(t, k)).head<2>().transpose();
+    piece.corner[k] = mesh.nodes_mm.row(mesh.triangles(t, k)).transpose();
     piece.barycentric[k] = Vector3::Unit(k);
     box.extend(piece.corner[k]);
   }
@@ -195,15 +201,15 @@ Piece triangle_piece(const Mesh& mesh, Index t, Eigen::AlignedBox2d& box) {
 ContactLoad smooth_contact_load(const Mesh& mesh, const std::vector<Press>& pressing, const ContactLaw& law, int levels,
                                 double blur_mm) {
   const SmoothIntegrator integrator(pressing, blur_mm, law, levels);
-  Eigen::AlignedBox2d reach;
+  Eigen::AlignedBox3d reach;
   for (std::size_t i = 0; i < pressing.size(); ++i) {
     const double s = integrator.profiles()[i].support_mm();
-    reach.extend(integrator.centres()[i] - Vector2(s, s));
-    reach.extend(integrator.centres()[i] + Vector2(s, s));
+    reach.extend(integrator.centres()[i] - Vector3::Constant(s));
+    reach.extend(integrator.centres()[i] + Vector3::Constant(s));
   }
   ContactLoad load;
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
-    Eigen::AlignedBox2d box;
+    Eigen::AlignedBox3d box;
     const Piece piece = triangle_piece(mesh, t, box);
     if (!box.intersects(reach)) continue;
     Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
@@ -229,17 +235,18 @@ ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& press
   if (smooth && !pressing.empty()) return smooth_contact_load(mesh, pressing, law, levels, blur_mm);
   // Flat discs, unblurred: exact on triangles inside or outside, subdivided where a rim cuts.
   std::vector<Disc> discs;
-  Eigen::AlignedBox2d reach;
+  Eigen::AlignedBox3d reach;
   for (const auto& p : pressing) {
-    discs.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm, p.pressure_N_per_mm2()});
-    reach.extend(Vector2(p.x_mm - p.radius_mm, p.y_mm - p.radius_mm));
-    reach.extend(Vector2(p.x_mm + p.radius_mm, p.y_mm + p.radius_mm));
+    const Vector3 center(p.x_mm, p.y_mm, p.z_mm);
+    discs.push_back({center, p.radius_mm, p.pressure_N_per_mm2()});
+    reach.extend(center - Vector3::Constant(p.radius_mm));
+    reach.extend(center + Vector3::Constant(p.radius_mm));
   }
   ContactLoad load;
   if (discs.empty()) return load;
   const Integrator integrator(discs, law);
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
-    Eigen::AlignedBox2d box;
+    Eigen::AlignedBox3d box;
     const Piece piece = triangle_piece(mesh, t, box);
     if (!box.intersects(reach)) continue;
     Eigen::Matrix3d local = Eigen::Matrix3d::Zero();

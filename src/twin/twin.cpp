@@ -4,6 +4,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/adc.hpp"
+#include "emit/sensor/surface.hpp"
 #include "emit/twin/adc_noise.hpp"
 #include "emit/twin/press_contact.hpp"
 
@@ -55,14 +56,17 @@ Twin::Twin(Sensor sensor, const TwinOptions& options)
 }
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
+  std::vector<Press> on_sheet = presses;
   for (std::size_t i = 0; i < presses.size(); ++i) {
     const std::string where = "press " + std::to_string(i);
     validate_press(sensor_, presses[i], where);
     // A mesh-file sheet has no analytic border: ask the mesh.
     if (!sensor_.border && !mesh().contains_xy(Vector2(presses[i].x_mm, presses[i].y_mm)))
       throw InvalidInput(where + ": centre is off the sheet");
+    // On a curved sheet the press is centred on the surface above (x, y).
+    on_sheet[i].z_mm = surface_point_mm(sensor_.shape, Vector2(presses[i].x_mm, presses[i].y_mm)).z();
   }
-  return press_contact_load(mesh(), presses, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
+  return press_contact_load(mesh(), on_sheet, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
 }
 
 Frame Twin::exact_frame(const std::vector<Press>& presses) const {

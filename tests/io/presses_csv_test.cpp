@@ -49,7 +49,8 @@ TEST(PressesCsv, ErrorsNameTheLine) {
   std::ofstream(dir + "/header.csv") << "x,y\n";
   EXPECT_EQ(error_of(dir + "/header.csv"), dir +
                                                "/header.csv:1: expected the header "
-                                               "\"frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\", got \"x,y\"");
+                                               "\"frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\" (or with z_mm "
+                                               "after y_mm), got \"x,y\"");
   const std::string expected = ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
   std::ofstream(dir + "/row.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4\n\n1,1,2,three,4\n";
   EXPECT_EQ(error_of(dir + "/row.csv"), dir + "/row.csv:4" + expected + "\"1,1,2,three,4\"");
@@ -103,6 +104,27 @@ TEST(PressesCsv, ProfileColumnWhenSomePressIsNotFlat) {
   std::ofstream(dir + "/eighth.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile\n"
                                      << "0,1,2,3,4,0.14,flat,9\n";
   EXPECT_EQ(error_of(dir + "/eighth.csv"), dir + "/eighth.csv:2: profile \"flat,9\" is not flat or spherical");
+}
+
+// On a curved sheet a press's centre has a height: a z_mm column after y_mm, only when some press
+// has one (flat sheets' files stay as they were); read back to the written 4 decimals.
+TEST(PressesCsv, HeightColumnWhenSomePressIsOffThePlane) {
+  const std::string dir = test::temp_folder("presses_csv_z");
+  PressSequence sequence = {{{1, 2, 4, 10}}, {{8.25, -3.5, 4, 6}}};
+  sequence[1][0].z_mm = 6.650635;
+  write_presses_csv(dir + "/z.csv", sequence);
+  const std::string text = test::read_text(dir + "/z.csv");
+  EXPECT_EQ(text.substr(0, text.find('\n')), "frame,x_mm,y_mm,z_mm,radius_mm,force_N,pressure_N_per_mm2");
+  const PressSequence read = read_presses_csv(dir + "/z.csv");
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0][0].z_mm, 0.0);
+  EXPECT_NEAR(read[1][0].z_mm, 6.6506, 1e-12);
+  EXPECT_EQ(read[1][0].radius_mm, 4.0);
+  EXPECT_EQ(read[1][0].force_N, 6.0);
+  std::ofstream(dir + "/short.csv") << "frame,x_mm,y_mm,z_mm,radius_mm,force_N\n0,1,2,3,4\n";
+  EXPECT_EQ(
+      error_of(dir + "/short.csv"),
+      dir + "/short.csv:2: expected frame,x_mm,y_mm,z_mm,radius_mm,force_N[,pressure_N_per_mm2], got \"0,1,2,3,4\"");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "emit/sensor/sensor_json.hpp"
 
 #include <fstream>
+#include <numbers>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -48,7 +49,7 @@ TEST(Sensor, ExplicitListsMatchTheDefaultRule) {
 }
 
 TEST(Sensor, AllExamplesLoad) {
-  for (const char* name : {"default60", "square30", "circle40", "square120_32", "hexagon"}) {
+  for (const char* name : {"default60", "square30", "circle40", "square120_32", "hexagon", "dome25"}) {
     const Sensor s = load_sensor(test::source_path(std::string("examples/sensors/") + name + ".json"));
     EXPECT_GE(s.electrode_count(), 12) << name;
     EXPECT_TRUE(s.border.has_value()) << name;
@@ -116,6 +117,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"negative resistance", [](json& j) { j["probing_sheet_resistance_ohm_per_sq"] = -5; },
                 "probing_sheet_resistance_ohm_per_sq: must be positive"},
         BadCase{"negative width", [](json& j) { j["shape"]["width_mm"] = -60; }, "shape.width_mm: must be positive"},
+        BadCase{"cap wider than its sphere",
+                [](json& j) {
+                  j["shape"] = {{"type", "spherical_cap"}, {"sphere_radius_mm", 15}, {"base_radius_mm", 20}};
+                },
+                "shape.base_radius_mm: must not exceed sphere_radius_mm (15), got 20"},
         BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; },
                 "drive_voltage_V: must be a number"},
         BadCase{"fewer than 3 electrodes", [](json& j) { j["electrodes"]["count"] = 2; }, "at least 3 electrodes"},
@@ -225,6 +231,25 @@ TEST(Sensor, RoundTripsThroughJson) {
   ASSERT_EQ(back.electrode_count(), s.electrode_count());
   for (int e = 0; e < s.electrode_count(); ++e)
     EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9);
+}
+
+// A spherical cap (README "Sensor description"): its rim the circle of radius a about the origin,
+// electrodes from angle 0 counter-clockwise as on a circle, 3 mm of arc each; back through JSON.
+TEST(Sensor, SphericalCapHasTheRimsElectrodesAndRoundTrips) {
+  const Sensor s = load_sensor(test::source_path("tests/data/conformance/dome25_sensor.json"));
+  EXPECT_EQ(s.shape.kind, ShapeKind::spherical_cap);
+  EXPECT_EQ(s.shape.sphere_radius_mm, 25.0);
+  EXPECT_EQ(s.shape.radius_mm, 20.0);
+  ASSERT_EQ(s.electrode_count(), 16);
+  EXPECT_NEAR((s.electrodes[0].center_mm - Vector2(20, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((s.electrodes[4].center_mm - Vector2(0, 20)).norm(), 0, 1e-9);  // a quarter turn on
+  EXPECT_NEAR(s.border->length_mm(), 2 * std::numbers::pi * 20, 1e-9);
+  const Sensor back = parse_sensor(sensor_to_json(s));
+  EXPECT_EQ(back.shape.kind, ShapeKind::spherical_cap);
+  EXPECT_EQ(back.shape.sphere_radius_mm, 25.0);
+  EXPECT_EQ(back.shape.radius_mm, 20.0);
+  ASSERT_EQ(back.electrode_count(), 16);
+  for (int e = 0; e < 16; ++e) EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9);
 }
 
 }  // namespace

@@ -17,6 +17,9 @@ struct Press {
   double radius_mm = 5;  ///< the contact's radius (for spherical, Hertz's a)
   double force_N = 10;
   PressProfile profile = PressProfile::flat;
+  /// The centre's height: on a curved sheet the centre is the point of the surface above
+  /// (x, y) (the twin sets it, sensor/surface.hpp); 0 on a flat one.
+  double z_mm = 0;
   /// The mean pressure over the disc, F/(π r²), whatever the profile.
   double pressure_N_per_mm2() const;
   /// The pressure at distance `distance_mm` from the centre (0 outside the disc).

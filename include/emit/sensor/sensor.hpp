@@ -12,15 +12,18 @@
 
 namespace emit {
 
-enum class ShapeKind { rectangle, circle, polygon, mesh_file };
+enum class ShapeKind { rectangle, circle, polygon, mesh_file, spherical_cap };
 
 struct Shape {
   ShapeKind kind = ShapeKind::rectangle;
   double width_mm = 0, height_mm = 0;  ///< rectangle
-  double radius_mm = 0;                ///< circle
-  Vector2 center_mm{0, 0};             ///< circle
-  std::vector<Vector2> points_mm;      ///< polygon, as given
-  std::string mesh_path;               ///< mesh_file: a Gmsh .msh with "electrode <i>" curves
+  double radius_mm = 0;                ///< circle; spherical_cap: the rim's (base) radius
+  Vector2 center_mm{0, 0};             ///< circle; spherical_cap: the origin
+  /// spherical_cap: a cap of this sphere, apex up (+z), its rim the circle of radius_mm in the
+  /// plane z = 0 about the z axis (README "Sensor description"; sensor/surface.hpp).
+  double sphere_radius_mm = 0;
+  std::vector<Vector2> points_mm;  ///< polygon, as given
+  std::string mesh_path;           ///< mesh_file: a Gmsh .msh with "electrode <i>" curves
 };
 
 /// One electrode: an arc-length interval of the border, [start_s_mm, start_s_mm + width_mm]

@@ -18,7 +18,8 @@
 
 namespace emit {
 
-/// Presses are discs in the sheet's (x, y) plane. `levels` is the subdivision depth on cut
+/// A press loads the sheet where it is within its radius (3D distance) of its centre (x, y, z),
+/// a point on the sheet: a disc on a flat sheet. `levels` is the subdivision depth on cut
 /// triangles (6: children 64× smaller in edge length); `blur_mm`, the cover's Gaussian (0: none).
 /// \throw InvalidInput for a negative blur.
 ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& presses, const ContactLaw& law,
