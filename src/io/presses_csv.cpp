@@ -66,13 +66,14 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     int consumed = 0;
     // glibc's sscanf converts as strtol and strtod do (saturating on overflow); the field count
     // and the end of the line reject a malformed line, the check below a negative frame.
-    // NOLINTNEXTLINE(cert-err34-c)
     // With z the fields are counted as without it: 5 required, a 6th the pressure.
+    // NOLINTBEGIN(cert-err34-c)
     const int fields = with_z ? std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm,
                                             &p.z_mm, &p.radius_mm, &p.force_N, &consumed, &pressure, &consumed) -
                                     1
                               : std::sscanf(line.c_str(), "%ld,%lf,%lf,%lf,%lf%n,%lf%n", &frame, &p.x_mm, &p.y_mm,
                                             &p.radius_mm, &p.force_N, &consumed, &pressure, &consumed);
+    // NOLINTEND(cert-err34-c)
     // An optional 7th column after the pressure: the profile, flat or spherical.
     const auto rest = static_cast<std::size_t>(consumed);
     // A word there that is not a profile is named as such; a number stays a malformed line.
