@@ -111,7 +111,7 @@ class PressesMisfit {
   /// Each press a held disc of unit conductance at its true centre on the current mesh, and the
   /// Green's function's columns they and the electrodes need.
   void integrate_presses() const {
-    const DiscContactIntegrator integrator(mesh_, options_.edge_mm);
+    const DiscContactIntegrator integrator(mesh_, options_.edge_mm, 3, sensor_.shape);
     const ElectrodeDofs dofs = number_electrode_dofs(mesh_);
     columns_.clear();
     for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e

@@ -34,7 +34,7 @@ SinglePressScore score_single_presses(const ContactSequence& contacts, const Pre
       continue;
     }
     const Contact& strongest = found.front();
-    errors_mm.push_back(std::hypot(strongest.x_mm - truth.x_mm, strongest.y_mm - truth.y_mm));
+    errors_mm.push_back(position_error_mm(strongest, truth));
     const double force_error_N = strongest.force_N - truth.force_N;
     score.force_error += std::abs(force_error_N) / truth.force_N;
     score.force_bias += force_error_N / truth.force_N;
@@ -57,7 +57,7 @@ bool every_press_matched(const std::vector<Contact>& contacts, const std::vector
     std::size_t nearest = contacts.size();
     double nearest_mm = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < contacts.size(); ++i)
-      if (const double d = std::hypot(contacts[i].x_mm - p.x_mm, contacts[i].y_mm - p.y_mm);
+      if (const double d = position_error_mm(contacts[i], p);
           !taken[i] && d < nearest_mm)
         nearest = i, nearest_mm = d;
     if (nearest == contacts.size() || nearest_mm > match_mm) return false;
@@ -75,7 +75,7 @@ double fraction_every_press_matched(const ContactSequence& contacts, const Press
 }
 
 bool has_false_contact(const std::vector<Contact>& contacts, const std::vector<Press>& presses, double distance_mm) {
-  const auto distance = [](const Contact& c, const Press& p) { return std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm); };
+  const auto distance = [](const Contact& c, const Press& p) { return position_error_mm(c, p); };
   std::vector<Contact> left(contacts.begin(), contacts.end());
   for (const Press& p : presses) {
     if (left.empty()) break;

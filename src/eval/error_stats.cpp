@@ -27,9 +27,17 @@ ErrorStats summarize_errors(std::vector<double> errors_mm, int missed) {
   return s;
 }
 
+double position_error_mm(const Vector3& point_mm, const Press& press) {
+  return (point_mm - Vector3(press.x_mm, press.y_mm, press.z_mm)).norm();
+}
+
+double position_error_mm(const Contact& contact, const Press& press) {
+  return position_error_mm(Vector3(contact.x_mm, contact.y_mm, contact.z_mm), press);
+}
+
 double single_press_error_mm(const std::vector<Contact>& contacts, const Press& truth) {
   if (contacts.empty()) return -1.0;
-  return std::hypot(contacts.front().x_mm - truth.x_mm, contacts.front().y_mm - truth.y_mm);
+  return position_error_mm(contacts.front(), truth);
 }
 
 }  // namespace emit

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "emit/sensor/surface.hpp"
+
 namespace emit {
 
 SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int reference_frames) {
@@ -16,7 +18,7 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
   return run;
 }
 
-Vector2 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction) {
+Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction) {
   const Vector& dphi = reconstructor.image();
   const double threshold = threshold_fraction * dphi.maxCoeff();
   Vector2 sum(0, 0);
@@ -27,7 +29,8 @@ Vector2 thresholded_centroid(const Reconstructor& reconstructor, double threshol
       sum += w * reconstructor.mesh().triangle_centroid_mm(k).head<2>();
       weight += w;
     }
-  return weight > 0 ? Vector2(sum / weight) : Vector2(std::nan(""), std::nan(""));
+  if (!(weight > 0)) return Vector3::Constant(std::nan(""));
+  return surface_point_mm(reconstructor.surface(), sum / weight);
 }
 
 LocalisationResult localisation_errors(Reconstructor& reconstructor, const SimulatedRun& run,
@@ -41,9 +44,9 @@ LocalisationResult localisation_errors(Reconstructor& reconstructor, const Simul
     const double e = single_press_error_mm(contacts, truth);
     if (e < 0) ++contact_missed;
     else contact_errors.push_back(e);
-    const Vector2 c = thresholded_centroid(reconstructor, threshold_fraction);
+    const Vector3 c = thresholded_centroid(reconstructor, threshold_fraction);
     if (!c.allFinite()) ++image_missed;
-    else image_errors.push_back(std::hypot(c.x() - truth.x_mm, c.y() - truth.y_mm));
+    else image_errors.push_back(position_error_mm(c, truth));
   }
   return {summarize_errors(image_errors, image_missed), summarize_errors(contact_errors, contact_missed)};
 }
@@ -78,7 +81,7 @@ TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun&
     bool all = true;
     for (const Press& p : run.presses[f]) {
       bool found = false;
-      for (const Contact& c : contacts) found = found || std::hypot(c.x_mm - p.x_mm, c.y_mm - p.y_mm) <= match_mm;
+      for (const Contact& c : contacts) found = found || position_error_mm(c, p) <= match_mm;
       all = all && found;
     }
     matched += all;

@@ -19,9 +19,9 @@ double position_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, 
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const Press& truth = run.presses[f].at(0);
     reconstructor.process(run.frames[f]);
-    const Vector2 c = thresholded_centroid(reconstructor, 0.5);
+    const Vector3 c = thresholded_centroid(reconstructor, 0.5);
     if (!c.allFinite()) ++missed;
-    else errors.push_back(std::hypot(c.x() - truth.x_mm, c.y() - truth.y_mm));
+    else errors.push_back(position_error_mm(c, truth));
   }
   return summarize_errors(errors, missed).mean;
 }

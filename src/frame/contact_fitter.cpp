@@ -8,6 +8,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/adc.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -101,7 +102,7 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
       mesh_(mesh),
       measurements_(measurements),
       options_(resolved_fit_options(options, sensor, mesh)),
-      integrator_(mesh, options_.edge_mm),
+      integrator_(mesh, options_.edge_mm, 3, sensor.shape),
       predictor_(mesh, green),
       noise_V_(reading_noise_V(sensor.adc)),
       lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
@@ -149,7 +150,7 @@ bool ContactFitter::best_atom_set(const Vector& target, int count, std::vector<D
   const auto atoms = static_cast<Index>(atom_discs_.size());
   const auto apart = [&](Index i, Index j) {
     const Disc &p = atom_discs_[static_cast<std::size_t>(i)], &q = atom_discs_[static_cast<std::size_t>(j)];
-    return std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) >= min_separation;
+    return separation_mm(p, q) >= min_separation;
   };
   // The explained sum of squares of a set, and its weights; −1 if a weight is not positive.
   const auto explained_by = [&](const std::vector<Index>& members, Vector& w) {
@@ -219,6 +220,11 @@ void ContactFitter::misfit(const std::vector<Disc>& discs, const Vector& dV, Vec
   for (int i = 0; i < measurements_.size(); ++i) out[i] = frame_.data()[measurements_.frame_index[i]] - dV[i];
 }
 
+/// The distance between two discs' centres on the sheet (in 3D: a chord on a curved one).
+double ContactFitter::separation_mm(const Disc& a, const Disc& b) const {
+  return (surface_point_mm(sensor_.shape, {a.x_mm, a.y_mm}) - surface_point_mm(sensor_.shape, {b.x_mm, b.y_mm})).norm();
+}
+
 Disc ContactFitter::clamp_seed(Disc seed) const {
   seed.x_mm = std::clamp(seed.x_mm, lower_mm_.x(), upper_mm_.x());
   seed.y_mm = std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
@@ -236,7 +242,7 @@ bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
     if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
-      if (std::hypot(discs[i].x_mm - discs[j].x_mm, discs[i].y_mm - discs[j].y_mm) < plausible_separation_mm())
+      if (separation_mm(discs[i], discs[j]) < plausible_separation_mm())
         return false;
   }
   return true;
@@ -326,7 +332,7 @@ void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed,
   const Disc added = clamp_seed(seed);
   starts.push_back(discs);
   starts.back().push_back(added);
-  const auto distance = [&](const Disc& d) { return std::hypot(d.x_mm - added.x_mm, d.y_mm - added.y_mm); };
+  const auto distance = [&](const Disc& d) { return separation_mm(d, added); };
   const auto nearest = std::min_element(discs.begin(), discs.end(),
                                         [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
   // Mirrored less than the plausible separation apart, the pair would be one press anyway.
@@ -381,7 +387,7 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
 bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
   if (discs.size() < 2) return false;
   for (std::size_t i = 0; i < discs.size(); ++i)
-    if (std::hypot(discs[i].x_mm - previous[i].x_mm, discs[i].y_mm - previous[i].y_mm) > plausible_separation_mm())
+    if (separation_mm(discs[i], previous[i]) > plausible_separation_mm())
       return true;
   return false;
 }

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "emit/core/errors.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -165,7 +166,14 @@ double force_key(const Contact& c) {
 
 }  // namespace
 
-ContactFinder::ContactFinder(const Mesh& mesh) {
+void place_on_surface(const Shape& surface, Contact& contact) {
+  const Vector2 xy(contact.x_mm, contact.y_mm);
+  const Vector3 normal = surface_normal(surface, xy);
+  contact.z_mm = surface_point_mm(surface, xy).z();
+  contact.nx = normal.x(), contact.ny = normal.y(), contact.nz = normal.z();
+}
+
+ContactFinder::ContactFinder(const Mesh& mesh, const Shape& surface) : surface_(surface) {
   build_adjacency(mesh, neighbour_offsets_, neighbours_);
   const auto count = static_cast<std::size_t>(mesh.triangle_count());
   areas_mm2_.resize(count);
@@ -201,8 +209,10 @@ const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>&
   for (int seed = 0; seed < static_cast<int>(pending_.size()); ++seed) {
     if (!pending_[seed]) continue;
     Contact contact;
-    if (fill.grow(seed, contact) && contact.area_mm2 >= min_area_mm2)
+    if (fill.grow(seed, contact) && contact.area_mm2 >= min_area_mm2) {
+      place_on_surface(surface_, contact);
       contacts_.push_back(contact);  // within the reserved capacity
+    }
   }
   // std::sort works in place (unlike std::stable_sort, which may take a buffer).
   std::sort(contacts_.begin(), contacts_.end(),

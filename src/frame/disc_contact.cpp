@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "emit/core/errors.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -63,8 +64,8 @@ Eigen::Matrix3d uniform_integral() {
 
 }  // namespace
 
-DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels)
-    : mesh_(&mesh), edge_mm_(edge_mm) {
+DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels, const Shape& surface)
+    : mesh_(&mesh), edge_mm_(edge_mm), surface_(surface) {
   if (!(edge_mm > 0)) throw InvalidInput("disc contact: the rim's smoothing width must be positive");
   if (levels < 0 || levels > 5) throw InvalidInput("disc contact: quadrature levels must be 0 to 5");
   std::vector<Eigen::Matrix3d> corners;
@@ -72,33 +73,33 @@ DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, i
   for (const Eigen::Matrix3d& B : corners)
     pieces_.push_back({B.colwise().mean().transpose(), piece_integral(B, std::pow(0.25, levels))});
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
-    const Vector2 c = mesh.triangle_centroid_mm(t).head<2>();
+    const Vector3 c = mesh.triangle_centroid_mm(t);
     double reach = 0;
-    for (int k = 0; k < 3; ++k)
-      reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).head<2>().transpose() - c).norm());
+    for (int k = 0; k < 3; ++k) reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).transpose() - c).norm());
     centroid_mm_.push_back(c);
     reach_mm_.push_back(reach);
   }
   bucket_triangles();
 }
 
-/// Triangles by the cell of a grid their centroid lies in (cells of the largest reach, so a
-/// disc's candidates are the cells its reach-widened square covers): a disc touches tens of the
-/// mesh's thousands of triangles, and integrate() runs several times per fit iteration.
+/// Triangles by the cell of a grid their centroid lies in, seen from +z (cells of the largest
+/// reach, so a disc's candidates are the cells its reach-widened square covers: seen from +z
+/// distances only shrink): a disc touches tens of the mesh's thousands of triangles, and
+/// integrate() runs several times per fit iteration.
 void DiscContactIntegrator::bucket_triangles() {
   max_reach_mm_ = *std::max_element(reach_mm_.begin(), reach_mm_.end());
   cell_mm_ = std::max(max_reach_mm_, 1e-9);
   origin_mm_ = Vector2(INFINITY, INFINITY);
   Vector2 top(-INFINITY, -INFINITY);
-  for (const Vector2& c : centroid_mm_) origin_mm_ = origin_mm_.cwiseMin(c), top = top.cwiseMax(c);
+  for (const Vector3& c : centroid_mm_) origin_mm_ = origin_mm_.cwiseMin(c.head<2>()), top = top.cwiseMax(c.head<2>());
   columns_ = 1 + static_cast<int>((top.x() - origin_mm_.x()) / cell_mm_);
   rows_ = 1 + static_cast<int>((top.y() - origin_mm_.y()) / cell_mm_);
   cell_start_.assign(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_) + 1, 0);
-  const auto cell_of = [&](const Vector2& c) {
+  const auto cell_of = [&](const Vector3& c) {
     return static_cast<int>((c.y() - origin_mm_.y()) / cell_mm_) * columns_ +
            static_cast<int>((c.x() - origin_mm_.x()) / cell_mm_);
   };
-  for (const Vector2& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c)) + 1];
+  for (const Vector3& c : centroid_mm_) ++cell_start_[static_cast<std::size_t>(cell_of(c)) + 1];
   for (std::size_t i = 1; i < cell_start_.size(); ++i) cell_start_[i] += cell_start_[i - 1];
   cell_triangles_.resize(centroid_mm_.size());
   std::vector<int> filled(cell_start_.begin(), cell_start_.end() - 1);
@@ -109,6 +110,7 @@ void DiscContactIntegrator::bucket_triangles() {
 
 void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool derivatives) const {
   const Vector2 center(disc.x_mm, disc.y_mm);
+  const Centre centre{surface_point_mm(surface_, center), surface_tangents(surface_, center)};
   const double r = disc.radius_mm, h = edge_mm_;
   const double reach = r + h + max_reach_mm_;  // no centroid farther than this can be touched
   const auto cell = [&](double v, double origin, int count) {
@@ -121,14 +123,15 @@ void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool deri
     const auto first_cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_);
     for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)];
          k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
-      add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, out, derivatives);
+      add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, centre, out,
+                   derivatives);
   }
 }
 
-void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLoad& out, bool derivatives) const {
-  const Vector2 center(disc.x_mm, disc.y_mm);
+void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, const Centre& centre, DiscLoad& out,
+                                         bool derivatives) const {
   const double g = disc.conductance_S_per_mm2, r = disc.radius_mm, h = edge_mm_;
-  const double d = (centroid_mm_[t] - center).norm();
+  const double d = (centroid_mm_[t] - centre.point_mm).norm();
   if (d - reach_mm_[t] >= r + h) return;  // wholly outside the smoothed rim
   const auto tri = static_cast<Index>(t);
   const double area = mesh_->triangle_area_mm2(tri);
@@ -139,22 +142,23 @@ void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, DiscLo
       out.d_local_S.push_back({Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()});
     return;
   }
-  Eigen::Matrix<double, 3, 2> corner;
-  for (int k = 0; k < 3; ++k) corner.row(k) = mesh_->nodes_mm.row(mesh_->triangles(tri, k)).head<2>();
+  Eigen::Matrix3d corner;
+  for (int k = 0; k < 3; ++k) corner.row(k) = mesh_->nodes_mm.row(mesh_->triangles(tri, k));
   Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
   std::array<Eigen::Matrix3d, 3> d_local{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   for (const Piece& piece : pieces_) {
-    const Vector2 offset = corner.transpose() * piece.centroid_barycentric - center;
+    const Vector3 offset = corner.transpose() * piece.centroid_barycentric - centre.point_mm;
     const double distance = offset.norm();
     double s, ds_dxi;
     smoothstep((r - distance) / h, s, ds_dxi);
     if (s == 0 && ds_dxi == 0) continue;
     local += s * piece.integral;
     if (derivatives && ds_dxi != 0) {
-      // ξ = (r − |p − c|)/h: ∂ξ/∂c = (p − c)/(|p − c| h), ∂ξ/∂r = 1/h.
+      // ξ = (r − |p − c|)/h with c = P(x, y): ∂ξ/∂x = (p − c)·∂P/∂x / (|p − c| h), ∂ξ/∂r = 1/h.
       const double scale = ds_dxi / h;
-      d_local[0] += scale * offset.x() / distance * piece.integral;
-      d_local[1] += scale * offset.y() / distance * piece.integral;
+      const Eigen::RowVector2d along = offset.transpose() * centre.tangents / distance;
+      d_local[0] += scale * along.x() * piece.integral;
+      d_local[1] += scale * along.y() * piece.integral;
       d_local[2] += scale * piece.integral;
     }
   }

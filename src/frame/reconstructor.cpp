@@ -14,7 +14,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
     : model_(model),
       linear_(calibration),
       options_(options),
-      finder_(model.mesh),
+      finder_(model.mesh, model.surface),
       reference_(Vector::Zero(model.measurements.size())),
       dV_(model.measurements.size()),
       dphi_(model.mesh.triangle_count()),
@@ -113,6 +113,7 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
   for (const FittedContact& f : fitter_result_.contacts) {
     Contact c;
     c.x_mm = f.disc.x_mm, c.y_mm = f.disc.y_mm;
+    place_on_surface(model_.surface, c);
     const double radius_mm = indenter_radius_mm_ > 0 ? indenter_radius_mm_ : f.disc.radius_mm;
     c.area_mm2 = std::numbers::pi * radius_mm * radius_mm;  // see FitCalibration::indenter_radius_mm
     c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;

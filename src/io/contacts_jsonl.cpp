@@ -14,25 +14,44 @@ namespace {
 
 /// A contact's numbers in the line, in the documented order; the writer and the parser share it.
 /// element_count is not part of the format (the parser leaves it 0).
+enum class Group {
+  always,
+  uncertainty,  ///< written only when some 1σ is nonzero (contact fitting); may be absent
+  surface,      ///< written only off the plane z = 0 (a curved sheet); absent: z = 0, normal +z
+};
 struct Field {
   const char* key;
   double Contact::*value;
-  bool optional;  ///< written only when some of the optional fields is nonzero; may be absent
+  Group group;
 };
 constexpr Field fields[] = {
-    {"x_mm", &Contact::x_mm, false},
-    {"y_mm", &Contact::y_mm, false},
-    {"area_mm2", &Contact::area_mm2, false},
-    {"pressure_N_per_mm2", &Contact::pressure_N_per_mm2, false},
-    {"peak_pressure_N_per_mm2", &Contact::peak_pressure_N_per_mm2, false},
-    {"force_N", &Contact::force_N, false},
-    {"x_std_mm", &Contact::x_std_mm, true},
-    {"y_std_mm", &Contact::y_std_mm, true},
-    {"pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2, true},
-    {"force_std_N", &Contact::force_std_N, true},
+    {"x_mm", &Contact::x_mm, Group::always},
+    {"y_mm", &Contact::y_mm, Group::always},
+    {"z_mm", &Contact::z_mm, Group::surface},
+    {"nx", &Contact::nx, Group::surface},
+    {"ny", &Contact::ny, Group::surface},
+    {"nz", &Contact::nz, Group::surface},
+    {"area_mm2", &Contact::area_mm2, Group::always},
+    {"pressure_N_per_mm2", &Contact::pressure_N_per_mm2, Group::always},
+    {"peak_pressure_N_per_mm2", &Contact::peak_pressure_N_per_mm2, Group::always},
+    {"force_N", &Contact::force_N, Group::always},
+    {"x_std_mm", &Contact::x_std_mm, Group::uncertainty},
+    {"y_std_mm", &Contact::y_std_mm, Group::uncertainty},
+    {"pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2, Group::uncertainty},
+    {"force_std_N", &Contact::force_std_N, Group::uncertainty},
 };
 
 bool has_uncertainty(const Contact& c) { return c.x_std_mm > 0 || c.y_std_mm > 0 || c.pressure_std_N_per_mm2 > 0; }
+bool off_the_plane(const Contact& c) { return c.z_mm != 0 || c.nx != 0 || c.ny != 0 || c.nz != 1; }
+
+bool written(const Field& field, const Contact& c) {
+  switch (field.group) {
+    case Group::always: return true;
+    case Group::uncertainty: return has_uncertainty(c);
+    case Group::surface: return off_the_plane(c);
+  }
+  return true;
+}
 
 /// JSON has no NaN or infinity; refuse before writing anything, so no half line is left behind.
 void check_finite(long frame, const std::vector<Contact>& contacts) {
@@ -48,9 +67,8 @@ void write_contact(std::ostream& out, const Contact& contact) {
   char text[96];  // the longest key (23) + quotes and separators + a %.6g number (at most 13) fit
   out << '{';
   const char* separator = "";
-  const bool uncertain = has_uncertainty(contact);
   for (const Field& field : fields) {
-    if (field.optional && !uncertain) continue;
+    if (!written(field, contact)) continue;
     std::snprintf(text, sizeof text, "%s\"%s\": %.6g", separator, field.key, contact.*field.value);
     out << text;
     separator = ", ";
@@ -86,7 +104,7 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
   if (!object.is_object()) throw InvalidInput(where + " is not an object");
   Contact contact;
   for (const Field& field : fields) {
-    if (field.optional && !object.contains(field.key)) continue;
+    if (field.group != Group::always && !object.contains(field.key)) continue;
     const nlohmann::json& value = member(object, field.key, where);
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       throw InvalidInput(where + ": \"" + field.key + "\" is not a finite number");

@@ -19,6 +19,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   model.reading_noise_V = reading_noise_V(sensor.adc);
   say("meshing");
   model.mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
+  model.surface = sensor.shape;
   model.measurements = make_measurement_set(model.mesh.electrode_count(), excluded);
   const std::string key = operator_cache_key(sensor, model.mesh, model.measurements, options);
   if (!cache_dir.empty()) {

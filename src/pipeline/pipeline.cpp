@@ -2,7 +2,6 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/mesh_io.hpp"
-#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -30,9 +29,6 @@ void check_calibration_for_method(const Calibration& calibration, Method method,
 Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration,
                    const std::function<void(const std::string&)>& progress, const std::string& calibration_source)
     : method_(options.method), calibrated_(calibration.has_value()), fit_sensor_(sensor) {
-  // The fit's discs are integrated in the plane (frame/disc_contact.hpp): not yet on a shell.
-  if (!is_linear(method_) && is_curved(sensor.shape))
-    throw InvalidInput("contact fitting on a curved sheet is not built yet: use --method paper, noser or laplacian");
   if (calibration) check_calibration_for_method(*calibration, method_, calibration_source);
   model_ = build_reconstruction_model(sensor, linear_options(options), options.cache_dir, options.excluded, progress);
   linear_ = model_.uncalibrated;

@@ -30,6 +30,16 @@ Vector3 surface_normal(const Shape& shape, const Vector2& xy_mm) {
   return (p + Vector3(0, 0, centre_depth_mm(shape))).normalized();
 }
 
+Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& xy_mm) {
+  Eigen::Matrix<double, 3, 2> t;
+  t << 1, 0, 0, 1, 0, 0;
+  if (shape.kind != ShapeKind::spherical_cap) return t;
+  const double R = shape.sphere_radius_mm;
+  const double height = std::sqrt(std::max(R * R - xy_mm.squaredNorm(), 1e-6 * R * R));  // √(R² − ρ²), ρ ≤ 0.999 R
+  t.row(2) = -xy_mm.transpose() / height;
+  return t;
+}
+
 double surface_area_mm2(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::spherical_cap: {

@@ -8,6 +8,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -31,7 +32,7 @@ bool admissible(const Border& border, const Vector2& p, double margin_mm) {
 class Sampler {
  public:
   Sampler(const Sensor& sensor, const PressStyle& style)
-      : border_(border_for_scripts(sensor)), style_(style), box_(bounding_box(border_)), rng_(style.seed) {
+      : border_(border_for_scripts(sensor)), surface_(sensor.shape), style_(style), box_(bounding_box(border_)), rng_(style.seed) {
     if (!(style.radius_mm > 0)) throw InvalidInput("press radius must be positive");
     if (style.min_force_N < 0 || style.max_force_N < style.min_force_N)
       throw InvalidInput("press forces must satisfy 0 <= min <= max");
@@ -41,7 +42,12 @@ class Sampler {
     return style_.min_force_N == style_.max_force_N ? style_.min_force_N
                                                     : uniform(style_.min_force_N, style_.max_force_N);
   }
-  Press press_at(const Vector2& p) { return Press{p.x(), p.y(), style_.radius_mm, force(), style_.profile}; }
+  /// A press at (x, y), centred on the sheet's surface there (its z: sensor/surface.hpp).
+  Press press_at(const Vector2& p) {
+    Press press{p.x(), p.y(), style_.radius_mm, force(), style_.profile};
+    press.z_mm = surface_point_mm(surface_, p).z();
+    return press;
+  }
   bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
   Vector2 random_point() {
     for (int attempt = 0; attempt < 100000; ++attempt) {
@@ -54,6 +60,7 @@ class Sampler {
 
  private:
   const Border& border_;
+  const Shape& surface_;
   PressStyle style_;
   Eigen::AlignedBox2d box_;
   std::mt19937_64 rng_;

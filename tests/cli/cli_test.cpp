@@ -127,7 +127,7 @@ TEST(Cli, RealisticSheetWithThreeFingers) {
 
 // A curved sheet as a user simulates it: the dome of the conformance frames, a press given by
 // (x, y), its centre put on the surface (the truth file's z_mm), the frame the independent
-// implementation's to the conformance 1 %; reconstruction by fitting is refused, clearly.
+// implementation's to the conformance 1 %.
 TEST(Cli, SimulatesASphericalCap) {
   const std::string dir = test::temp_folder("cli_dome");
   const std::string dome = test::source_path("tests/data/conformance/dome25");
@@ -140,10 +140,55 @@ TEST(Cli, SimulatesASphericalCap) {
   const Frame frame = read_frames_csv(dir + "/f.csv", 16).at(0);
   const Frame reference = read_frames_csv(dome + "_frames.csv", 16).at(1);
   EXPECT_LE((frame - reference).cwiseAbs().maxCoeff(), 0.01 * reference.cwiseAbs().maxCoeff());
-  const auto fit = run_emit("reconstruct --sensor " + dome + "_sensor.json --reference " + dir + "/f.csv --frames " +
-                            dir + "/f.csv --contacts " + dir + "/c.jsonl --no-cache");
-  EXPECT_NE(fit.exit_code, 0);
-  EXPECT_NE(fit.err.find("contact fitting on a curved sheet is not built yet"), std::string::npos) << fit.err;
+}
+
+/// The contacts of a contacts file, frame by frame.
+std::vector<std::vector<Contact>> read_contacts_file(const std::string& path) {
+  std::vector<std::vector<Contact>> frames;
+  std::istringstream lines(test::read_text(path));
+  for (std::string line; std::getline(lines, line);) frames.push_back(parse_contacts_line(line));
+  return frames;
+}
+
+// Contact fitting on a curved sheet, checked on frames nobody here simulated: the independent
+// implementation's dome frames (80k triangles; without a press the probing layer carries no
+// current, so the reference is all zeros). Issue 15's targets: single presses within 0.3 mm in
+// 3D on average, both of two presses within 2 mm. Measured: 0.009 and 0.13 mm; the pair 0.016
+// and 0.46 mm (the weak 0.05 N/mm² press beside a 0.3 N/mm² one). Each contact is a point of the
+// sphere with its outward normal.
+TEST(Cli, FitsContactsOnTheDomesIndependentFrames) {
+  const std::string dir = test::temp_folder("cli_dome_fit");
+  const std::string dome = test::source_path("tests/data/conformance/dome25");
+  {
+    std::ofstream zeros(dir + "/zero.csv");
+    for (int i = 0; i < 256; ++i) zeros << (i ? ",0" : "0");
+    zeros << "\n";
+  }
+  const auto r = run_emit("reconstruct --sensor " + dome + "_sensor.json --reference " + dir + "/zero.csv --frames " +
+                          dome + "_frames.csv --contacts " + dir + "/c.jsonl --no-cache");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto contacts = read_contacts_file(dir + "/c.jsonl");
+  const PressSequence truth = read_presses_csv(dome + "_presses.csv");
+  ASSERT_EQ(contacts.size(), truth.size());
+  const auto distance = [](const Contact& c, const Press& p) {
+    return (Vector3(c.x_mm, c.y_mm, c.z_mm) - Vector3(p.x_mm, p.y_mm, p.z_mm)).norm();
+  };
+  double singles_mm = 0;
+  for (std::size_t f = 0; f < 2; ++f) {
+    ASSERT_EQ(contacts[f].size(), 1u) << "frame " << f;
+    singles_mm += distance(contacts[f][0], truth[f][0]) / 2;
+  }
+  EXPECT_LE(singles_mm, 0.3);
+  ASSERT_EQ(contacts[2].size(), 2u);
+  for (const Press& p : truth[2])
+    EXPECT_LE(std::min(distance(contacts[2][0], p), distance(contacts[2][1], p)), 2.0) << p.x_mm << ", " << p.y_mm;
+  for (const auto& frame : contacts)
+    for (const Contact& c : frame) {
+      // On the sphere of radius 25 mm about (0, 0, −15), the normal along the radius (6 decimals).
+      const Vector3 radius = Vector3(c.x_mm, c.y_mm, c.z_mm + 15);
+      EXPECT_NEAR(radius.norm(), 25, 1e-4);
+      EXPECT_NEAR((radius / 25 - Vector3(c.nx, c.ny, c.nz)).norm(), 0, 1e-5);
+    }
 }
 
 // Four fingers, with the realistic sheet's sizes set one by one.
@@ -605,9 +650,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"realistic eval seed not a number", "eval --realistic x --quick",
                "--realistic: the seed must be a whole number 0 or larger, got \"x\""},
         BadRun{"realistic eval on no sheet", "eval --realistic --sheet 45 --quick",
-               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120)"},
+               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120, dome)"},
         BadRun{"eval on no sheet", "eval --sheet 45 --quick",
-               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120)"},
+               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120, dome)"},
         BadRun{"fingers that do not fit", "simulate --script four-finger --separation-mm 55 --frames 1 --out OUT",
                "no room on the sheet for 4 presses 55 mm apart"},
         BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},

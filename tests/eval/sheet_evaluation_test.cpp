@@ -18,9 +18,10 @@
 namespace emit {
 namespace {
 
-TEST(SheetEvaluation, StandardCasesAreTheFourSheets) {
+TEST(SheetEvaluation, StandardCasesAreTheFiveSheets) {
   const auto cases = standard_eval_cases(test::source_path("examples/sensors"));
-  ASSERT_EQ(cases.size(), 4u);
+  ASSERT_EQ(cases.size(), 5u);
+  EXPECT_EQ(cases[4].sensor.shape.kind, ShapeKind::spherical_cap);
   EXPECT_EQ(cases[1].name, "30 x 30 mm sheet");
   EXPECT_EQ(cases[1].sensor.electrode_count(), 16);
   EXPECT_EQ(cases[3].sensor.electrode_count(), 32);

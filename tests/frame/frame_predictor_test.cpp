@@ -17,7 +17,9 @@
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/green_function.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/sensor/surface.hpp"
 #include "emit/twin/press_contact.hpp"
+#include "test_support.hpp"
 #include "tolerances.hpp"
 
 namespace emit {
@@ -71,6 +73,70 @@ TEST(DiscContact, DerivativesMatchFiniteDifferences) {
   EXPECT_NEAR(d_total[2], scale, 0.02 * scale);
   // Each entry against a central difference of step 1e-5 mm (the smoothstep is C¹ with second
   // derivative ~ g·A/edge², so the difference's error is far below the tolerance).
+  const double step = 1e-5;
+  for (int k = 0; k < 3; ++k) {
+    Disc plus = disc, minus = disc;
+    double* plus_value = k == 0 ? &plus.x_mm : k == 1 ? &plus.y_mm : &plus.radius_mm;
+    double* minus_value = k == 0 ? &minus.x_mm : k == 1 ? &minus.y_mm : &minus.radius_mm;
+    *plus_value += step;
+    *minus_value -= step;
+    DiscLoad a, b;
+    integrator.integrate(plus, a);
+    integrator.integrate(minus, b);
+    ASSERT_EQ(a.triangles, load.triangles) << "a step this small keeps the same triangles";
+    ASSERT_EQ(b.triangles, load.triangles);
+    double worst = 0;
+    for (std::size_t i = 0; i < load.triangles.size(); ++i)
+      worst =
+          std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
+    EXPECT_LT(worst, 1e-6 * scale) << "parameter " << k;
+  }
+}
+
+const Sensor& dome() {
+  static const Sensor sensor = load_sensor(test::source_path("examples/sensors/dome25.json"));
+  return sensor;
+}
+
+const Mesh& dome_mesh() {
+  static const Mesh mesh = generate_mesh(dome(), reconstruction_mesh_options(dome()));
+  return mesh;
+}
+
+// On a sphere, the part within 3D (chord) distance r of one of its points has area π r², whatever
+// the sphere's radius (Archimedes' hat-box theorem): the disc on the dome carries g π r², to the
+// flat disc's smoothing and quadrature error (above) and the facets' area deficit against the
+// sphere (h²/(12 R²) per element: 0.01 %). Its centre of mass is inside the sphere, below the
+// surface point by r²/(4R) along the normal (0.16 mm for r = 4 mm, R = 25 mm), and on the normal.
+TEST(DiscContact, OnTheDomeCarriesTheSpheresDiscOfChordRadiusR) {
+  const Mesh& mesh = dome_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3, 3, dome().shape);
+  const Disc disc{6.2, -9.1, 4.0, 2e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load);
+  double total = 0;
+  Vector3 moment = Vector3::Zero();
+  for (std::size_t i = 0; i < load.triangles.size(); ++i) {
+    total += load.local_S[i].sum();
+    moment += load.local_S[i].sum() * mesh.triangle_centroid_mm(load.triangles[i]);
+  }
+  const double exact = disc.conductance_S_per_mm2 * std::numbers::pi * disc.radius_mm * disc.radius_mm;
+  EXPECT_NEAR(total, exact, 0.01 * exact);
+  const Vector3 surface = surface_point_mm(dome().shape, {disc.x_mm, disc.y_mm});
+  const Vector3 normal = surface_normal(dome().shape, {disc.x_mm, disc.y_mm});
+  const double R = dome().shape.sphere_radius_mm, depth = disc.radius_mm * disc.radius_mm / (4 * R);
+  EXPECT_NEAR((moment / total - (surface - depth * normal)).norm(), 0, 0.05);  // as the flat disc's centre
+}
+
+// The centre's derivatives go through the surface's tangents (∂P/∂x, ∂P/∂y): against central
+// differences as on the flat sheet.
+TEST(DiscContact, OnTheDomeDerivativesMatchFiniteDifferences) {
+  const Mesh& mesh = dome_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3, 3, dome().shape);
+  const Disc disc{-10.3, 7.7, 3.3, 1e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load, true);
+  const double scale = 2 * std::numbers::pi * disc.radius_mm * disc.conductance_S_per_mm2;
   const double step = 1e-5;
   for (int k = 0; k < 3; ++k) {
     Disc plus = disc, minus = disc;

@@ -38,6 +38,28 @@ TEST(ContactsJsonl, WritesTheDocumentedLine) {
   EXPECT_EQ(empty.str(), "{\"frame\": 0, \"contacts\": []}\n");
 }
 
+// On a curved sheet a contact is a point of the surface with its normal: z and the normal follow
+// (x, y); a flat sheet's line has neither (above), and reads back as z = 0, normal +z.
+TEST(ContactsJsonl, WritesAndReadsACurvedSheetsPointAndNormal) {
+  Contact c = linear_contact();
+  c.z_mm = 6.5, c.nx = 0.6, c.ny = 0, c.nz = 0.8;
+  std::ostringstream out;
+  write_contacts_line(out, 3, {c});
+  EXPECT_EQ(out.str(),
+            "{\"frame\": 3, \"contacts\": [{\"x_mm\": 21.5, \"y_mm\": 37.25, \"z_mm\": 6.5, \"nx\": 0.6, \"ny\": 0, "
+            "\"nz\": 0.8, \"area_mm2\": 78.5, \"pressure_N_per_mm2\": 0.125, \"peak_pressure_N_per_mm2\": 0.25, "
+            "\"force_N\": 9.8125}]}\n");
+  const auto curved = parse_contacts_line(out.str());
+  ASSERT_EQ(curved.size(), 1u);
+  EXPECT_EQ(Vector3(curved[0].nx, curved[0].ny, curved[0].nz), Vector3(0.6, 0, 0.8));
+  EXPECT_EQ(curved[0].z_mm, 6.5);
+  std::ostringstream flat_line;
+  write_contacts_line(flat_line, 3, {linear_contact()});
+  const auto flat = parse_contacts_line(flat_line.str());
+  EXPECT_EQ(Vector3(flat[0].nx, flat[0].ny, flat[0].nz), Vector3::UnitZ());
+  EXPECT_EQ(flat[0].z_mm, 0.0);
+}
+
 // A non-finite contact field is tests/frame/contacts_test.cpp's; a non-finite misfit is refused too.
 TEST(ContactsJsonl, RefusesANonFiniteMisfit) {
   std::ostringstream out;

@@ -22,8 +22,9 @@ struct SimulatedRun {
 SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int reference_frames = 10);
 
 /// The paper's position estimate for a single press: the centroid of every element above the
-/// threshold, weighted by area × δφ. Call after Reconstructor::process().
-Vector2 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction);
+/// threshold, weighted by area × δφ, seen from +z, and the sheet's point above it (NaN when no
+/// element is). Call after Reconstructor::process().
+Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction);
 
 struct LocalisationResult {
   ErrorStats image_centroid;     ///< the paper's estimate (thresholded_centroid)

@@ -28,7 +28,8 @@ struct EvalCase {
   int lambdas_per_decade = 8;  ///< of the λ sweep (the 32-electrode sheet's operators cost 10× more)
 };
 
-/// The 60 mm, 30 mm, circle and 120 mm / 32-electrode sheets, from the example sensors in `dir`.
+/// The 60 mm, 30 mm, circle, 120 mm / 32-electrode sheets and the 25 mm dome (a spherical cap),
+/// from the example sensors in `dir`.
 std::vector<EvalCase> standard_eval_cases(const std::string& examples_dir);
 
 struct EvalOptions {

@@ -103,6 +103,7 @@ class ContactFitter {
   bool plausible_set(const std::vector<Disc>& discs) const;
   bool explained(double misfit_sq, const Vector& dV) const;
   bool jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const;
+  double separation_mm(const Disc& a, const Disc& b) const;
   /// Two contacts closer than this are one press (three held radii).
   double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
   void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);

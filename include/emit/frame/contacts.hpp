@@ -12,11 +12,15 @@
 
 #include "emit/core/types.hpp"
 #include "emit/mesh/mesh.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
 struct Contact {
   double x_mm = 0, y_mm = 0;           ///< centroid, weighted by area × weight (see find())
+  /// The sheet's point above (x, y) and its unit outward normal (sensor/surface.hpp): on a flat
+  /// sheet z = 0 and the normal is +z; on a curved one the contact is a point of the surface.
+  double z_mm = 0, nx = 0, ny = 0, nz = 1;
   double area_mm2 = 0;                 ///< Σ A_k over the contact's elements
   double pressure_N_per_mm2 = 0;       ///< area-weighted mean pressure
   double peak_pressure_N_per_mm2 = 0;  ///< largest element pressure
@@ -29,9 +33,13 @@ struct Contact {
   int element_count = 0;
 };
 
+/// Sets the contact's z and normal to the sheet's at its (x, y) (sensor/surface.hpp).
+void place_on_surface(const Shape& surface, Contact& contact);
+
 class ContactFinder {
  public:
-  explicit ContactFinder(const Mesh& mesh);
+  /// \param surface  the sheet's shape: each contact's (x, y) is placed on it (place_on_surface).
+  explicit ContactFinder(const Mesh& mesh, const Shape& surface = {});
 
   /// \param selected  #F flags, nonzero where the element is above threshold
   /// \param pressure  #F element pressures [N/mm²] (read only where selected)
@@ -55,6 +63,7 @@ class ContactFinder {
   const Vector2& centroid_mm(Index element) const { return centroids_mm_[static_cast<std::size_t>(element)]; }
 
  private:
+  Shape surface_;
   std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
   std::vector<double> areas_mm2_;
   Vector no_floor_;  ///< −∞ everywhere: the floor when none is given

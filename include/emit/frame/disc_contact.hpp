@@ -6,12 +6,20 @@
 /// indicator s smoothed over ±edge around the rim (a C¹ smoothstep), so that C, and the frame
 /// predicted from it, are smooth in (x, y, r): Levenberg–Marquardt needs that, where a sharp
 /// disc would make the frame jump as the rim crosses quadrature points.
+///
+/// On a curved sheet (sensor/surface.hpp) the disc is the part of the surface within 3D distance
+/// r of its centre, the surface's point above (x, y): a chord, not a geodesic, radius. For the
+/// held radius (2 mm) on the 25 mm dome the two differ by r³/(24 R²) < 0.001 mm, far below the
+/// mesh's facets' own distance from the sphere (h²/8R ≈ 0.004 mm), and the chord needs no
+/// geodesics on the mesh. The centre stays named by (x, y), so the fit's parameters, seeds and
+/// bounds are the flat sheet's.
 #include <array>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "emit/mesh/mesh.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -32,8 +40,9 @@ struct DiscLoad {
 class DiscContactIntegrator {
  public:
   /// \param edge_mm  half-width of the smoothed rim; \param levels  subdivision depth of the
-  /// quadrature on triangles the rim crosses (4^levels pieces, one point each).
-  DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels = 3);
+  /// quadrature on triangles the rim crosses (4^levels pieces, one point each); \param surface
+  /// the sheet's shape, for where the disc's centre (x, y) is in 3D (flat by default).
+  DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels = 3, const Shape& surface = {});
 
   double edge_mm() const { return edge_mm_; }
 
@@ -47,12 +56,18 @@ class DiscContactIntegrator {
     Eigen::Matrix3d integral;  ///< ∫ φ_i φ_j over the piece / the parent's area
   };
   void bucket_triangles();
-  void add_triangle(std::size_t t, const Disc& disc, DiscLoad& out, bool derivatives) const;
+  /// The disc's centre in 3D and its derivatives in x and y (columns).
+  struct Centre {
+    Vector3 point_mm;
+    Eigen::Matrix<double, 3, 2> tangents;
+  };
+  void add_triangle(std::size_t t, const Disc& disc, const Centre& centre, DiscLoad& out, bool derivatives) const;
   const Mesh* mesh_;
   double edge_mm_;
+  Shape surface_;
   std::vector<Piece> pieces_;
-  std::vector<Vector2> centroid_mm_;
-  std::vector<double> reach_mm_;  ///< farthest vertex from the centroid
+  std::vector<Vector3> centroid_mm_;
+  std::vector<double> reach_mm_;  ///< farthest vertex from the centroid (in 3D)
   // bucket_triangles(): a grid over the centroids, cell_triangles_ listed cell by cell (row-major).
   double max_reach_mm_ = 0, cell_mm_ = 1;
   Vector2 origin_mm_;

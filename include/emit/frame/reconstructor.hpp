@@ -63,6 +63,7 @@ class Reconstructor {
   /// Per element, the image value a contact must exceed somewhere (−∞ without the test).
   const Vector& significance_floor() const { return floor_; }
   const Mesh& mesh() const { return model_.mesh; }
+  const Shape& surface() const { return model_.surface; }
 
  private:
   const ReconstructionModel& model_;

@@ -17,6 +17,7 @@ namespace emit {
 
 struct ReconstructionModel {
   Mesh mesh;
+  Shape surface;  ///< the sheet's shape: where contacts are placed in 3D (frame/contacts.hpp)
   MeasurementSet measurements;
   OperatorOptions options;  ///< with the λ² the operator was built with (chosen, when options left it 0)
   CompactOperator op;       ///< R (paper eq. 7) as the per-frame path applies it

@@ -21,6 +21,11 @@ Vector3 surface_point_mm(const Shape& shape, const Vector2& xy_mm);
 /// on a flat sheet).
 Vector3 surface_normal(const Shape& shape, const Vector2& xy_mm);
 
+/// ∂P/∂x and ∂P/∂y (columns) of the point P above (x, y): how the surface point moves as (x, y)
+/// does. Flat: the plane's unit vectors. On a cap z = √(R² − ρ²) − d, so ∂z/∂x = −x / √(R² − ρ²);
+/// at a hemisphere's rim that is infinite, so ρ is taken at most 0.999 R there.
+Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& xy_mm);
+
 /// The sheet's area [mm²]: 2πR²(1 − cos θ) for a cap (sin θ = a/R); 0 for a mesh file.
 double surface_area_mm2(const Shape& shape);
 
