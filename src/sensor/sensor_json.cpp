@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -172,15 +173,25 @@ std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const
   } else if (j.is_array()) {
     std::vector<Vector2> centers;
     std::vector<double> widths;
+    const bool round = shape.kind == ShapeKind::circle || shape.kind == ShapeKind::spherical_cap;
     for (std::size_t i = 0; i < j.size(); ++i) {
-      ObjectReader r(j[i], "electrodes[" + std::to_string(i) + "]");
-      centers.emplace_back(r.number("x_mm", Sign::any), r.number("y_mm", Sign::any));
+      const std::string where = "electrodes[" + std::to_string(i) + "]";
+      ObjectReader r(j[i], where);
+      if (r.has("angle_deg")) {  // on a round border: the angle from +x, counter-clockwise seen from +z
+        if (!round) ObjectReader::fail(where + ".angle_deg", "is for a circle's or a spherical cap's rim; give x_mm, y_mm");
+        if (r.has("x_mm") || r.has("y_mm")) ObjectReader::fail(where, "give angle_deg or x_mm, y_mm, not both");
+        const double angle_rad = r.number("angle_deg", Sign::any) * std::numbers::pi / 180;
+        centers.push_back(shape.center_mm + shape.radius_mm * Vector2(std::cos(angle_rad), std::sin(angle_rad)));
+      } else {
+        centers.emplace_back(r.number("x_mm", Sign::any), r.number("y_mm", Sign::any));
+      }
       widths.push_back(r.number("width_mm", Sign::positive));
       r.finish();
     }
     electrodes = place_electrodes(border, centers, widths);
   } else {
-    ObjectReader::fail("electrodes", "must be {count, width_mm} or a list of {x_mm, y_mm, width_mm}");
+    ObjectReader::fail("electrodes",
+                       "must be {count, width_mm} or a list of {x_mm, y_mm, width_mm} (or {angle_deg, width_mm})");
   }
   validate_electrodes(border, electrodes);
   return electrodes;

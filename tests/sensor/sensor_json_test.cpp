@@ -122,6 +122,17 @@ INSTANTIATE_TEST_SUITE_P(
                   j["shape"] = {{"type", "spherical_cap"}, {"sphere_radius_mm", 15}, {"base_radius_mm", 20}};
                 },
                 "shape.base_radius_mm: must not exceed sphere_radius_mm (15), got 20"},
+        BadCase{"an electrode by angle on a rectangle",
+                [](json& j) {
+                  j["electrodes"] = json::array({{{"angle_deg", 0}, {"width_mm", 3}}});
+                },
+                "electrodes[0].angle_deg: is for a circle's or a spherical cap's rim; give x_mm, y_mm"},
+        BadCase{"an electrode by angle and by place",
+                [](json& j) {
+                  j["shape"] = {{"type", "circle"}, {"radius_mm", 20}};
+                  j["electrodes"] = json::array({{{"angle_deg", 0}, {"x_mm", 40}, {"y_mm", 20}, {"width_mm", 3}}});
+                },
+                "electrodes[0]: give angle_deg or x_mm, y_mm, not both"},
         BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; },
                 "drive_voltage_V: must be a number"},
         BadCase{"fewer than 3 electrodes", [](json& j) { j["electrodes"]["count"] = 2; }, "at least 3 electrodes"},
@@ -250,6 +261,28 @@ TEST(Sensor, SphericalCapHasTheRimsElectrodesAndRoundTrips) {
   EXPECT_EQ(back.shape.radius_mm, 20.0);
   ASSERT_EQ(back.electrode_count(), 16);
   for (int e = 0; e < 16; ++e) EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9);
+}
+
+// Electrodes on a rim by angle (README "Sensor description"): 16 at 22.5° steps from 0 are the
+// {count: 16} layout, to rounding; an uneven list puts each where its angle says.
+TEST(Sensor, RimElectrodesByAngle) {
+  const Sensor even = load_sensor(test::source_path("tests/data/conformance/dome25_sensor.json"));
+  json j = sensor_to_json(even);
+  j["electrodes"] = json::array();
+  for (int e = 0; e < 16; ++e) j["electrodes"].push_back({{"angle_deg", 22.5 * e}, {"width_mm", 3}});
+  const Sensor by_angle = parse_sensor(j);
+  ASSERT_EQ(by_angle.electrode_count(), 16);
+  for (int e = 0; e < 16; ++e) {
+    EXPECT_NEAR((by_angle.electrodes[e].center_mm - even.electrodes[e].center_mm).norm(), 0, 1e-9);
+    EXPECT_NEAR(by_angle.electrodes[e].width_mm, 3, 1e-12);
+  }
+  j["electrodes"] = json::array({{{"angle_deg", 90}, {"width_mm", 4}},
+                                 {{"angle_deg", 200}, {"width_mm", 3}},
+                                 {{"angle_deg", -30}, {"width_mm", 3}}});
+  const Sensor uneven = parse_sensor(j);
+  EXPECT_NEAR((uneven.electrodes[0].center_mm - Vector2(0, 20)).norm(), 0, 1e-9);
+  EXPECT_NEAR((uneven.electrodes[2].center_mm - 20 * Vector2(std::cos(-std::numbers::pi / 6), -0.5)).norm(), 0, 1e-9);
+  EXPECT_NEAR(uneven.electrodes[0].width_mm, 4, 1e-12);
 }
 
 }  // namespace
