@@ -99,6 +99,25 @@ TEST(Reconstruction, ProcessAllocatesNothing) {
   EXPECT_GE(contacts.size(), 1u);
 }
 
+// On a curved sheet too: each contact is placed on the surface with its normal, in place.
+TEST(Reconstruction, ProcessOnTheDomeAllocatesNothingAndPlacesContactsOnTheSurface) {
+  const Sensor sensor = load_sensor(test::source_path("examples/sensors/dome25.json"));
+  const ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
+  Twin twin(sensor);
+  const Frame frame = twin.frame({{6, -5, 4, 10}});
+  Reconstructor reconstructor(model, LinearCalibration::uncalibrated(sensor));
+  reconstructor.set_reference(twin.frame({}));
+  reconstructor.process(frame);  // warm-up
+  test::AllocationCounter counter;
+  const auto& contacts = reconstructor.process(frame);
+  EXPECT_EQ(counter.count(), 0);
+  ASSERT_GE(contacts.size(), 1u);
+  // On the sphere of radius 25 mm about (0, 0, −15), the normal along the radius.
+  const Vector3 radius(contacts[0].x_mm, contacts[0].y_mm, contacts[0].z_mm + 15);
+  EXPECT_NEAR(radius.norm(), 25, 1e-9);
+  EXPECT_NEAR((radius / 25 - Vector3(contacts[0].nx, contacts[0].ny, contacts[0].nz)).norm(), 0, 1e-12);
+}
+
 // A batch split across threads gives each frame the contacts one Reconstructor gives it.
 TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
   SmallModel s;
