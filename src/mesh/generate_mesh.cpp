@@ -8,6 +8,7 @@
 #include <gmsh.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
 #include "emit/sensor/surface.hpp"
@@ -160,7 +161,16 @@ MeshOptions twin_mesh_options(const Sensor& sensor, int seed) {
 }
 
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
-  if (sensor.shape.kind == ShapeKind::mesh_file) return read_msh(sensor.shape.mesh_path);
+  if (sensor.shape.kind == ShapeKind::mesh_file) {
+    Mesh mesh = read_msh(sensor.shape.mesh_path);
+    // Presses and contacts on a mesh file's sheet are placed in the plane (sensor/surface.hpp):
+    // on a curved one a press would miss the sheet and every frame read as untouched.
+    if (mesh.node_count() > 0 && mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() > 1e-9)
+      throw InvalidInput(quote_input(sensor.shape.mesh_path) +
+                         ": a curved surface (nodes off z = 0); a mesh file's sheet must be flat for now: describe a "
+                         "dome by its shape, {\"type\": \"spherical_cap\", ...}");
+    return mesh;
+  }
   if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
     throw InvalidInput("mesh: element size and edge size factor must be positive");
   if (options.smoothing_steps < 0) throw InvalidInput("mesh: smoothing steps must be 0 or more");

@@ -142,6 +142,23 @@ TEST(Cli, SimulatesASphericalCap) {
   EXPECT_LE((frame - reference).cwiseAbs().maxCoeff(), 0.01 * reference.cwiseAbs().maxCoeff());
 }
 
+// A mesh file's sheet is placed in the plane: a curved one (the dome as `emit mesh` writes it)
+// is refused in one line rather than simulated as a sheet no press reaches.
+TEST(Cli, RefusesACurvedMeshFileAsASensor) {
+  const std::string dir = test::temp_folder("cli_curved_msh");
+  ASSERT_EQ(run_emit("mesh --sensor " + test::source_path("examples/sensors/dome25.json") + " --out " + dir +
+                     "/dome.msh")
+                .exit_code,
+            0);
+  std::ofstream(dir + "/dome_msh.json") << R"({"shape": {"type": "mesh", "file": "dome.msh"}})";
+  const auto r = run_emit("simulate --sensor " + dir + "/dome_msh.json --press 3,4,4,10 --out " + dir + "/f.csv");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find(": a curved surface (nodes off z = 0)"), std::string::npos) << r.err;
+  EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
+  EXPECT_EQ(last_line_of(r.err).rfind("emit: ", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f.csv"));
+}
+
 /// The contacts of a contacts file, frame by frame.
 std::vector<std::vector<Contact>> read_contacts_file(const std::string& path) {
   std::vector<std::vector<Contact>> frames;
