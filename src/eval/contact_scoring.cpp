@@ -57,9 +57,7 @@ bool every_press_matched(const std::vector<Contact>& contacts, const std::vector
     std::size_t nearest = contacts.size();
     double nearest_mm = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < contacts.size(); ++i)
-      if (const double d = position_error_mm(contacts[i], p);
-          !taken[i] && d < nearest_mm)
-        nearest = i, nearest_mm = d;
+      if (const double d = position_error_mm(contacts[i], p); !taken[i] && d < nearest_mm) nearest = i, nearest_mm = d;
     if (nearest == contacts.size() || nearest_mm > match_mm) return false;
     taken[nearest] = true;
   }

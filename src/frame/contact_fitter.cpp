@@ -242,8 +242,7 @@ bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
     if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
-      if (separation_mm(discs[i], discs[j]) < plausible_separation_mm())
-        return false;
+      if (separation_mm(discs[i], discs[j]) < plausible_separation_mm()) return false;
   }
   return true;
 }
@@ -387,8 +386,7 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
 bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
   if (discs.size() < 2) return false;
   for (std::size_t i = 0; i < discs.size(); ++i)
-    if (separation_mm(discs[i], previous[i]) > plausible_separation_mm())
-      return true;
+    if (separation_mm(discs[i], previous[i]) > plausible_separation_mm()) return true;
   return false;
 }
 

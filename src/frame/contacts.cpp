@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/surface.hpp"
@@ -173,7 +174,7 @@ void place_on_surface(const Shape& surface, Contact& contact) {
   contact.nx = normal.x(), contact.ny = normal.y(), contact.nz = normal.z();
 }
 
-ContactFinder::ContactFinder(const Mesh& mesh, const Shape& surface) : surface_(surface) {
+ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::move(surface)) {
   build_adjacency(mesh, neighbour_offsets_, neighbours_);
   const auto count = static_cast<std::size_t>(mesh.triangle_count());
   areas_mm2_.resize(count);

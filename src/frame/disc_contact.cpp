@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/surface.hpp"
@@ -64,8 +65,8 @@ Eigen::Matrix3d uniform_integral() {
 
 }  // namespace
 
-DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels, const Shape& surface)
-    : mesh_(&mesh), edge_mm_(edge_mm), surface_(surface) {
+DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels, Shape surface)
+    : mesh_(&mesh), edge_mm_(edge_mm), surface_(std::move(surface)) {
   if (!(edge_mm > 0)) throw InvalidInput("disc contact: the rim's smoothing width must be positive");
   if (levels < 0 || levels > 5) throw InvalidInput("disc contact: quadrature levels must be 0 to 5");
   std::vector<Eigen::Matrix3d> corners;
@@ -75,7 +76,8 @@ DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, i
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
     const Vector3 c = mesh.triangle_centroid_mm(t);
     double reach = 0;
-    for (int k = 0; k < 3; ++k) reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).transpose() - c).norm());
+    for (int k = 0; k < 3; ++k)
+      reach = std::max(reach, (mesh.nodes_mm.row(mesh.triangles(t, k)).transpose() - c).norm());
     centroid_mm_.push_back(c);
     reach_mm_.push_back(reach);
   }

@@ -178,10 +178,11 @@ std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const
       const std::string where = "electrodes[" + std::to_string(i) + "]";
       ObjectReader r(j[i], where);
       if (r.has("angle_deg")) {  // on a round border: the angle from +x, counter-clockwise seen from +z
-        if (!round) ObjectReader::fail(where + ".angle_deg", "is for a circle's or a spherical cap's rim; give x_mm, y_mm");
+        if (!round)
+          ObjectReader::fail(where + ".angle_deg", "is for a circle's or a spherical cap's rim; give x_mm, y_mm");
         if (r.has("x_mm") || r.has("y_mm")) ObjectReader::fail(where, "give angle_deg or x_mm, y_mm, not both");
         const double angle_rad = r.number("angle_deg", Sign::any) * std::numbers::pi / 180;
-        centers.push_back(shape.center_mm + shape.radius_mm * Vector2(std::cos(angle_rad), std::sin(angle_rad)));
+        centers.emplace_back(shape.center_mm + shape.radius_mm * Vector2(std::cos(angle_rad), std::sin(angle_rad)));
       } else {
         centers.emplace_back(r.number("x_mm", Sign::any), r.number("y_mm", Sign::any));
       }

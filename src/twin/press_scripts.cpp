@@ -32,7 +32,11 @@ bool admissible(const Border& border, const Vector2& p, double margin_mm) {
 class Sampler {
  public:
   Sampler(const Sensor& sensor, const PressStyle& style)
-      : border_(border_for_scripts(sensor)), surface_(sensor.shape), style_(style), box_(bounding_box(border_)), rng_(style.seed) {
+      : border_(border_for_scripts(sensor)),
+        surface_(sensor.shape),
+        style_(style),
+        box_(bounding_box(border_)),
+        rng_(style.seed) {
     if (!(style.radius_mm > 0)) throw InvalidInput("press radius must be positive");
     if (style.min_force_N < 0 || style.max_force_N < style.min_force_N)
       throw InvalidInput("press forces must satisfy 0 <= min <= max");

@@ -100,7 +100,8 @@ TEST(CurvedSheet, ReciprocityBetweenDriveAndElectrodePorts) {
       Vector unit_current = Vector::Zero(dofs.dof_count - 1);
       unit_current[m < l ? m : m - 1] = 1.0;
       const Vector z = grounded.solve(unit_current);
-      EXPECT_NEAR(frame(l, m) / E, leak_weights(keep).dot(z), test::solve_roundoff) << "ground " << l << ", sense " << m;
+      EXPECT_NEAR(frame(l, m) / E, leak_weights(keep).dot(z), test::solve_roundoff)
+          << "ground " << l << ", sense " << m;
     }
   }
   EXPECT_GT(frame.maxCoeff(), 0.1);  // the press is felt: the check is not vacuous

@@ -17,7 +17,7 @@
 namespace emit {
 
 struct Contact {
-  double x_mm = 0, y_mm = 0;           ///< centroid, weighted by area × weight (see find())
+  double x_mm = 0, y_mm = 0;  ///< centroid, weighted by area × weight (see find())
   /// The sheet's point above (x, y) and its unit outward normal (sensor/surface.hpp): on a flat
   /// sheet z = 0 and the normal is +z; on a curved one the contact is a point of the surface.
   double z_mm = 0, nx = 0, ny = 0, nz = 1;
@@ -39,7 +39,7 @@ void place_on_surface(const Shape& surface, Contact& contact);
 class ContactFinder {
  public:
   /// \param surface  the sheet's shape: each contact's (x, y) is placed on it (place_on_surface).
-  explicit ContactFinder(const Mesh& mesh, const Shape& surface = {});
+  explicit ContactFinder(const Mesh& mesh, Shape surface = {});
 
   /// \param selected  #F flags, nonzero where the element is above threshold
   /// \param pressure  #F element pressures [N/mm²] (read only where selected)

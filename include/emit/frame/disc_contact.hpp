@@ -42,7 +42,7 @@ class DiscContactIntegrator {
   /// \param edge_mm  half-width of the smoothed rim; \param levels  subdivision depth of the
   /// quadrature on triangles the rim crosses (4^levels pieces, one point each); \param surface
   /// the sheet's shape, for where the disc's centre (x, y) is in 3D (flat by default).
-  DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels = 3, const Shape& surface = {});
+  DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels = 3, Shape surface = {});
 
   double edge_mm() const { return edge_mm_; }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file contacts_jsonl.hpp
 /// Contacts out as JSON Lines (README, "Files"), one object per frame:
-/// {"frame": i, "contacts": [{"x_mm":…, "y_mm":…[, "z_mm":…, "nx":…, "ny":…, "nz":…], "area_mm2":…, "pressure_N_per_mm2":…,
+/// {"frame": i, "contacts": [{"x_mm":…, "y_mm":…[, "z_mm":…, "nx":…, "ny":…, "nz":…], "area_mm2":…,
+/// "pressure_N_per_mm2":…,
 ///   "peak_pressure_N_per_mm2":…, "force_N":…[, "x_std_mm":…, "y_std_mm":…,
 ///   "pressure_std_N_per_mm2":…]}][, "fit_misfit_mV":…]}
 /// The uncertainties (1σ) and the frame's fit misfit (RMS of predicted − measured, to compare with
