@@ -73,7 +73,7 @@ DemoReport run_demo_reconstruction(const std::string& out_dir, const std::string
     write_contacts_line(contacts_file.stream(), static_cast<long>(f), report.fitted.back(),
                         1e3 * fit_reconstructor.fit_result()->rms_misfit_V);
     std::vector<Circle> outlines;
-    for (const Press& p : report.presses[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
+    for (const Press& p : report.presses[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm, p.z_mm});
     write_pressure_map(fit_reconstructor.mesh(), fit_reconstructor.pressure(), outlines,
                        "frame " + std::to_string(f) + ": pressure by contact fitting (circles: the true presses)",
                        out_dir + "/frame_" + std::to_string(f) + ".png");

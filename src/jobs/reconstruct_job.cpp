@@ -31,7 +31,7 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
   for (const Contact& c : contacts)
-    outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi)});
+    outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi), c.z_mm});
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,

@@ -13,8 +13,12 @@
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
+#include "emit/mesh/generate_mesh.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/render/image.hpp"
+#include "emit/render/pressure_map.hpp"
+#include "emit/render/shaded_surface.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -167,6 +171,14 @@ std::vector<std::vector<Contact>> read_contacts_file(const std::string& path) {
   return frames;
 }
 
+/// The dome's reference frame: without a press its probing layer carries no current, so all 16 × 16
+/// readings are 0 V.
+void write_zero_reference(const std::string& path) {
+  std::ofstream zeros(path);
+  for (int i = 0; i < 256; ++i) zeros << (i ? ",0" : "0");
+  zeros << "\n";
+}
+
 // Contact fitting on a curved sheet, checked on frames nobody here simulated: the independent
 // implementation's dome frames (80k triangles; without a press the probing layer carries no
 // current, so the reference is all zeros). Issue 15's targets: single presses within 0.3 mm in
@@ -176,11 +188,7 @@ std::vector<std::vector<Contact>> read_contacts_file(const std::string& path) {
 TEST(Cli, FitsContactsOnTheDomesIndependentFrames) {
   const std::string dir = test::temp_folder("cli_dome_fit");
   const std::string dome = test::source_path("tests/data/conformance/dome25");
-  {
-    std::ofstream zeros(dir + "/zero.csv");
-    for (int i = 0; i < 256; ++i) zeros << (i ? ",0" : "0");
-    zeros << "\n";
-  }
+  write_zero_reference(dir + "/zero.csv");
   const auto r = run_emit("reconstruct --sensor " + dome + "_sensor.json --reference " + dir + "/zero.csv --frames " +
                           dome + "_frames.csv --contacts " + dir + "/c.jsonl --no-cache");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -206,6 +214,27 @@ TEST(Cli, FitsContactsOnTheDomesIndependentFrames) {
       EXPECT_NEAR(radius.norm(), 25, 1e-4);
       EXPECT_NEAR((radius / 25 - Vector3(c.nx, c.ny, c.nz)).norm(), 0, 1e-5);
     }
+}
+
+// --images on the dome: each frame's pressure map is the shaded two-panel picture (an oblique view
+// and the top view), of the size its layout gives for the title emit writes.
+TEST(Cli, ImagesOfTheDomeAreTheShadedTwoPanelPicture) {
+  const std::string dir = test::temp_folder("cli_dome_images");
+  const std::string dome = test::source_path("tests/data/conformance/dome25");
+  write_zero_reference(dir + "/zero.csv");
+  const auto r = run_emit("reconstruct --sensor " + dome + "_sensor.json --reference " + dir + "/zero.csv --frames " +
+                          dome + "_frames.csv --contacts " + dir + "/c.jsonl --no-cache --images " + dir + "/img");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image image = read_png(dir + "/img/frame_0.png");
+  const Sensor sensor = load_sensor(dome + "_sensor.json");
+  FieldImageOptions options;
+  options.width_px = shaded_pressure_map_width_px;
+  options.title = "frame 0: pressure (fit), 1 contact";  // as reconstruct titles it (one line)
+  options.unit = "N/mm2";
+  const ShadedLayout layout = plan_shaded_layout(generate_mesh(sensor, reconstruction_mesh_options(sensor)), options);
+  EXPECT_EQ(image.width(), layout.width_px);
+  EXPECT_EQ(image.height(), layout.height_px);
+  EXPECT_TRUE(fs::exists(dir + "/img/frame_2.png"));
 }
 
 // Four fingers, with the realistic sheet's sizes set one by one.

@@ -93,24 +93,14 @@ TEST(DiscContact, DerivativesMatchFiniteDifferences) {
   }
 }
 
-const Sensor& dome() {
-  static const Sensor sensor = load_sensor(test::source_path("examples/sensors/dome25.json"));
-  return sensor;
-}
-
-const Mesh& dome_mesh() {
-  static const Mesh mesh = generate_mesh(dome(), reconstruction_mesh_options(dome()));
-  return mesh;
-}
-
 // On a sphere, the part within 3D (chord) distance r of one of its points has area π r², whatever
 // the sphere's radius (Archimedes' hat-box theorem): the disc on the dome carries g π r², to the
 // flat disc's smoothing and quadrature error (above) and the facets' area deficit against the
 // sphere (h²/(12 R²) per element: 0.01 %). Its centre of mass is inside the sphere, below the
 // surface point by r²/(4R) along the normal (0.16 mm for r = 4 mm, R = 25 mm), and on the normal.
 TEST(DiscContact, OnTheDomeCarriesTheSpheresDiscOfChordRadiusR) {
-  const Mesh& mesh = dome_mesh();
-  const DiscContactIntegrator integrator(mesh, 0.3, 3, dome().shape);
+  const Mesh& mesh = test::dome_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3, 3, test::dome_sensor().shape);
   const Disc disc{6.2, -9.1, 4.0, 2e-7};
   DiscLoad load;
   integrator.integrate(disc, load);
@@ -122,17 +112,17 @@ TEST(DiscContact, OnTheDomeCarriesTheSpheresDiscOfChordRadiusR) {
   }
   const double exact = disc.conductance_S_per_mm2 * std::numbers::pi * disc.radius_mm * disc.radius_mm;
   EXPECT_NEAR(total, exact, 0.01 * exact);
-  const Vector3 surface = surface_point_mm(dome().shape, {disc.x_mm, disc.y_mm});
-  const Vector3 normal = surface_normal(dome().shape, {disc.x_mm, disc.y_mm});
-  const double R = dome().shape.sphere_radius_mm, depth = disc.radius_mm * disc.radius_mm / (4 * R);
+  const Vector3 surface = surface_point_mm(test::dome_sensor().shape, {disc.x_mm, disc.y_mm});
+  const Vector3 normal = surface_normal(test::dome_sensor().shape, {disc.x_mm, disc.y_mm});
+  const double R = test::dome_sensor().shape.sphere_radius_mm, depth = disc.radius_mm * disc.radius_mm / (4 * R);
   EXPECT_NEAR((moment / total - (surface - depth * normal)).norm(), 0, 0.05);  // as the flat disc's centre
 }
 
 // The centre's derivatives go through the surface's tangents (∂P/∂x, ∂P/∂y): against central
 // differences as on the flat sheet.
 TEST(DiscContact, OnTheDomeDerivativesMatchFiniteDifferences) {
-  const Mesh& mesh = dome_mesh();
-  const DiscContactIntegrator integrator(mesh, 0.3, 3, dome().shape);
+  const Mesh& mesh = test::dome_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3, 3, test::dome_sensor().shape);
   const Disc disc{-10.3, 7.7, 3.3, 1e-7};
   DiscLoad load;
   integrator.integrate(disc, load, true);

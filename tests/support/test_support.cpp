@@ -8,6 +8,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
 namespace emit::test {
 
 Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny) {
@@ -38,6 +41,16 @@ Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny) {
 }
 
 std::string source_path(const std::string& relative) { return std::string(EMIT_SOURCE_DIR) + "/" + relative; }
+
+const Sensor& dome_sensor() {
+  static const Sensor sensor = load_sensor(source_path("examples/sensors/dome25.json"));
+  return sensor;
+}
+
+const Mesh& dome_mesh() {
+  static const Mesh mesh = generate_mesh(dome_sensor(), reconstruction_mesh_options(dome_sensor()));
+  return mesh;
+}
 
 std::string temp_folder(const std::string& name) {
   const auto folder = std::filesystem::temp_directory_path() / ("emit_test_" + std::to_string(::getpid()) + "_" + name);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "emit/mesh/mesh.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit::test {
 
@@ -12,6 +13,10 @@ namespace emit::test {
 Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny);
 
 std::string source_path(const std::string& relative);
+
+/// The example dome (examples/sensors/dome25.json) and its reconstruction mesh (Gmsh), made once.
+const Sensor& dome_sensor();
+const Mesh& dome_mesh();
 
 struct CommandResult {
   int exit_code = -1;

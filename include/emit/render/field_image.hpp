@@ -13,9 +13,13 @@
 
 namespace emit {
 
+/// An outlined circle (a contact, a press): its centre (x, y) and, on a curved sheet, the centre's
+/// height z (render_field ignores it; render_shaded_surface draws the circle in the sheet's
+/// tangent plane there).
 struct Circle {
   Vector2 center_mm{0, 0};
   double radius_mm = 0;
+  double z_mm = 0;
 };
 
 struct FieldImageOptions {

@@ -1,0 +1,122 @@
+#include "field_drawing.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "bitmap_font.hpp"
+#include "emit/core/errors.hpp"
+
+namespace emit::detail {
+
+void check_field_inputs(const Mesh& mesh, const Vector& nodal_values, bool check_z, const std::string& who) {
+  if (mesh.node_count() == 0 || mesh.triangle_count() == 0) throw InvalidInput(who + ": the mesh is empty");
+  if (!(check_z ? mesh.nodes_mm.allFinite() : mesh.nodes_mm.leftCols(2).allFinite()))
+    throw InvalidInput(who + ": a mesh node is not finite");
+  auto valid = [&](Index node) { return node >= 0 && node < mesh.node_count(); };
+  if (!valid(mesh.triangles.minCoeff()) || !valid(mesh.triangles.maxCoeff()))
+    throw InvalidInput(who + ": a triangle refers to a node the mesh does not have");
+  for (const auto& nodes : mesh.electrode_nodes)
+    if (!nodes.empty() && (!valid(nodes.front()) || !valid(nodes.back())))  // sorted: the ends suffice
+      throw InvalidInput(who + ": an electrode refers to a node the mesh does not have");
+  if (nodal_values.size() != mesh.node_count())
+    throw InvalidInput(who + ": " + std::to_string(nodal_values.size()) + " nodal values for a mesh of " +
+                       std::to_string(mesh.node_count()) + " nodes");
+}
+
+ValueRange value_range(const Vector& values, const FieldImageOptions& options, const std::string& who) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (Index i = 0; i < values.size(); ++i)
+    if (std::isfinite(values[i])) {
+      low = std::min(low, values[i]);
+      high = std::max(high, values[i]);
+    }
+  if (low > high) low = high = 0;  // no finite value at all
+  ValueRange range{std::isnan(options.min_value) ? low : options.min_value,
+                   std::isnan(options.max_value) ? high : options.max_value};
+  if (!(range.min <= range.max) || !std::isfinite(range.min) || !std::isfinite(range.max))
+    throw InvalidInput(who + ": colour range [" + std::to_string(range.min) + ", " + std::to_string(range.max) +
+                       "] is not an interval");
+  return range;
+}
+
+std::string value_label(double value, const std::string& unit) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return unit.empty() ? text : std::string(text) + " " + unit;
+}
+
+std::vector<std::string> wrap_text(const std::string& text, int max_width_px) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word) {
+    if (!lines.empty() && text_width_px(lines.back() + " " + word, font_scale) <= max_width_px)
+      lines.back() += " " + word;
+    else lines.push_back(word);
+  }
+  return lines;
+}
+
+namespace {
+
+int line_height_px() { return text_height_px(font_scale) + 4; }
+
+}  // namespace
+
+int title_height_px(const std::vector<std::string>& title_lines) {
+  return title_lines.empty() ? 0 : padding_px + line_height_px() * static_cast<int>(title_lines.size());
+}
+
+void draw_title(Image& image, const std::vector<std::string>& title_lines) {
+  for (std::size_t i = 0; i < title_lines.size(); ++i)
+    draw_text(image, padding_px, padding_px + static_cast<int>(i) * line_height_px(), title_lines[i], text_colour,
+              font_scale);
+}
+
+void draw_colour_bar(Image& image, const Box& bar, const std::string& min_label, const std::string& max_label) {
+  for (int row = 0; row < bar.height; ++row) {
+    const Rgb colour = colormap(1.0 - (row + 0.5) / bar.height);  // top is the maximum
+    for (int x = bar.x; x < bar.x + bar.width; ++x) image.set(x, bar.y + row, colour);
+  }
+  const Vector2 corner[4] = {{bar.x - 0.5, bar.y - 0.5},
+                             {bar.x + bar.width + 0.5, bar.y - 0.5},
+                             {bar.x + bar.width + 0.5, bar.y + bar.height + 0.5},
+                             {bar.x - 0.5, bar.y + bar.height + 0.5}};
+  for (int k = 0; k < 4; ++k) draw_segment(image, corner[k], corner[(k + 1) % 4], 0.5, border_colour);
+  const int text_x = bar.x + bar.width + bar_label_gap_px;
+  draw_text(image, text_x, bar.y, max_label, text_colour, font_scale);
+  draw_text(image, text_x, bar.y + bar.height - text_height_px(font_scale), min_label, text_colour, font_scale);
+}
+
+PixelRange pixels_within(const Image& image, double x_min, double x_max, double y_min, double y_max) {
+  auto clamp_to = [](double v, int last) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(last))); };
+  return {clamp_to(std::floor(x_min), image.width() - 1), clamp_to(std::ceil(x_max), image.width() - 1),
+          clamp_to(std::floor(y_min), image.height() - 1), clamp_to(std::ceil(y_max), image.height() - 1)};
+}
+
+void draw_segment(Image& image, const Vector2& a, const Vector2& b, double half_width, Rgb colour) {
+  for_each_segment_pixel(image, a, b, half_width, [&](int x, int y, double) { image.set(x, y, colour); });
+}
+
+void draw_ring(Image& image, const Vector2& centre, double radius, double half_width, Rgb colour) {
+  const double reach = radius + half_width;
+  const PixelRange r =
+      pixels_within(image, centre.x() - reach, centre.x() + reach, centre.y() - reach, centre.y() + reach);
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x)
+      if (std::abs((Vector2(x + 0.5, y + 0.5) - centre).norm() - radius) <= half_width) image.set(x, y, colour);
+}
+
+void draw_electrode_label(Image& image, int e, const Vector2& middle_px, const Vector2& away) {
+  const std::string text = std::to_string(e);
+  const double w = text_width_px(text, font_scale), h = text_height_px(font_scale);
+  // Distance from the box's centre to its edge along `away` (the box's support function).
+  const double clearance = 0.5 * (std::abs(away.x()) * w + std::abs(away.y()) * h);
+  const Vector2 centre = middle_px + away * (clearance + 6);
+  draw_text(image, int(std::lround(centre.x() - 0.5 * w)), int(std::lround(centre.y() - 0.5 * h)), text, text_colour,
+            font_scale);
+}
+
+}  // namespace emit::detail

@@ -1,0 +1,236 @@
+// The shaded picture of a curved sheet: where points land in each panel, the Lambert shading, the
+// z-buffer hiding the far side, and the marks (circles) drawn only where they are in sight.
+#include "emit/render/shaded_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "emit/core/errors.hpp"
+#include "emit/sensor/surface.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+FieldImageOptions of_width(int width_px) {
+  FieldImageOptions options;
+  options.width_px = width_px;
+  return options;
+}
+
+Vector3 node(const Mesh& mesh, Index i) { return mesh.nodes_mm.row(i).transpose(); }
+
+/// How far a colour's chromaticity, (r, g, b) / (r + g + b), is from that of the map's top
+/// (yellow). Shading scales all three channels alike, so this is blind to it up to rounding; the
+/// orange of the electrodes, the white of outlines and the dark border are all far from it.
+double distance_from_yellow(Rgb c) {
+  const Rgb top = colormap(1);
+  const double sum = c.r + c.g + c.b, top_sum = top.r + top.g + top.b;
+  if (sum == 0) return 1;
+  return std::hypot(c.r / sum - top.r / top_sum, c.g / sum - top.g / top_sum, c.b / sum - top.b / top_sum);
+}
+
+struct Pixel {
+  int x = 0, y = 0;
+};
+
+/// The pixel of the view's panel whose colour is nearest yellow.
+Pixel most_yellow(const Image& image, const SurfaceView& view) {
+  Pixel best;
+  double nearest = 2;
+  for (int y = view.top_px; y < view.top_px + view.size_px; ++y)
+    for (int x = view.left_px; x < view.left_px + view.size_px; ++x)
+      if (const double d = distance_from_yellow(image.get(x, y)); d < nearest) {
+        nearest = d;
+        best = {x, y};
+      }
+  return best;
+}
+
+Rgb pixel_at(const Image& image, const SurfaceView& view, const Vector3& point_mm) {
+  return image.get(view.pixel_x(point_mm), view.pixel_y(point_mm));
+}
+
+/// The node of the dome nearest the surface point above (x, y).
+Index node_near(const Vector2& xy_mm) {
+  const Vector3 point = surface_point_mm(test::dome_sensor().shape, xy_mm);
+  Index best = 0;
+  (test::dome_mesh().nodes_mm.rowwise() - point.transpose()).rowwise().squaredNorm().minCoeff(&best);
+  return best;
+}
+
+/// A Gaussian bump of width `sigma_mm` about `centre` (3D distance), 1 at its top.
+Vector bump(const Mesh& mesh, const Vector3& centre, double sigma_mm) {
+  Vector values(mesh.node_count());
+  for (Index i = 0; i < mesh.node_count(); ++i)
+    values[i] = std::exp(-(node(mesh, i) - centre).squaredNorm() / (2 * sigma_mm * sigma_mm));
+  return values;
+}
+
+TEST(ShadedSurface, ViewsAreRightHandedAndTheTopViewIsTheFlatPicturesFrame) {
+  const SurfaceView top = SurfaceView::looking_from(-90, 90);
+  EXPECT_NEAR((top.right - Vector3(1, 0, 0)).norm(), 0, 1e-15);
+  EXPECT_NEAR((top.up - Vector3(0, 1, 0)).norm(), 0, 1e-15);
+  EXPECT_NEAR((top.toward_viewer - Vector3(0, 0, 1)).norm(), 0, 1e-15);
+  const SurfaceView oblique = SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg);
+  EXPECT_NEAR((oblique.right.cross(oblique.up) - oblique.toward_viewer).norm(), 0, 1e-15);
+  EXPECT_NEAR(oblique.up.norm(), 1, 1e-15);
+  EXPECT_NEAR(oblique.toward_viewer.z(), 0.5, 1e-15);    // sin 30°
+  EXPECT_NEAR(oblique.toward_viewer.y(), -0.75, 1e-15);  // cos 30° sin −60°: the viewer at −y
+}
+
+// A bump peaked at a point of the dome's near side: in each panel the pixel nearest yellow (the
+// map's top) is where that point projects, to the bump's flat top (within 0.3 mm of the peak the
+// value is above 0.995, a 0.2 % change of colour against rounding's 1/37 of blue) and the facets'
+// linear interpolation: 3 px at the panels' ≈ 8.5 px/mm.
+TEST(ShadedSurface, APeakedFieldIsBrightestWhereItsPointProjectsInBothPanels) {
+  const Mesh& mesh = test::dome_mesh();
+  const Vector3 peak = node(mesh, node_near({8, -6}));
+  ShadedLayout layout;
+  const Image image = render_shaded_surface(mesh, bump(mesh, peak, 3), {}, of_width(1024), &layout);
+  EXPECT_EQ(image.width(), 1024);
+  EXPECT_EQ(image.height(), layout.height_px);
+  for (const SurfaceView* view : {&layout.oblique, &layout.top}) {
+    const Pixel found = most_yellow(image, *view);
+    const double off_px = std::hypot(found.x - view->pixel_x(peak), found.y - view->pixel_y(peak));
+    EXPECT_LE(off_px, 3) << "found (" << found.x << ", " << found.y << ")";
+    // Not trivially so: the point lands well away from the panel's centre.
+    const Vector2 from_centre =
+        view->to_px(peak) - Vector2(view->left_px, view->top_px) - Vector2::Constant(0.5 * view->size_px);
+    EXPECT_GT(from_centre.norm(), 30);
+  }
+}
+
+// A uniform field: every facet's colour is the map's middle times its Lambert shade, 0.35 +
+// 0.65 |n·l|. Of the facets the oblique view sees face on (n·v > 0.5, well inside the rim), the one
+// the light falls on most squarely and the one it grazes most differ by that ratio, each channel
+// to rounding (±½ unit before and after the shade).
+TEST(ShadedSurface, AFacetFacingTheLightIsBrighterByLambertsRatio) {
+  const Mesh& mesh = test::dome_mesh();
+  ShadedLayout layout;
+  FieldImageOptions options;
+  options.width_px = 1024;
+  options.min_value = 0;
+  options.max_value = 2;
+  const Image image = render_shaded_surface(mesh, Vector::Constant(mesh.node_count(), 1), {}, options, &layout);
+  const Vector3 light = shading_light_direction();
+  Index lit = -1, grazed = -1;
+  double most = -1, least = 2;
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    const Vector3 a = node(mesh, mesh.triangles(t, 0)), b = node(mesh, mesh.triangles(t, 1)),
+                  c = node(mesh, mesh.triangles(t, 2));
+    const Vector3 n = (b - a).cross(c - a).normalized();
+    if (std::abs(n.dot(layout.oblique.toward_viewer)) < 0.5 || mesh.triangle_centroid_mm(t).head<2>().norm() > 14)
+      continue;
+    const double cosine = std::abs(n.dot(light));
+    if (cosine > most) most = cosine, lit = t;
+    if (cosine < least) least = cosine, grazed = t;
+  }
+  ASSERT_GE(lit, 0);
+  const double lit_shade = 0.35 + 0.65 * most, grazed_shade = 0.35 + 0.65 * least;
+  EXPECT_GT(lit_shade / grazed_shade, 1.25) << "the dome's facets should span a range of light";
+  const Rgb base = colormap(0.5);
+  const Rgb lit_colour = pixel_at(image, layout.oblique, mesh.triangle_centroid_mm(lit));
+  const Rgb grazed_colour = pixel_at(image, layout.oblique, mesh.triangle_centroid_mm(grazed));
+  for (const auto& [colour, shade] : {std::pair{lit_colour, lit_shade}, std::pair{grazed_colour, grazed_shade}}) {
+    EXPECT_NEAR(colour.r, base.r * shade, 0.5 + 1e-9);
+    EXPECT_NEAR(colour.g, base.g * shade, 0.5 + 1e-9);
+    EXPECT_NEAR(colour.b, base.b * shade, 0.5 + 1e-9);
+  }
+  // The green channel (the largest) as a ratio, with rounding's widest interval.
+  const double ratio = double(lit_colour.g) / grazed_colour.g;
+  EXPECT_GE(ratio, (base.g * lit_shade - 0.5) / (base.g * grazed_shade + 0.5));
+  EXPECT_LE(ratio, (base.g * lit_shade + 0.5) / (base.g * grazed_shade - 0.5));
+  EXPECT_GT(ratio, 1.2);
+}
+
+/// The mesh with its triangles in the opposite order: a z-buffer draws the same picture, a painter
+/// that lets the last triangle win does not.
+Mesh reversed(const Mesh& mesh) {
+  Mesh out = mesh;
+  out.triangles = mesh.triangles.colwise().reverse();
+  return out;
+}
+
+// A hot patch on the far side, near the rim opposite the oblique viewer: its normal turns away
+// from the viewer (n·v ≈ −0.2 on the sphere there), so the near side covers it. The oblique panel
+// shows the near side's coldest colour at its projection, whichever order the triangles come in;
+// the top view sees the patch.
+TEST(ShadedSurface, TheFarSideIsHiddenInTheObliqueView) {
+  const Vector3 viewer = SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg).toward_viewer;
+  const Vector2 away = -17 * viewer.head<2>().normalized();  // 17 mm from the axis, opposite the viewer
+  const Vector3 hidden = node(test::dome_mesh(), node_near(away));
+  ASSERT_LT(surface_normal(test::dome_sensor().shape, hidden.head<2>()).dot(viewer), -0.15);
+  for (const Mesh& mesh : {test::dome_mesh(), reversed(test::dome_mesh())}) {
+    ShadedLayout layout;
+    const Image image = render_shaded_surface(mesh, bump(mesh, hidden, 1.5), {}, of_width(1024), &layout);
+    EXPECT_GT(distance_from_yellow(pixel_at(image, layout.oblique, hidden)), 0.3);
+    EXPECT_LT(distance_from_yellow(pixel_at(image, layout.top, hidden)), 0.05);
+    // What is drawn there is the near side, cold: dark purple, blue over green.
+    const Rgb near = pixel_at(image, layout.oblique, hidden);
+    EXPECT_GT(near.b, near.g);
+  }
+}
+
+/// How many pixels of the view's panel differ between two pictures.
+int changed_pixels(const Image& a, const Image& b, const SurfaceView& view) {
+  int changed = 0;
+  for (int y = view.top_px; y < view.top_px + view.size_px; ++y)
+    for (int x = view.left_px; x < view.left_px + view.size_px; ++x) changed += !(a.get(x, y) == b.get(x, y));
+  return changed;
+}
+
+// At the default width (panels of 173 px, ≈ 4.3 px/mm) a circle of radius 2 mm is a ring of about
+// 2π · 2 mm · 4.3 px/mm · 4 px ≈ 220 pixels (the oblique view foreshortens it): one on the near
+// side shows in both panels; one on the far side, 15–19 mm from the axis opposite the viewer (6 mm
+// and more behind the near side), only in the top view, not through the dome.
+TEST(ShadedSurface, CirclesAreDrawnWhereTheyAreInSight) {
+  const Mesh& mesh = test::dome_mesh();
+  const Vector3 viewer = SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg).toward_viewer;
+  const Vector3 near = surface_point_mm(test::dome_sensor().shape, 8 * viewer.head<2>().normalized());
+  const Vector3 far = surface_point_mm(test::dome_sensor().shape, -17 * viewer.head<2>().normalized());
+  const Vector values = Vector::Constant(mesh.node_count(), 1);
+  ShadedLayout layout;
+  const Image plain = render_shaded_surface(mesh, values, {}, {}, &layout);
+  const Image near_ring = render_shaded_surface(mesh, values, {{near.head<2>(), 2.0, near.z()}}, {});
+  const Image far_ring = render_shaded_surface(mesh, values, {{far.head<2>(), 2.0, far.z()}}, {});
+  EXPECT_GT(changed_pixels(plain, near_ring, layout.oblique), 100);
+  EXPECT_GT(changed_pixels(plain, near_ring, layout.top), 100);
+  EXPECT_EQ(changed_pixels(plain, far_ring, layout.oblique), 0);
+  EXPECT_GT(changed_pixels(plain, far_ring, layout.top), 100);
+}
+
+// The layout depends on the width, title and unit, not the values: the two panels are squares side
+// by side, the colour bar to their right, all within the width.
+TEST(ShadedSurface, LayoutIsTwoSquarePanelsWithinTheWidth) {
+  FieldImageOptions options;
+  options.width_px = 1024;
+  options.unit = "N/mm2";
+  const ShadedLayout layout = plan_shaded_layout(test::dome_mesh(), options);
+  EXPECT_EQ(layout.width_px, 1024);
+  EXPECT_EQ(layout.oblique.size_px, layout.top.size_px);
+  EXPECT_EQ(layout.oblique.top_px, layout.top.top_px);
+  EXPECT_GE(layout.top.left_px, layout.oblique.left_px + layout.oblique.size_px);
+  EXPECT_GT(layout.oblique.size_px, 300);
+  EXPECT_GE(layout.height_px, layout.top.top_px + layout.top.size_px);
+  // Every node lands in its panel in both views.
+  for (Index i = 0; i < test::dome_mesh().node_count(); ++i)
+    for (const SurfaceView* view : {&layout.oblique, &layout.top}) {
+      const Vector2 p = view->to_px(node(test::dome_mesh(), i));
+      EXPECT_TRUE(p.x() >= view->left_px && p.x() <= view->left_px + view->size_px && p.y() >= view->top_px &&
+                  p.y() <= view->top_px + view->size_px)
+          << "node " << i;
+    }
+  options.width_px = 300;
+  EXPECT_THROW(plan_shaded_layout(test::dome_mesh(), options), InvalidInput);
+}
+
+TEST(ShadedSurface, RejectsValuesThatDoNotMatchTheMesh) {
+  EXPECT_THROW(render_shaded_surface(test::dome_mesh(), Vector::Zero(7), {}, {}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace emit
