@@ -4,7 +4,7 @@
 // three.js. A screenshot shows the pressed colour at the press (window.emitViewer.toPixel3 projects
 // it through the page's camera), the unpressed sheet's grey far from it and the view's background
 // above the dome; a drag with the mouse orbits the camera, and the press's pixel moves with the
-// pressed colour on it.
+// pressed colour on it. With three.js unreachable the page draws the dome flat and says why.
 // Usage: node viewer3d_test.mjs PATH/TO/emit SENSORS_DIR [SCREENSHOT.png]
 // Exits 77 (skipped, CTest's SKIP_RETURN_CODE) when the page says its emit was built without three.js.
 import fs from "node:fs";
@@ -99,6 +99,21 @@ try {
     if (moved < 40) fail(`the drag moved the press's pixel only ${moved.toFixed(1)} px`);
     if (!isPressed(pressedAfter)) fail(`no pressed (red) colour at the press after the drag: rgb(${pressedAfter})`);
     if (!isBackground(backgroundAfter)) fail(`not the view's background above the dome after the drag: rgb(${backgroundAfter})`);
+
+    // Without three.js (as from a build that left it out: here its files answer 404), the page
+    // draws the dome flat, seen from above, and says why; the press is still red at its (x, y).
+    const flat = await context.newPage();
+    flat.on("pageerror", (error) => fail(`page error (no three.js): ${error.message}`));
+    await flat.route("**/three/**", (route) => route.fulfill({ status: 404, body: "not found" }));
+    await flat.goto(url);
+    await flat.waitForFunction(() => window.emitViewer && window.emitViewer.mode === "flat" && window.emitViewer.frames > 3 &&
+                                     window.emitViewer.last && window.emitViewer.last.contacts.length > 0, null, { timeout: 60000 });
+    const note = await flat.textContent("#note"), atFlat = await flat.evaluate((p) => window.emitViewer.toPixel(p.x_mm, p.y_mm), press);
+    const pressedFlat = decodePng(await flat.screenshot()).rgb(atFlat.x, atFlat.y);
+    console.log(`viewer3d_test: without three.js: "${note}"; press (${atFlat.x.toFixed(0)}, ${atFlat.y.toFixed(0)}) rgb(${pressedFlat})`);
+    if (!/no 3D view in this build/.test(note)) fail(`the page does not say why it draws the dome flat: "${note}"`);
+    if (!isPressed(pressedFlat)) fail(`no pressed (red) colour at the press, drawn flat: rgb(${pressedFlat})`);
+    await flat.close();
   }
 } finally {
   if (context) await context.close();
