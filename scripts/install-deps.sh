@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Installs emit's build and test dependencies from Debian's packages. Idempotent: it installs
-# only what is missing, and does nothing (not even apt-get update) when all is there.
+# Installs emit's build and test dependencies from Debian's packages, and three.js from npm for the
+# live viewer's 3D view (viewer/package.json, pinned by viewer/package-lock.json: `npm ci` in
+# viewer/, which CMake embeds into emit). Idempotent: it installs only what is missing, and does
+# nothing (not even apt-get update or npm) when all is there.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
   g++ cmake make pkg-config             # toolchain
@@ -28,13 +31,22 @@ missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
-
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo=sudo
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo=sudo
+  fi
+  echo "install-deps: installing ${missing[*]}"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-echo "install-deps: installing ${missing[*]}"
-$sudo apt-get update -q
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+
+# three.js, as the user running this (viewer/node_modules is the clone's, not the system's); only
+# when viewer/node_modules does not already hold the pinned version.
+pinned=$(node -p "require('./viewer/package-lock.json').packages['node_modules/three'].version")
+installed=$(node -p "try { require('./viewer/node_modules/three/package.json').version } catch { '' }")
+if [ "$installed" != "$pinned" ]; then
+  echo "install-deps: installing three.js $pinned for the live viewer (npm ci in viewer/)"
+  (cd viewer && npm ci --no-audit --no-fund)
+fi

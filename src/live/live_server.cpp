@@ -1,5 +1,6 @@
 #include "emit/live/live_server.hpp"
 
+#include <array>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -30,6 +31,28 @@ struct Message {
 using MessagePtr = std::shared_ptr<const Message>;
 
 constexpr auto http_timeout = std::chrono::seconds(30);
+
+/// What the server serves over HTTP: the page, and three.js for its 3D view (viewer_page.hpp).
+struct ViewerFile {
+  std::string_view target;
+  const char* content_type;
+  std::string_view (*bytes)();
+};
+
+constexpr std::array<ViewerFile, 5> viewer_files{{
+    {"/", "text/html; charset=utf-8", viewer_page},
+    {"/index.html", "text/html; charset=utf-8", viewer_page},
+    {"/three/three.module.js", "text/javascript; charset=utf-8", three_module_js},
+    {"/three/three.core.js", "text/javascript; charset=utf-8", three_core_js},
+    {"/three/addons/controls/OrbitControls.js", "text/javascript; charset=utf-8", three_orbit_controls_js},
+}};
+
+/// The file at `target`, or null: none there, or three.js left out of this build (empty).
+const ViewerFile* find_viewer_file(std::string_view target) {
+  for (const ViewerFile& file : viewer_files)
+    if (file.target == target && !file.bytes().empty()) return &file;
+  return nullptr;
+}
 
 }  // namespace
 
@@ -117,7 +140,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   bool awaiting_ack_ = false;  ///< a frame is out and the client has not said "ack" yet
 };
 
-/// One HTTP connection: the page at /, the WebSocket at /ws, 404 elsewhere.
+/// One HTTP connection: the page at / and three.js (viewer_files), the WebSocket at /ws, 404 elsewhere.
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   HttpSession(tcp::socket socket, ServerState& state) : stream_(std::move(socket)), state_(state) {}
@@ -139,14 +162,14 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
       std::make_shared<WebSocketSession>(stream_.release_socket(), state_)->start(request_);
       return;
     }
-    const bool page = target == "/" || target == "/index.html";
+    const ViewerFile* file = find_viewer_file(target);
     auto response =
-        std::make_shared<http::response<http::string_body>>(page ? http::status::ok : http::status::not_found,
+        std::make_shared<http::response<http::string_body>>(file ? http::status::ok : http::status::not_found,
                                                             request_.version());
     response->set(http::field::server, "emit live");
-    response->set(http::field::content_type, page ? "text/html; charset=utf-8" : "text/plain");
+    response->set(http::field::content_type, file ? file->content_type : "text/plain");
     response->set(http::field::cache_control, "no-store");
-    response->body() = page ? std::string(viewer_page()) : "not found: " + target + "\n";
+    response->body() = file ? std::string(file->bytes()) : "not found: " + target + "\n";
     response->keep_alive(request_.keep_alive());
     response->prepare_payload();
     http::async_write(stream_, *response, [self = shared_from_this(), response](beast::error_code ec, std::size_t) {
@@ -169,6 +192,7 @@ struct LiveServer::Impl {
   tcp::acceptor acceptor{io};
   std::string host;
   int port = 0;
+  bool curved = false;  ///< the mesh is drawn in 3D: contacts carry z and the normal
   std::thread thread;
 
   void accept() {
@@ -216,6 +240,7 @@ LiveServer::LiveServer(const std::string& address, const Mesh& mesh, const std::
     : impl_(std::make_unique<Impl>()) {
   const tcp::endpoint endpoint = parse_address(address, impl_->host);
   impl_->state.mesh = std::make_shared<const Message>(Message{mesh_message(mesh, sheet_name), false});
+  impl_->curved = viewer_draws_in_3d(mesh);
   impl_->state.on_command = std::move(on_command);
   beast::error_code ec;
   auto& acceptor = impl_->acceptor;
@@ -241,7 +266,8 @@ LiveServer::~LiveServer() {
 
 void LiveServer::publish(const LiveFrame& frame) {
   if (impl_->state.client_count == 0) return;  // nobody watching: nothing to encode
-  auto message = std::make_shared<const Message>(Message{frame_message(frame, impl_->state.commands), true});
+  auto message =
+      std::make_shared<const Message>(Message{frame_message(frame, impl_->state.commands, impl_->curved), true});
   net::post(impl_->io, [this, message] {
     for (const auto& session : impl_->state.sessions) session->offer(message);
   });

@@ -18,39 +18,71 @@ void append_segment(json& out, const Mesh& mesh, const std::array<int, 2>& edge)
   }
 }
 
+void append_segment_z(json& out, const Mesh& mesh, const std::array<int, 2>& edge) {
+  for (int node : edge) out.push_back(mesh.nodes_mm(node, 2));
+}
+
 }  // namespace
 
+bool viewer_draws_in_3d(const Mesh& mesh) {
+  return mesh.node_count() > 0 && (mesh.nodes_mm.col(2).array() != 0.0).any();
+}
+
 std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
+  const bool curved = viewer_draws_in_3d(mesh);
   json nodes = json::array(), triangles = json::array(), outline = json::array(), electrodes = json::array();
+  json nodes_z = json::array(), outline_z = json::array();
   for (Index v = 0; v < mesh.node_count(); ++v) {
     nodes.push_back(mesh.nodes_mm(v, 0));
     nodes.push_back(mesh.nodes_mm(v, 1));
+    if (curved) nodes_z.push_back(mesh.nodes_mm(v, 2));
   }
   for (Index t = 0; t < mesh.triangle_count(); ++t)
     for (int k = 0; k < 3; ++k) triangles.push_back(mesh.triangles(t, k));
-  for (const auto& edge : mesh.border_edges()) append_segment(outline, mesh, edge);
-  for (int e = 0; e < mesh.electrode_count(); ++e) {
-    json segments = json::array();
-    for (const auto& edge : mesh.electrode_edges(e)) append_segment(segments, mesh, edge);
-    Vector2 center(0, 0);
-    for (int node : mesh.electrode_nodes[e]) center += mesh.nodes_mm.row(node).head<2>().transpose();
-    center /= std::max<double>(1.0, static_cast<double>(mesh.electrode_nodes[e].size()));
-    electrodes.push_back({{"segments_mm", segments}, {"x_mm", center.x()}, {"y_mm", center.y()}});
+  for (const auto& edge : mesh.border_edges()) {
+    append_segment(outline, mesh, edge);
+    if (curved) append_segment_z(outline_z, mesh, edge);
   }
-  return json{{"type", "mesh"},         {"name", sheet_name},    {"nodes_mm", nodes},
-              {"triangles", triangles}, {"outline_mm", outline}, {"electrodes", electrodes}}
-      .dump();
+  for (int e = 0; e < mesh.electrode_count(); ++e) {
+    json segments = json::array(), segments_z = json::array();
+    for (const auto& edge : mesh.electrode_edges(e)) {
+      append_segment(segments, mesh, edge);
+      if (curved) append_segment_z(segments_z, mesh, edge);
+    }
+    Vector3 center(0, 0, 0);
+    for (int node : mesh.electrode_nodes[e]) center += mesh.nodes_mm.row(node).transpose();
+    center /= std::max<double>(1.0, static_cast<double>(mesh.electrode_nodes[e].size()));
+    json electrode = {{"segments_mm", segments}, {"x_mm", center.x()}, {"y_mm", center.y()}};
+    if (curved) {
+      electrode["segments_z_mm"] = segments_z;
+      electrode["z_mm"] = center.z();
+    }
+    electrodes.push_back(std::move(electrode));
+  }
+  json message = {{"type", "mesh"},         {"name", sheet_name},    {"nodes_mm", nodes},
+                  {"triangles", triangles}, {"outline_mm", outline}, {"electrodes", electrodes}};
+  if (curved) {
+    message["nodes_z_mm"] = nodes_z;
+    message["outline_z_mm"] = outline_z;
+  }
+  return message.dump();
 }
 
-std::string frame_message(const LiveFrame& frame, std::uint64_t commands) {
+std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool curved) {
   static_assert(std::endian::native == std::endian::little, "the frame message is little-endian");
   json contacts = json::array();
-  for (const Contact& c : *frame.contacts)
-    contacts.push_back({{"x_mm", c.x_mm},
-                        {"y_mm", c.y_mm},
-                        {"area_mm2", c.area_mm2},
-                        {"pressure_N_per_mm2", c.pressure_N_per_mm2},
-                        {"force_N", c.force_N}});
+  for (const Contact& c : *frame.contacts) {
+    json contact = {{"x_mm", c.x_mm},
+                    {"y_mm", c.y_mm},
+                    {"area_mm2", c.area_mm2},
+                    {"pressure_N_per_mm2", c.pressure_N_per_mm2},
+                    {"force_N", c.force_N}};
+    if (curved) {
+      contact["z_mm"] = c.z_mm;
+      contact["normal"] = {c.nx, c.ny, c.nz};
+    }
+    contacts.push_back(std::move(contact));
+  }
   const Vector& pressure = *frame.pressure_N_per_mm2;
   std::string header = json{{"type", "frame"},
                             {"index", frame.index},

@@ -2,12 +2,10 @@
 // Chromium (Debian's) loads the page, frames arrive, and a screenshot shows the pressed colour at
 // the press and the background far from it; the re-capture button reaches the server's loop.
 // Usage: node viewer_test.mjs PATH/TO/emit [SCREENSHOT.png]
-import { spawn } from "node:child_process";
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
-import zlib from "node:zlib";
-import { chromium } from "playwright-core";
+import { decodePng, failer, launchChromium, startEmit } from "./browser_support.mjs";
 
 const [emitPath, screenshotPath = path.join(os.tmpdir(), "emit-viewer-test.png")] = process.argv.slice(2);
 if (!emitPath) throw new Error("usage: node viewer_test.mjs PATH/TO/emit [SCREENSHOT.png]");
@@ -15,71 +13,15 @@ const press = { x_mm: 20, y_mm: 40 };  // the held press
 const far = { x_mm: 45, y_mm: 15 };    // 35 mm away: nothing pressed there
 const startupSeconds = 300;            // meshing and the fit model, slow under sanitizers
 
-function fail(message) {
-  console.error(`viewer_test: FAILED: ${message}`);
-  process.exitCode = 1;
-  throw new Error(message);
-}
+const fail = failer("viewer_test");
 
-/// The viewer's address from emit's output ("viewer: http://…/").
-function startEmit() {
-  const child = spawn(emitPath, ["live", "--source", `sim:fixed:${press.x_mm},${press.y_mm}`, "--serve", "127.0.0.1:0"],
-                      { stdio: ["ignore", "pipe", "inherit"] });
-  let output = "";
-  const url = new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`no viewer address after ${startupSeconds} s`)), startupSeconds * 1000);
-    child.stdout.on("data", (chunk) => {
-      output += chunk;
-      const match = output.match(/viewer: (http:\/\/\S+)/);
-      if (match) { clearTimeout(timer); resolve(match[1]); }
-    });
-    child.on("exit", (code) => reject(new Error(`emit live exited (${code}) before serving:\n${output}`)));
-  });
-  const exited = new Promise((resolve) => child.on("exit", (code, signal) => resolve({ code, signal, output: () => output })));
-  return { child, url, exited };
-}
-
-/// Minimal PNG decoder (8-bit RGB or RGBA, non-interlaced: what Chromium writes) → {width, height, rgba(x, y)}.
-function decodePng(buffer) {
-  let at = 8, width = 0, height = 0, channels = 4;
-  const idat = [];
-  while (at < buffer.length) {
-    const length = buffer.readUInt32BE(at), type = buffer.toString("ascii", at + 4, at + 8), data = buffer.subarray(at + 8, at + 8 + length);
-    if (type === "IHDR") {
-      width = data.readUInt32BE(0); height = data.readUInt32BE(4);
-      if (data[8] !== 8 || data[12] !== 0) fail("unexpected PNG format");
-      channels = { 2: 3, 6: 4 }[data[9]];
-    } else if (type === "IDAT") idat.push(data);
-    at += 12 + length;
-  }
-  const raw = zlib.inflateSync(Buffer.concat(idat)), stride = width * channels, pixels = Buffer.alloc(height * stride);
-  for (let y = 0; y < height; ++y) {
-    const filter = raw[y * (stride + 1)], line = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
-    for (let i = 0; i < stride; ++i) {
-      const a = i >= channels ? pixels[y * stride + i - channels] : 0, b = y > 0 ? pixels[(y - 1) * stride + i] : 0;
-      const c = i >= channels && y > 0 ? pixels[(y - 1) * stride + i - channels] : 0;
-      const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
-      const predictor = [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][filter];
-      pixels[y * stride + i] = (line[i] + predictor) & 255;
-    }
-  }
-  return { width, height, rgb: (x, y) => [0, 1, 2].map((k) => pixels[Math.round(y) * stride + Math.round(x) * channels + k]) };
-}
-
-const emit = startEmit();
+const emit = startEmit(emitPath, ["--source", `sim:fixed:${press.x_mm},${press.y_mm}`], startupSeconds);
 const profile = fs.mkdtempSync(path.join(os.tmpdir(), "emit-chromium-"));
 let context;
 try {
   const url = await emit.url;
   console.log(`viewer_test: emit serves ${url}`);
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: "/usr/bin/chromium",
-    headless: true,
-    args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-           "--disable-component-update", "--disable-sync"],
-    viewport: { width: 1000, height: 860 },
-    deviceScaleFactor: 1,
-  });
+  context = await launchChromium(profile);
   const page = context.pages()[0] || await context.newPage();
   page.on("console", (message) => console.log(`page: ${message.text()}`));
   page.on("pageerror", (error) => fail(`page error: ${error.message}`));

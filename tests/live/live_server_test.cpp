@@ -1,5 +1,5 @@
 // The viewer's server (live/live_server.hpp) with a small mesh and no loop: the page over HTTP
-// (and 404 elsewhere) on one kept-alive connection; over the WebSocket the mesh message, frames
+// (and 404 elsewhere) on one kept-alive connection, three.js; over the WebSocket the mesh message, frames
 // one at a time with a newer waiting frame replacing an older one, and commands, a failing one
 // included; addresses that are not HOST:PORT refused naming the part.
 #include "emit/live/live_server.hpp"
@@ -33,6 +33,37 @@ namespace {
 namespace beast = boost::beast;
 namespace net = boost::asio;
 using tcp = net::ip::tcp;
+
+// three.js for the page's 3D view, at the paths its import map and its own relative import name
+// (viewer/index.html): three.module.js imports ./three.core.js, OrbitControls imports 'three'.
+TEST(LiveServer, ServesThreeJs) {
+  if (three_module_js().empty())
+    GTEST_SKIP() << "this build left three.js out (CMake warned: not installed in viewer/)";
+  EXPECT_NE(three_module_js().find("from './three.core.js'"), std::string_view::npos);
+  EXPECT_NE(three_orbit_controls_js().find("from 'three'"), std::string_view::npos);
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  LiveServer server("127.0.0.1:0", mesh, "strip", {});
+  const std::pair<const char*, std::string_view> files[] = {{"/three/three.module.js", three_module_js()},
+                                                            {"/three/three.core.js", three_core_js()},
+                                                            {"/three/addons/controls/OrbitControls.js",
+                                                             three_orbit_controls_js()}};
+  for (const auto& [target, bytes] : files) {
+    net::io_context io;
+    tcp::socket socket(io);
+    socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
+    net::write(socket,
+               net::buffer("GET " + std::string(target) + " HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n"));
+    std::string text;
+    beast::error_code ec;
+    net::read(socket, net::dynamic_buffer(text), ec);
+    EXPECT_EQ(text.rfind("HTTP/1.1 200 OK\r\n", 0), 0u) << target;
+    const auto body = text.find("\r\n\r\n");
+    ASSERT_NE(body, std::string::npos) << target;
+    EXPECT_NE(text.substr(0, body).find("Content-Type: text/javascript; charset=utf-8\r\n"), std::string::npos)
+        << target;
+    EXPECT_TRUE(text.substr(body + 4) == bytes) << target;  // not EXPECT_EQ: a megabyte printed on failure
+  }
+}
 
 // Two requests on one connection, the second asking to close it: the page, then 404, read as the
 // raw bytes the server sends.

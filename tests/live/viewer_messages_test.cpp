@@ -3,6 +3,8 @@
 #include "emit/live/viewer_messages.hpp"
 
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -30,6 +32,58 @@ TEST(ViewerMessages, MeshMessageHoldsTheMeshAndItsBorder) {
   EXPECT_EQ(j["electrodes"][0]["y_mm"], 0.0);
   EXPECT_EQ(j["electrodes"][1]["y_mm"], 2.0);
   EXPECT_EQ(j["electrodes"][1]["segments_mm"].size(), 2u * 4);  // the top side's two edges
+}
+
+// A flat sheet's message is as it was before curved sheets: no heights, no 3D view.
+TEST(ViewerMessages, FlatMeshHasNoHeights) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  EXPECT_FALSE(viewer_draws_in_3d(mesh));
+  const auto j = nlohmann::json::parse(mesh_message(mesh, "strip"));
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : j.items()) keys.push_back(key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"electrodes", "name", "nodes_mm", "outline_mm", "triangles", "type"}));
+  for (const auto& electrode : j["electrodes"]) EXPECT_EQ(electrode.size(), 3u);  // segments_mm, x_mm, y_mm
+}
+
+// The strip bent into a ramp, z = x / 2: the heights beside the (x, y) pairs, one per point.
+TEST(ViewerMessages, CurvedMeshCarriesTheHeights) {
+  Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  mesh.nodes_mm.col(2) = 0.5 * mesh.nodes_mm.col(0);
+  EXPECT_TRUE(viewer_draws_in_3d(mesh));
+  const auto j = nlohmann::json::parse(mesh_message(mesh, "ramp"));
+  ASSERT_EQ(j["nodes_z_mm"].size(), 6u);
+  for (std::size_t v = 0; v < 6; ++v) EXPECT_EQ(j["nodes_z_mm"][v], 0.5 * j["nodes_mm"][2 * v].get<double>());
+  ASSERT_EQ(j["outline_z_mm"].size(), j["outline_mm"].size() / 2);
+  for (std::size_t i = 0; i < j["outline_z_mm"].size(); ++i)
+    EXPECT_EQ(j["outline_z_mm"][i], 0.5 * j["outline_mm"][2 * i].get<double>());
+  for (const auto& electrode : j["electrodes"]) {
+    ASSERT_EQ(electrode["segments_z_mm"].size(), electrode["segments_mm"].size() / 2);
+    EXPECT_EQ(electrode["z_mm"], 1.0);  // both sides' nodes at x = 0, 2, 4: mean z = 1
+  }
+}
+
+// On a curved sheet each contact carries its height and normal; on a flat one, neither.
+TEST(ViewerMessages, CurvedFrameContactsCarryHeightAndNormal) {
+  std::vector<Contact> contacts(1);
+  contacts[0].z_mm = 8.5;
+  contacts[0].nx = 0.6;
+  contacts[0].nz = 0.8;
+  const Vector pressure = Vector::Zero(2);
+  LiveFrame frame;
+  frame.contacts = &contacts;
+  frame.pressure_N_per_mm2 = &pressure;
+  auto header_of = [](const std::string& message) {
+    std::uint32_t bytes = 0;
+    std::memcpy(&bytes, message.data(), 4);
+    return nlohmann::json::parse(message.substr(4, bytes));
+  };
+  const auto curved = header_of(frame_message(frame, 0, true))["contacts"][0];
+  EXPECT_EQ(curved["z_mm"], 8.5);
+  EXPECT_EQ(curved["normal"], (nlohmann::json{0.6, 0.0, 0.8}));
+  const auto flat = header_of(frame_message(frame, 0))["contacts"][0];
+  EXPECT_FALSE(flat.contains("z_mm"));
+  EXPECT_FALSE(flat.contains("normal"));
+  EXPECT_EQ(flat.size(), 5u);
 }
 
 TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {

@@ -6,10 +6,17 @@
 ///   {"type": "mesh", "name": …, "nodes_mm": [x0, y0, x1, y1, …], "triangles": [a0, b0, c0, …],
 ///    "outline_mm": [xa, ya, xb, yb, …] (border edges as segments),
 ///    "electrodes": [{"segments_mm": [xa, ya, xb, yb, …], "x_mm": …, "y_mm": …}, …]}
+/// On a curved sheet (viewer_draws_in_3d: some node has z ≠ 0) the same, and the heights beside
+/// the (x, y) pairs, one z per point of the list they go with:
+///   "nodes_z_mm": [z0, z1, …], "outline_z_mm": [za, zb, …],
+///   each electrode's "segments_z_mm": [za, zb, …] and "z_mm" (its nodes' mean, like x_mm, y_mm);
+/// a flat sheet's message has none of them (it is as it was before curved sheets).
 /// A frame, binary: a uint32 (little-endian) byte count n, n bytes of JSON
 ///   {"type": "frame", "index", "sequence", "capturing_baseline", "baseline_captures", "commands",
 ///    "frames_per_s", "latency_ms", "max_pressure_N_per_mm2",
 ///    "contacts": [{"x_mm", "y_mm", "area_mm2", "pressure_N_per_mm2", "force_N"}]}
+/// and, on a curved sheet, each contact's "z_mm" and unit outward "normal": [nx, ny, nz] too (the
+/// sheet's point above (x, y) and its normal there: frame/contacts.hpp).
 /// padded with spaces to a multiple of 4 bytes, then one float32 per triangle: the pressure [N/mm²].
 /// The client answers each frame with the text "ack" (the next frame is sent only then), and may
 /// send the command "recapture" (the baseline).
@@ -21,9 +28,14 @@
 
 namespace emit {
 
+/// Whether the viewer draws this mesh in 3D (three.js): some node has z ≠ 0 (a curved sheet).
+/// Flat meshes are drawn flat, on a 2D canvas.
+bool viewer_draws_in_3d(const Mesh& mesh);
+
 std::string mesh_message(const Mesh& mesh, const std::string& sheet_name);
 
-/// `commands`: how many commands the server has received so far.
-std::string frame_message(const LiveFrame& frame, std::uint64_t commands);
+/// `commands`: how many commands the server has received so far. `curved`: the mesh is drawn in
+/// 3D (viewer_draws_in_3d), and the contacts carry their z and normal.
+std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool curved = false);
 
 }  // namespace emit
