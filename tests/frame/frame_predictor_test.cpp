@@ -59,20 +59,12 @@ TEST(DiscContact, CarriesTheDiscsConductanceCentredOnIt) {
   EXPECT_NEAR(centre.y(), disc.y_mm, 0.05);
 }
 
-TEST(DiscContact, DerivativesMatchFiniteDifferences) {
-  const Mesh& mesh = default_mesh();
-  const DiscContactIntegrator integrator(mesh, 0.3);
-  const Disc disc{30.4, 28.1, 3.3, 1e-7};
-  DiscLoad load;
-  integrator.integrate(disc, load, true);
-  // The total's derivative in x and y vanishes (translation); in r it is 2π r g.
-  std::array<double, 3> d_total{};
-  for (const auto& d : load.d_local_S)
-    for (int k = 0; k < 3; ++k) d_total[k] += d[k].sum();
+/// Each entry of the load's derivatives in x, y and r against a central difference of step
+/// 1e-5 mm (the smoothstep is C¹ with second derivative ~ g·A/edge², so the difference's error is
+/// far below the tolerance, a millionth of 2π r g).
+void expect_derivatives_match_differences(const DiscContactIntegrator& integrator, const Disc& disc,
+                                          const DiscLoad& load) {
   const double scale = 2 * std::numbers::pi * disc.radius_mm * disc.conductance_S_per_mm2;
-  EXPECT_NEAR(d_total[2], scale, 0.02 * scale);
-  // Each entry against a central difference of step 1e-5 mm (the smoothstep is C¹ with second
-  // derivative ~ g·A/edge², so the difference's error is far below the tolerance).
   const double step = 1e-5;
   for (int k = 0; k < 3; ++k) {
     Disc plus = disc, minus = disc;
@@ -91,6 +83,21 @@ TEST(DiscContact, DerivativesMatchFiniteDifferences) {
           std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
     EXPECT_LT(worst, 1e-6 * scale) << "parameter " << k;
   }
+}
+
+TEST(DiscContact, DerivativesMatchFiniteDifferences) {
+  const Mesh& mesh = default_mesh();
+  const DiscContactIntegrator integrator(mesh, 0.3);
+  const Disc disc{30.4, 28.1, 3.3, 1e-7};
+  DiscLoad load;
+  integrator.integrate(disc, load, true);
+  // The total's derivative in x and y vanishes (translation); in r it is 2π r g.
+  std::array<double, 3> d_total{};
+  for (const auto& d : load.d_local_S)
+    for (int k = 0; k < 3; ++k) d_total[k] += d[k].sum();
+  const double scale = 2 * std::numbers::pi * disc.radius_mm * disc.conductance_S_per_mm2;
+  EXPECT_NEAR(d_total[2], scale, 0.02 * scale);
+  expect_derivatives_match_differences(integrator, disc, load);
 }
 
 // On a sphere, the part within 3D (chord) distance r of one of its points has area π r², whatever
@@ -126,25 +133,7 @@ TEST(DiscContact, OnTheDomeDerivativesMatchFiniteDifferences) {
   const Disc disc{-10.3, 7.7, 3.3, 1e-7};
   DiscLoad load;
   integrator.integrate(disc, load, true);
-  const double scale = 2 * std::numbers::pi * disc.radius_mm * disc.conductance_S_per_mm2;
-  const double step = 1e-5;
-  for (int k = 0; k < 3; ++k) {
-    Disc plus = disc, minus = disc;
-    double* plus_value = k == 0 ? &plus.x_mm : k == 1 ? &plus.y_mm : &plus.radius_mm;
-    double* minus_value = k == 0 ? &minus.x_mm : k == 1 ? &minus.y_mm : &minus.radius_mm;
-    *plus_value += step;
-    *minus_value -= step;
-    DiscLoad a, b;
-    integrator.integrate(plus, a);
-    integrator.integrate(minus, b);
-    ASSERT_EQ(a.triangles, load.triangles) << "a step this small keeps the same triangles";
-    ASSERT_EQ(b.triangles, load.triangles);
-    double worst = 0;
-    for (std::size_t i = 0; i < load.triangles.size(); ++i)
-      worst =
-          std::max(worst, ((a.local_S[i] - b.local_S[i]) / (2 * step) - load.d_local_S[i][k]).cwiseAbs().maxCoeff());
-    EXPECT_LT(worst, 1e-6 * scale) << "parameter " << k;
-  }
+  expect_derivatives_match_differences(integrator, disc, load);
 }
 
 TEST(FramePredictor, AgreesWithTheSparseForwardModel) {
