@@ -11,6 +11,7 @@
 #include "emit/io/presses_csv.hpp"
 #include "emit/render/field_image.hpp"
 #include "emit/render/image.hpp"
+#include "emit/render/pressure_map.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 
@@ -50,10 +51,10 @@ void write_sheet_json(const std::string& path, const Sensor& nominal, const Real
 void write_potential_images(Twin& twin, const PressSequence& sequence, const std::string& dir) {
   for (std::size_t f = 0; f < sequence.size(); ++f) {
     std::vector<Circle> outlines;
-    for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm});
+    for (const Press& p : sequence[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm, p.z_mm});
     FieldImageOptions image;
     image.title = "frame " + std::to_string(f) + ": probing-layer potential, electrode 0 grounded";
-    write_png(render_field(twin.mesh(), twin.potentials(sequence[f]).col(0), outlines, image),
+    write_png(render_sheet_field(twin.mesh(), twin.potentials(sequence[f]).col(0), outlines, image),
               dir + "/frame_" + std::to_string(f) + ".png");
   }
 }

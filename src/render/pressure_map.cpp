@@ -1,5 +1,7 @@
 #include "emit/render/pressure_map.hpp"
 
+#include <algorithm>
+
 #include "emit/mesh/element_to_node.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/shaded_surface.hpp"
@@ -10,19 +12,20 @@ bool is_curved_mesh(const Mesh& mesh) {
   return mesh.node_count() > 0 && mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() > 0;
 }
 
+Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
+                         FieldImageOptions options) {
+  if (!is_curved_mesh(mesh)) return render_field(mesh, nodal_values, outlines, options);
+  options.width_px = std::max(options.width_px, shaded_pressure_map_width_px);
+  return render_shaded_surface(mesh, nodal_values, outlines, options);
+}
+
 void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const std::vector<Circle>& outlines,
                         const std::string& title, const std::string& path) {
   FieldImageOptions image;
   image.title = title;
   image.unit = "N/mm2";
   image.min_value = 0;
-  const Vector nodal = element_to_node(mesh, element_pressure);
-  if (is_curved_mesh(mesh)) {
-    image.width_px = shaded_pressure_map_width_px;
-    write_png(render_shaded_surface(mesh, nodal, outlines, image), path);
-  } else {
-    write_png(render_field(mesh, nodal, outlines, image), path);
-  }
+  write_png(render_sheet_field(mesh, element_to_node(mesh, element_pressure), outlines, image), path);
 }
 
 }  // namespace emit

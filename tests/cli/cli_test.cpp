@@ -135,9 +135,12 @@ TEST(Cli, RealisticSheetWithThreeFingers) {
 TEST(Cli, SimulatesASphericalCap) {
   const std::string dir = test::temp_folder("cli_dome");
   const std::string dome = test::source_path("tests/data/conformance/dome25");
-  const auto r = run_emit("simulate --sensor " + dome +
-                          "_sensor.json --press 8.034845,9.575556,4,10.053096 --exact --out " + dir + "/f.csv");
+  const auto r =
+      run_emit("simulate --sensor " + dome + "_sensor.json --press 8.034845,9.575556,4,10.053096 --exact --out " + dir +
+               "/f.csv --images " + dir + "/img");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The potential drawn as the curved sheet's shaded two-panel picture, not the flat one (640 px).
+  EXPECT_EQ(read_png(dir + "/img/frame_0.png").width(), shaded_pressure_map_width_px);
   const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
   ASSERT_EQ(truth.size(), 1u);
   EXPECT_NEAR(truth[0][0].z_mm, 6.650635, 1e-4);  // the conformance file's, to the 4 decimals written

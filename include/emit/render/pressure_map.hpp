@@ -17,6 +17,11 @@ inline constexpr int shaded_pressure_map_width_px = 1024;  ///< two panels of 34
 /// Whether the mesh has a node off the plane z = 0 (and so gets the shaded picture).
 bool is_curved_mesh(const Mesh& mesh);
 
+/// A field on the sheet as a picture: render_field for a flat sheet, render_shaded_surface (at
+/// least shaded_pressure_map_width_px wide) for a curved one. \param nodal_values  #V values.
+Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
+                         FieldImageOptions options);
+
 /// Writes the PNG (atomically). \param element_pressure  #F values [N/mm²]. \throw IoError.
 void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const std::vector<Circle>& outlines,
                         const std::string& title, const std::string& path);
