@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what emit needs (Debian packages) and builds it in build/ (Release).
+# Installs what emit needs (Debian packages, and three.js from npm for the live viewer's 3D view) and
+# builds it in build/ (Release).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
