@@ -21,6 +21,13 @@ namespace {
 
 using namespace emit;
 
+/// The twin on another mesh than the reconstruction's (seed 3), as emit eval's.
+TwinOptions held_out_twin() {
+  TwinOptions o;
+  o.mesh_seed = 3;
+  return o;
+}
+
 struct Bench {
   Sensor sensor = default_sensor();
   ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
@@ -34,11 +41,7 @@ struct Bench {
     return m;
   }();
   FitModel fit_model = build_fit_model(sensor);
-  Twin twin{sensor, [] {
-              TwinOptions o;
-              o.mesh_seed = 3;
-              return o;
-            }()};
+  Twin twin{sensor, held_out_twin()};
   Frame reference = twin.frame({});
   std::vector<Frame> frames;  // single presses across the sheet
   std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
@@ -113,11 +116,7 @@ struct DomeBench {
   Sensor sensor = load_sensor(EMIT_EXAMPLES_DIR "/dome25.json");
   ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
   FitModel fit_model = build_fit_model(sensor);
-  Twin twin{sensor, [] {
-              TwinOptions o;
-              o.mesh_seed = 3;
-              return o;
-            }()};
+  Twin twin{sensor, held_out_twin()};
   Frame reference = twin.frame({});
   std::vector<Frame> frames;
   DomeBench() {

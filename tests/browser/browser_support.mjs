@@ -31,6 +31,17 @@ export function startEmit(emitPath, args, startupSeconds) {
   return { child, url, exited };
 }
 
+/// After `emit live` was sent SIGINT (a user's Ctrl-C; the tests send it in `finally`, so it stops
+/// whatever happened), checks it exits 0 with its summary line ("live: …"), which it returns.
+/// `fail` is the test's failer.
+export async function stoppedEmitSummary(emit, fail) {
+  const { code, output } = await emit.exited;
+  if (code !== 0) fail(`emit live exited with ${code} after SIGINT`);
+  const summary = output().match(/live: .*/);
+  if (!summary) fail("emit live printed no summary on SIGINT");
+  return summary[0];
+}
+
 /// Debian's Chromium, headless, in a fresh profile, 1000 × 860 CSS pixels at one device pixel each.
 export function launchChromium(profile, extraArgs = ["--disable-gpu"]) {
   return chromium.launchPersistentContext(profile, {

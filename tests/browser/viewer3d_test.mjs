@@ -10,7 +10,7 @@
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
-import { decodePng, failer, launchChromium, startEmit } from "./browser_support.mjs";
+import { decodePng, failer, launchChromium, startEmit, stoppedEmitSummary } from "./browser_support.mjs";
 
 const [emitPath, sensorsDir, screenshotPath = path.join(os.tmpdir(), "emit-viewer3d-test.png")] = process.argv.slice(2);
 if (!emitPath || !sensorsDir) throw new Error("usage: node viewer3d_test.mjs PATH/TO/emit SENSORS_DIR [SCREENSHOT.png]");
@@ -120,10 +120,6 @@ try {
   fs.rmSync(profile, { recursive: true, force: true });
   emit.child.kill("SIGINT");
 }
-const { code, output } = await emit.exited;
-if (code !== 0) fail(`emit live exited with ${code} after SIGINT`);
-const summary = output().match(/live: .*/);
-if (!summary) fail("emit live printed no summary on SIGINT");
-console.log(`viewer3d_test: ${summary[0]}`);
+console.log(`viewer3d_test: ${await stoppedEmitSummary(emit, fail)}`);
 if (skipped) process.exit(77);
 console.log("viewer3d_test: passed");

@@ -5,7 +5,7 @@
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
-import { decodePng, failer, launchChromium, startEmit } from "./browser_support.mjs";
+import { decodePng, failer, launchChromium, startEmit, stoppedEmitSummary } from "./browser_support.mjs";
 
 const [emitPath, screenshotPath = path.join(os.tmpdir(), "emit-viewer-test.png")] = process.argv.slice(2);
 if (!emitPath) throw new Error("usage: node viewer_test.mjs PATH/TO/emit [SCREENSHOT.png]");
@@ -56,9 +56,5 @@ try {
   fs.rmSync(profile, { recursive: true, force: true });
   emit.child.kill("SIGINT");
 }
-const { code, output } = await emit.exited;
-if (code !== 0) fail(`emit live exited with ${code} after SIGINT`);
-const summary = output().match(/live: .*/);
-if (!summary) fail("emit live printed no summary on SIGINT");
-console.log(`viewer_test: ${summary[0]}`);
+console.log(`viewer_test: ${await stoppedEmitSummary(emit, fail)}`);
 console.log("viewer_test: passed");
