@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "emit/mesh/flatness.hpp"
+
 namespace emit {
 
 namespace {
@@ -24,9 +26,7 @@ void append_segment_z(json& out, const Mesh& mesh, const std::array<int, 2>& edg
 
 }  // namespace
 
-bool viewer_draws_in_3d(const Mesh& mesh) {
-  return mesh.node_count() > 0 && (mesh.nodes_mm.col(2).array() != 0.0).any();
-}
+bool viewer_draws_in_3d(const Mesh& mesh) { return !is_flat(mesh); }
 
 std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
   const bool curved = viewer_draws_in_3d(mesh);

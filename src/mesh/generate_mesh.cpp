@@ -9,6 +9,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/mesh/flatness.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
 #include "emit/sensor/surface.hpp"
@@ -165,7 +166,7 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
     Mesh mesh = read_msh(sensor.shape.mesh_path);
     // Presses and contacts on a mesh file's sheet are placed in the plane (sensor/surface.hpp):
     // on a curved one a press would miss the sheet and every frame read as untouched.
-    if (mesh.node_count() > 0 && mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() > 1e-9)
+    if (!is_flat(mesh))
       throw InvalidInput(quote_input(sensor.shape.mesh_path) +
                          ": a curved surface (nodes off z = 0); a mesh file's sheet must be flat for now: describe a "
                          "dome by its shape, {\"type\": \"spherical_cap\", ...}");

@@ -3,18 +3,15 @@
 #include <algorithm>
 
 #include "emit/mesh/element_to_node.hpp"
+#include "emit/mesh/flatness.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/shaded_surface.hpp"
 
 namespace emit {
 
-bool is_curved_mesh(const Mesh& mesh) {
-  return mesh.node_count() > 0 && mesh.nodes_mm.col(2).cwiseAbs().maxCoeff() > 0;
-}
-
 Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
                          FieldImageOptions options) {
-  if (!is_curved_mesh(mesh)) return render_field(mesh, nodal_values, outlines, options);
+  if (is_flat(mesh)) return render_field(mesh, nodal_values, outlines, options);
   options.width_px = std::max(options.width_px, shaded_pressure_map_width_px);
   return render_shaded_surface(mesh, nodal_values, outlines, options);
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/mesh/element_to_node.hpp"
+#include "emit/mesh/flatness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/shaded_surface.hpp"
@@ -55,7 +56,7 @@ TEST(PressureMap, FlatSheetKeepsItsPictureByteForByte) {
 TEST(PressureMap, CurvedSheetGetsTheShadedTwoPanelPicture) {
   const Sensor sensor = load_sensor(test::source_path("examples/sensors/dome25.json"));
   const Mesh mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
-  ASSERT_TRUE(is_curved_mesh(mesh));
+  ASSERT_FALSE(is_flat(mesh));
   const std::string folder = test::temp_folder("pressure_map_curved");
   const std::string title = "frame 0: pressure (fit), 1 contact";
   write_pressure_map(mesh, Vector::Constant(mesh.triangle_count(), 0.1), {{Vector2(3, 4), 2.0, 9.0}}, title,
@@ -74,11 +75,14 @@ TEST(PressureMap, CurvedSheetGetsTheShadedTwoPanelPicture) {
   fs::remove_all(folder);
 }
 
+// mesh/flatness.hpp: heights of round-off (1e-9 of the 10 mm extent) are flat; a micrometre is not.
 TEST(PressureMap, OnlyAMeshOffThePlaneIsCurved) {
   Mesh mesh = test::strip_mesh(10, 10, 2, 2);
-  EXPECT_FALSE(is_curved_mesh(mesh));
-  mesh.nodes_mm(4, 2) = -1e-9;
-  EXPECT_TRUE(is_curved_mesh(mesh));
+  EXPECT_TRUE(is_flat(mesh));
+  mesh.nodes_mm(4, 2) = -1e-11;
+  EXPECT_TRUE(is_flat(mesh));
+  mesh.nodes_mm(4, 2) = -1e-3;
+  EXPECT_FALSE(is_flat(mesh));
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 /// \file pressure_map.hpp
 /// A pressure image as a picture: the per-element pressure drawn smooth over the mesh (N/mm², from
 /// 0), with circles outlined (contacts found, or the true presses). A flat sheet is drawn from +z
-/// (render_field); a curved one, a mesh with any node off z = 0, as the shaded two-panel picture
+/// (render_field); a curved one, a mesh not flat (mesh/flatness.hpp), as the shaded two-panel picture
 /// (render_shaded_surface: an oblique view and the top view), shaded_pressure_map_width_px wide.
 #include <string>
 #include <vector>
@@ -13,9 +13,6 @@
 namespace emit {
 
 inline constexpr int shaded_pressure_map_width_px = 1024;  ///< two panels of 341 px beside the colour bar
-
-/// Whether the mesh has a node off the plane z = 0 (and so gets the shaded picture).
-bool is_curved_mesh(const Mesh& mesh);
 
 /// A field on the sheet as a picture: render_field for a flat sheet, render_shaded_surface (at
 /// least shaded_pressure_map_width_px wide) for a curved one. \param nodal_values  #V values.
