@@ -13,30 +13,68 @@ double centre_depth_mm(const Shape& s) {
   return std::sqrt(std::max(0.0, s.sphere_radius_mm * s.sphere_radius_mm - s.radius_mm * s.radius_mm));
 }
 
+double angle_rad(const Shape& s) { return s.angle_deg * std::numbers::pi / 180; }
+
+/// A cylinder's polar angle θ (from +z towards +y) at chart point c.
+double cylinder_theta(const Shape& s, const Vector2& c) { return c.y() / s.radius_mm - angle_rad(s) / 2; }
+
 }  // namespace
 
-bool is_curved(const Shape& shape) { return shape.kind == ShapeKind::spherical_cap; }
-
-Vector3 surface_point_mm(const Shape& shape, const Vector2& xy_mm) {
-  if (shape.kind != ShapeKind::spherical_cap) return {xy_mm.x(), xy_mm.y(), 0};
-  const double R = shape.sphere_radius_mm;
-  const double z = std::sqrt(std::max(0.0, R * R - xy_mm.squaredNorm())) - centre_depth_mm(shape);
-  return {xy_mm.x(), xy_mm.y(), std::max(0.0, z)};
+bool is_curved(const Shape& shape) {
+  return shape.kind == ShapeKind::spherical_cap || shape.kind == ShapeKind::cylinder;
 }
 
-Vector3 surface_normal(const Shape& shape, const Vector2& xy_mm) {
-  if (shape.kind != ShapeKind::spherical_cap) return Vector3::UnitZ();
-  const Vector3 p = surface_point_mm(shape, xy_mm);
-  return (p + Vector3(0, 0, centre_depth_mm(shape))).normalized();
+bool is_sleeve(const Shape& shape) { return shape.kind == ShapeKind::cylinder && shape.angle_deg >= 360; }
+
+Vector3 surface_point_mm(const Shape& shape, const Vector2& c) {
+  switch (shape.kind) {
+    case ShapeKind::spherical_cap: {
+      const double R = shape.sphere_radius_mm;
+      const double z = std::sqrt(std::max(0.0, R * R - c.squaredNorm())) - centre_depth_mm(shape);
+      return {c.x(), c.y(), std::max(0.0, z)};
+    }
+    case ShapeKind::cylinder: {
+      const double theta = cylinder_theta(shape, c);
+      return {c.x() - shape.length_mm / 2, shape.radius_mm * std::sin(theta), shape.radius_mm * std::cos(theta)};
+    }
+    default: return {c.x(), c.y(), 0};
+  }
 }
 
-Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& xy_mm) {
+Vector2 surface_chart_mm(const Shape& shape, const Vector3& p) {
+  if (shape.kind != ShapeKind::cylinder) return p.head<2>();
+  const double R = shape.radius_mm;
+  double v = R * (std::atan2(p.y(), p.z()) + angle_rad(shape) / 2);
+  if (is_sleeve(shape)) {
+    const double round = 2 * std::numbers::pi * R;
+    v -= round * std::floor(v / round);
+  }
+  return {p.x() + shape.length_mm / 2, v};
+}
+
+Vector3 surface_normal(const Shape& shape, const Vector2& c) {
+  switch (shape.kind) {
+    case ShapeKind::spherical_cap:
+      return (surface_point_mm(shape, c) + Vector3(0, 0, centre_depth_mm(shape))).normalized();
+    case ShapeKind::cylinder: {
+      const double theta = cylinder_theta(shape, c);
+      return {0, std::sin(theta), std::cos(theta)};
+    }
+    default: return Vector3::UnitZ();
+  }
+}
+
+Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& c) {
   Eigen::Matrix<double, 3, 2> t;
   t << 1, 0, 0, 1, 0, 0;
-  if (shape.kind != ShapeKind::spherical_cap) return t;
-  const double R = shape.sphere_radius_mm;
-  const double height = std::sqrt(std::max(R * R - xy_mm.squaredNorm(), 1e-6 * R * R));  // √(R² − ρ²), ρ ≤ 0.999 R
-  t.row(2) = -xy_mm.transpose() / height;
+  if (shape.kind == ShapeKind::spherical_cap) {
+    const double R = shape.sphere_radius_mm;
+    const double height = std::sqrt(std::max(R * R - c.squaredNorm(), 1e-6 * R * R));  // √(R² − ρ²), ρ ≤ 0.999 R
+    t.row(2) = -c.transpose() / height;
+  } else if (shape.kind == ShapeKind::cylinder) {
+    const double theta = cylinder_theta(shape, c);
+    t.col(1) = Vector3(0, std::cos(theta), -std::sin(theta));
+  }
   return t;
 }
 
@@ -46,6 +84,7 @@ double surface_area_mm2(const Shape& shape) {
       const double R = shape.sphere_radius_mm;
       return 2 * std::numbers::pi * R * (R - centre_depth_mm(shape));  // 2πR·h, h the cap's height
     }
+    case ShapeKind::cylinder: return shape.radius_mm * angle_rad(shape) * shape.length_mm;
     case ShapeKind::rectangle: return shape.width_mm * shape.height_mm;
     case ShapeKind::circle: return std::numbers::pi * shape.radius_mm * shape.radius_mm;
     case ShapeKind::polygon: {

@@ -12,16 +12,20 @@
 
 namespace emit {
 
-enum class ShapeKind { rectangle, circle, polygon, mesh_file, spherical_cap };
+enum class ShapeKind { rectangle, circle, polygon, mesh_file, spherical_cap, cylinder };
 
 struct Shape {
   ShapeKind kind = ShapeKind::rectangle;
   double width_mm = 0, height_mm = 0;  ///< rectangle
-  double radius_mm = 0;                ///< circle; spherical_cap: the rim's (base) radius
+  double radius_mm = 0;                ///< circle; spherical_cap: the rim's (base) radius; cylinder: its radius
   Vector2 center_mm{0, 0};             ///< circle; spherical_cap: the origin
   /// spherical_cap: a cap of this sphere, apex up (+z), its rim the circle of radius_mm in the
   /// plane z = 0 about the z axis (README "Sensor description"; sensor/surface.hpp).
   double sphere_radius_mm = 0;
+  /// cylinder: a patch of the side of the cylinder of radius radius_mm about the x axis, this
+  /// long along it (x from −length/2 to length/2) and spanning this angle about it, centred on
+  /// +z; 360° is a sleeve (README "Sensor description"; sensor/surface.hpp).
+  double length_mm = 0, angle_deg = 0;
   std::vector<Vector2> points_mm;  ///< polygon, as given
   std::string mesh_path;           ///< mesh_file: a Gmsh .msh with "electrode <i>" curves
 };

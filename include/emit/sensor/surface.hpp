@@ -1,10 +1,17 @@
 #pragma once
 /// \file surface.hpp
-/// The sheet as a surface in 3D. A flat sheet is its shape in the plane z = 0. A spherical cap
-/// (README "Sensor description") is the part of the sphere of radius R centred at (0, 0, −√(R² − a²))
-/// above the plane z = 0: its rim is the circle of radius a there, its apex at z = R − √(R² − a²).
-/// Seen from +z the cap covers the disc of radius a once, so (x, y) names a point of it, and its
-/// border and electrodes are the rim's circle's (sensor/border.hpp), arc lengths unchanged.
+/// The sheet as a surface in 3D, named by a chart: 2D coordinates (mm) of its points in which its
+/// border, electrodes and meshing are those of a flat sheet (sensor/border.hpp).
+///   - A flat sheet is its shape in the plane z = 0; its chart is (x, y).
+///   - A spherical cap (README "Sensor description") is the part of the sphere of radius R centred
+///     at (0, 0, −√(R² − a²)) above the plane z = 0: its rim is the circle of radius a there, its
+///     apex at z = R − √(R² − a²). Seen from +z the cap covers the disc of radius a once, so its
+///     chart is (x, y) too, and its border the rim's circle (arc lengths unchanged).
+///   - A cylinder patch of radius R, length L and angle α about the x axis is unrolled: the chart
+///     (u, v) ∈ [0, L] × [0, Rα] is the point (u − L/2, R sin θ, R cos θ), θ = v/R − α/2 from +z
+///     towards +y. The map keeps lengths and areas (an isometry), so the chart's rectangle is the
+///     sheet's true border and the distances along it are the sheet's. A sleeve (α = 360°) is
+///     periodic in v: v and v + 2πR are the same point, and its border is the two rims u = 0, L.
 #include "emit/core/types.hpp"
 #include "emit/sensor/sensor.hpp"
 
@@ -13,20 +20,31 @@ namespace emit {
 /// Whether the sheet is not flat.
 bool is_curved(const Shape& shape);
 
-/// The point of the sheet above (x, y): (x, y, 0) on a flat sheet. For a cap, (x, y) must be
-/// within the rim (a point beyond it is taken at the rim's height, 0).
-Vector3 surface_point_mm(const Shape& shape, const Vector2& xy_mm);
+/// Whether the sheet is a cylinder closed around its axis (a sleeve): its chart is periodic in v.
+bool is_sleeve(const Shape& shape);
 
-/// The sheet's unit normal at the point above (x, y), pointing away from the sphere's centre (+z
-/// on a flat sheet).
-Vector3 surface_normal(const Shape& shape, const Vector2& xy_mm);
+/// The point of the sheet at chart point c: (x, y, 0) on a flat sheet. For a cap, c must be
+/// within the rim (a point beyond it is taken at the rim's height, 0); a cylinder's chart extends
+/// beyond the patch along the same cylinder.
+Vector3 surface_point_mm(const Shape& shape, const Vector2& chart_mm);
 
-/// ∂P/∂x and ∂P/∂y (columns) of the point P above (x, y): how the surface point moves as (x, y)
-/// does. Flat: the plane's unit vectors. On a cap z = √(R² − ρ²) − d, so ∂z/∂x = −x / √(R² − ρ²);
-/// at a hemisphere's rim that is infinite, so ρ is taken at most 0.999 R there.
-Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& xy_mm);
+/// The chart point of the sheet's point nearest p, for p on or near the sheet (the inverse of
+/// surface_point_mm on it): (x, y) on a flat sheet and a cap (the point above or below p); on a
+/// cylinder, p's position along the axis and its angle about it (on a sleeve v in [0, 2πR)).
+Vector2 surface_chart_mm(const Shape& shape, const Vector3& point_mm);
 
-/// The sheet's area [mm²]: 2πR²(1 − cos θ) for a cap (sin θ = a/R); 0 for a mesh file.
+/// The sheet's unit normal at chart point c, pointing away from the sphere's centre or the
+/// cylinder's axis (+z on a flat sheet).
+Vector3 surface_normal(const Shape& shape, const Vector2& chart_mm);
+
+/// ∂P/∂c (columns): how the surface point P moves with the chart's two coordinates. Flat: the
+/// plane's unit vectors. On a cap z = √(R² − ρ²) − d, so ∂z/∂x = −x / √(R² − ρ²); at a
+/// hemisphere's rim that is infinite, so ρ is taken at most 0.999 R there. On a cylinder the
+/// columns are orthonormal: (1, 0, 0) and (0, cos θ, −sin θ).
+Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& chart_mm);
+
+/// The sheet's area [mm²]: 2πR²(1 − cos θ) for a cap (sin θ = a/R), RαL for a cylinder; 0 for
+/// a mesh file.
 double surface_area_mm2(const Shape& shape);
 
 }  // namespace emit
