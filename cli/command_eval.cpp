@@ -48,7 +48,8 @@ std::vector<EvalCase> matching_cases(const std::string& sheet) {
   std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
   std::erase_if(cases, [&](const EvalCase& c) { return c.name.find(sheet) == std::string::npos; });
   if (cases.empty())
-    throw InvalidInput("--sheet " + quote_input(sheet) + ": no sheet's name has it (60, 30, circle, 120, dome)");
+    throw InvalidInput("--sheet " + quote_input(sheet) +
+                       ": no sheet's name has it (60, 30, circle, 120, dome, sleeve)");
   return cases;
 }
 
@@ -173,7 +174,7 @@ void add_eval_command(CLI::App& app) {
   a->seed =
       cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise (default 1; with --realistic, 11)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
-  cmd->add_option("--sheet", a->sheet, "Only the sheets whose name contains this (60, 30, circle, 120, dome)");
+  cmd->add_option("--sheet", a->sheet, "Only the sheets whose name contains this (60, 30, circle, 120, dome, sleeve)");
   cmd->add_flag("--quick", o.quick, "Fewer presses (a smoke test)");
   a->realistic = cmd->add_option("--realistic", a->realistic_seed,
                                  "The round a user runs with a real sheet, on a realistic sheet drawn from SEED "

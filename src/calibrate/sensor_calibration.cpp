@@ -9,6 +9,7 @@
 #include <ceres/ceres.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/sheet_chart.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/green_function.hpp"
 #include "emit/sensor/adc.hpp"
@@ -49,7 +50,7 @@ class PressesMisfit {
         noise_V_(reading_noise_V(sensor.adc)),
         box_(SheetCorrection::identity_over(mesh, sheet_terms)) {
     for (const Vector2& c : centres_mm)
-      if (!mesh.contains_xy(c))
+      if (!chart_on_sheet(mesh, sensor.shape, c))
         throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " +
                            std::to_string(c.y()) + ") mm is off the sheet");
     log_g_.assign(dV.size(), std::log(sensor.contact.conductance_S_per_mm2(0.1)));
@@ -417,7 +418,7 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (presses[f].size() != 1) continue;  // a single press's centre is known; two mix
     dV.push_back(frame_difference(measurements, frames[f], reference));
-    centres.emplace_back(presses[f][0].x_mm, presses[f][0].y_mm);
+    centres.push_back(press_chart_mm(sensor.shape, presses[f][0]));
   }
   return calibrate_sensor(sensor, fit_mesh, measurements, dV, centres, options, {}, progress);
 }

@@ -21,16 +21,17 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
 Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction) {
   const Vector& dphi = reconstructor.image();
   const double threshold = threshold_fraction * dphi.maxCoeff();
-  Vector2 sum(0, 0);
+  Vector3 sum = Vector3::Zero();
   double weight = 0;
   for (Index k = 0; k < dphi.size(); ++k)
     if (dphi[k] > 0 && dphi[k] >= threshold) {
       const double w = reconstructor.mesh().triangle_area_mm2(k) * dphi[k];
-      sum += w * reconstructor.mesh().triangle_centroid_mm(k).head<2>();
+      sum += w * reconstructor.mesh().triangle_centroid_mm(k);
       weight += w;
     }
   if (!(weight > 0)) return Vector3::Constant(std::nan(""));
-  return surface_point_mm(reconstructor.surface(), sum / weight);
+  const Shape& surface = reconstructor.surface();
+  return surface_point_mm(surface, surface_chart_mm(surface, sum / weight));
 }
 
 LocalisationResult localisation_errors(Reconstructor& reconstructor, const SimulatedRun& run,

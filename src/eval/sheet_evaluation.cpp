@@ -40,6 +40,9 @@ std::vector<EvalCase> standard_eval_cases(const std::string& dir) {
       // margin of 5 mm seen from +z is 7.1 mm along it); the paper's 3.49 mm on its 60 mm sheet is
       // 5.8 % of the size: 2.3 mm of the rim's 40 mm.
       {"dome, R 25 mm, a 20 mm", load_sensor(dir + "/dome25.json"), 4.0, 1.5, 4.0, "paper: 5.8 % = 2.3 mm", true},
+      // A sleeve: presses of r = 4 mm at least 5 mm from either rim along the surface, all the
+      // way round (across the chart's seam); 5.8 % of its 60 mm length is 3.5 mm.
+      {"sleeve, R 15 mm, L 60 mm", load_sensor(dir + "/sleeve.json"), 6.0, 2.0, 4.0, "paper: 5.8 % = 3.5 mm", true},
   };
 }
 

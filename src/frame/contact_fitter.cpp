@@ -7,6 +7,7 @@
 #include <ceres/ceres.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/sheet_chart.hpp"
 #include "emit/sensor/adc.hpp"
 #include "emit/sensor/surface.hpp"
 
@@ -89,8 +90,7 @@ FitOptions resolved_fit_options(FitOptions o, const Sensor& sensor, const Mesh& 
   o.validate();
   if (o.edge_mm == 0) o.edge_mm = sensor.mesh.element_size_mm / 4;
   if (o.prior_radius_mm == 0) o.prior_radius_mm = 2 * sensor.mesh.element_size_mm;
-  const Vector2 extent =
-      mesh.nodes_mm.leftCols<2>().colwise().maxCoeff() - mesh.nodes_mm.leftCols<2>().colwise().minCoeff();
+  const Vector2 extent = chart_box(mesh, sensor.shape).sizes();
   if (extent.minCoeff() <= 2 * sensor.mesh.element_size_mm)
     throw InvalidInput("fit: the sheet is too small for its mesh");
   return o;
@@ -105,8 +105,8 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
       integrator_(mesh, options_.edge_mm, 3, sensor.shape),
       predictor_(mesh, green),
       noise_V_(reading_noise_V(sensor.adc)),
-      lower_mm_(mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose()),
-      upper_mm_(mesh.nodes_mm.leftCols<2>().colwise().maxCoeff().transpose()) {
+      lower_mm_(chart_box(mesh, sensor.shape).min()),
+      upper_mm_(chart_box(mesh, sensor.shape).max()) {
   predictor_.set_series_resistance(sensor.series_resistance_ohm);
   build_atoms();
 }
@@ -125,7 +125,7 @@ void ContactFitter::build_atoms() {
     // NOLINTNEXTLINE(clang-analyzer-security.FloatLoopCounter)
     for (double x = lower_mm_.x() + spacing / 2; x < upper_mm_.x(); x += spacing) {
       const Disc d{x, y, options_.prior_radius_mm, g};
-      if (!mesh_.contains_xy(Vector2(x, y))) continue;
+      if (!chart_on_sheet(mesh_, sensor_.shape, Vector2(x, y))) continue;
       Vector column;
       misfit({d}, Vector::Zero(measurements_.size()), column);
       columns.emplace_back(column / noise_V_);
@@ -227,7 +227,8 @@ double ContactFitter::separation_mm(const Disc& a, const Disc& b) const {
 
 Disc ContactFitter::clamp_seed(Disc seed) const {
   seed.x_mm = std::clamp(seed.x_mm, lower_mm_.x(), upper_mm_.x());
-  seed.y_mm = std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
+  seed.y_mm = is_sleeve(sensor_.shape) ? wrapped_chart_mm(sensor_.shape, {seed.x_mm, seed.y_mm}).y()
+                                       : std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
   seed.radius_mm = options_.prior_radius_mm;
   const double g = sensor_.contact.conductance_S_per_mm2(0.1);
   seed.conductance_S_per_mm2 =
@@ -240,7 +241,7 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
 /// one large press, modelled by two (the held radius is smaller than most presses).
 bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
-    if (!mesh_.contains_xy(Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
+    if (!chart_on_sheet(mesh_, sensor_.shape, Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
       if (separation_mm(discs[i], discs[j]) < plausible_separation_mm()) return false;
   }
@@ -299,8 +300,10 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   for (double* p : blocks) {
     problem.SetParameterLowerBound(p, 0, lower_mm_.x());
     problem.SetParameterUpperBound(p, 0, upper_mm_.x());
-    problem.SetParameterLowerBound(p, 1, lower_mm_.y());
-    problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+    if (!is_sleeve(sensor_.shape)) {  // around a sleeve the chart is periodic: no bound
+      problem.SetParameterLowerBound(p, 1, lower_mm_.y());
+      problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+    }
     // g within six decades of the contact law's at 0.1 N/mm²: keeps exp(log g) finite.
     const double log_g = std::log(sensor_.contact.conductance_S_per_mm2(0.1));
     problem.SetParameterLowerBound(p, 3, log_g - 14);
@@ -317,7 +320,10 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   ceres::Solve(solver, &problem, &summary);
   result_.evaluations += summary.num_residual_evaluations;
 
-  for (int i = 0; i < k; ++i) discs[i] = to_disc(parameters[i].data());
+  for (int i = 0; i < k; ++i) {
+    discs[i] = to_disc(parameters[i].data());
+    discs[i].y_mm = wrapped_chart_mm(sensor_.shape, {discs[i].x_mm, discs[i].y_mm}).y();
+  }
   return 2 * summary.final_cost * noise_V_ * noise_V_;
 }
 

@@ -69,7 +69,7 @@ void build_adjacency(const Mesh& mesh, std::vector<int>& offsets, std::vector<in
 /// Running sums over one contact's elements.
 class Accumulator {
  public:
-  void add(double area, double pressure, double weight, double floor, const Vector2& centroid) {
+  void add(double area, double pressure, double weight, double floor, const Vector3& centroid) {
     significant_ = significant_ || weight > floor;
     area_ += area;
     force_ += pressure * area;
@@ -85,9 +85,8 @@ class Accumulator {
 
   Contact contact() const {
     Contact c;
-    const Vector2 centroid = this->centroid();
-    c.x_mm = centroid.x();
-    c.y_mm = centroid.y();
+    const Vector3 centroid = this->centroid();
+    c.x_mm = centroid.x(), c.y_mm = centroid.y(), c.z_mm = centroid.z();
     c.area_mm2 = area_;
     c.force_N = force_;
     c.pressure_N_per_mm2 = area_ > 0 ? force_ / area_ : 0.0;
@@ -99,15 +98,15 @@ class Accumulator {
  private:
   /// Weighted as documented; falling back to the area-weighted centroid when the weights are all
   /// 0, and to the plain mean only for degenerate (zero-area) elements, so it is never 0/0.
-  Vector2 centroid() const {
+  Vector3 centroid() const {
     if (weight_area_ > 0) return weighted_centroid_sum_ / weight_area_;
     if (area_ > 0) return area_centroid_sum_ / area_;
     return centroid_sum_ / count_;
   }
 
   double area_ = 0, force_ = 0, peak_ = -std::numeric_limits<double>::infinity(), weight_area_ = 0;
-  Vector2 weighted_centroid_sum_ = Vector2::Zero(), area_centroid_sum_ = Vector2::Zero(),
-          centroid_sum_ = Vector2::Zero();
+  Vector3 weighted_centroid_sum_ = Vector3::Zero(), area_centroid_sum_ = Vector3::Zero(),
+          centroid_sum_ = Vector3::Zero();
   int count_ = 0;
   bool significant_ = false;
 };
@@ -118,7 +117,7 @@ struct FloodFill {
   const int* offsets;
   const int* neighbours;
   const double* areas_mm2;
-  const Vector2* centroids_mm;
+  const Vector3* centroids_mm;
   const double* pressure;
   const double* weight;
   const double* floor;
@@ -167,11 +166,14 @@ double force_key(const Contact& c) {
 
 }  // namespace
 
-void place_on_surface(const Shape& surface, Contact& contact) {
-  const Vector2 xy(contact.x_mm, contact.y_mm);
-  const Vector3 normal = surface_normal(surface, xy);
-  contact.z_mm = surface_point_mm(surface, xy).z();
+void place_on_surface(const Shape& surface, const Vector2& chart_mm, Contact& contact) {
+  const Vector3 point = surface_point_mm(surface, chart_mm), normal = surface_normal(surface, chart_mm);
+  contact.x_mm = point.x(), contact.y_mm = point.y(), contact.z_mm = point.z();
   contact.nx = normal.x(), contact.ny = normal.y(), contact.nz = normal.z();
+}
+
+Vector2 chart_of(const Shape& surface, const Contact& contact) {
+  return surface_chart_mm(surface, Vector3(contact.x_mm, contact.y_mm, contact.z_mm));
 }
 
 ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::move(surface)) {
@@ -179,9 +181,11 @@ ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::mo
   const auto count = static_cast<std::size_t>(mesh.triangle_count());
   areas_mm2_.resize(count);
   centroids_mm_.resize(count);
+  charts_mm_.resize(count);
   for (std::size_t t = 0; t < count; ++t) {
     areas_mm2_[t] = mesh.triangle_area_mm2(static_cast<Index>(t));
-    centroids_mm_[t] = mesh.triangle_centroid_mm(static_cast<Index>(t)).head<2>();
+    centroids_mm_[t] = mesh.triangle_centroid_mm(static_cast<Index>(t));
+    charts_mm_[t] = surface_chart_mm(surface_, centroids_mm_[t]);
   }
   // Worst cases, so find() never grows a vector: every element on the stack, every element its own contact.
   pending_.resize(count);
@@ -211,7 +215,7 @@ const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>&
     if (!pending_[seed]) continue;
     Contact contact;
     if (fill.grow(seed, contact) && contact.area_mm2 >= min_area_mm2) {
-      place_on_surface(surface_, contact);
+      place_on_surface(surface_, chart_of(surface_, contact), contact);
       contacts_.push_back(contact);  // within the reserved capacity
     }
   }
@@ -234,8 +238,8 @@ const std::vector<Vector2>& ContactFinder::peaks(const Vector& image, double min
   peaks_.clear();
   for (int t : peak_elements_) {
     bool apart = true;
-    for (const Vector2& p : peaks_) apart = apart && (p - centroids_mm_[t]).norm() >= min_separation_mm;
-    if (apart) peaks_.push_back(centroids_mm_[t]);
+    for (const Vector2& p : peaks_) apart = apart && (p - charts_mm_[t]).norm() >= min_separation_mm;
+    if (apart) peaks_.push_back(charts_mm_[t]);
   }
   return peaks_;
 }

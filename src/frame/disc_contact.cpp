@@ -111,8 +111,9 @@ void DiscContactIntegrator::bucket_triangles() {
 }
 
 void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool derivatives) const {
-  const Vector2 center(disc.x_mm, disc.y_mm);
-  const Centre centre{surface_point_mm(surface_, center), surface_tangents(surface_, center)};
+  const Vector2 chart(disc.x_mm, disc.y_mm);
+  const Centre centre{surface_point_mm(surface_, chart), surface_tangents(surface_, chart)};
+  const Vector2 center = centre.point_mm.head<2>();  // the buckets are seen from +z
   const double r = disc.radius_mm, h = edge_mm_;
   const double reach = r + h + max_reach_mm_;  // no centroid farther than this can be touched
   const auto cell = [&](double v, double origin, int count) {

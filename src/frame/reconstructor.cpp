@@ -87,10 +87,15 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
   // into one region, the image still has two peaks). Raw peaks alone make poor first seeds: the
   // linear image's maximum often sits by an electrode, far from the press.
   seeds_.clear();
-  for (const Contact& c : linear) seeds_.push_back({c.x_mm, c.y_mm, 0, 0});
+  for (const Contact& c : linear) {
+    const Vector2 chart = chart_of(model_.surface, c);
+    seeds_.push_back({chart.x(), chart.y(), 0, 0});
+  }
+  const std::size_t linear_seeds = seeds_.size();
   for (const Vector2& p : finder_.peaks(dphi_, 0.25 * dphi_.maxCoeff(), 8.0)) {
     bool apart = true;
-    for (const Contact& c : linear) apart = apart && std::hypot(p.x() - c.x_mm, p.y() - c.y_mm) >= 8.0;
+    for (std::size_t i = 0; i < linear_seeds; ++i)
+      apart = apart && std::hypot(p.x() - seeds_[i].x_mm, p.y() - seeds_[i].y_mm) >= 8.0;
     if (apart) seeds_.push_back({p.x(), p.y(), 0, 0});
   }
   // One more contact is proposed where the linear image of what the fit leaves unexplained peaks.
@@ -98,7 +103,7 @@ const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contac
     model_.op.apply(misfit, residual_image_, operator_scratch_);  // the image of −misfit is its negative
     Index peak;
     if (residual_image_.minCoeff(&peak) >= 0) return false;
-    seed = {finder_.centroid_mm(peak).x(), finder_.centroid_mm(peak).y(), 0, 0};
+    seed = {finder_.centroid_chart_mm(peak).x(), finder_.centroid_chart_mm(peak).y(), 0, 0};
     return true;
   };
   fitter_result_ = fitter_->fit(dV_, seeds_, residual_peak);
@@ -112,8 +117,7 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
   pressure_.setZero();  // the picture: each fitted disc at its pressure
   for (const FittedContact& f : fitter_result_.contacts) {
     Contact c;
-    c.x_mm = f.disc.x_mm, c.y_mm = f.disc.y_mm;
-    place_on_surface(model_.surface, c);
+    place_on_surface(model_.surface, {f.disc.x_mm, f.disc.y_mm}, c);
     const double radius_mm = indenter_radius_mm_ > 0 ? indenter_radius_mm_ : f.disc.radius_mm;
     c.area_mm2 = std::numbers::pi * radius_mm * radius_mm;  // see FitCalibration::indenter_radius_mm
     c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 = f.pressure_N_per_mm2;
@@ -131,7 +135,7 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
     fitted_.push_back(c);
     previous_discs_.push_back(f.disc);
     for (Index k = 0; k < pressure_.size(); ++k)
-      if ((finder_.centroid_mm(k) - Vector2(c.x_mm, c.y_mm)).norm() <= radius_mm)
+      if ((finder_.centroid_mm(k) - Vector3(c.x_mm, c.y_mm, c.z_mm)).norm() <= radius_mm)
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
   }
   return fitted_;

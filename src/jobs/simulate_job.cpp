@@ -75,7 +75,8 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
       Press& press = report.presses[f][i];
       validate_press(sensor, press, "frame " + std::to_string(f) + ", press " + std::to_string(i));
       // Where the twin centres it: on a curved sheet the truth file says so (a z_mm column).
-      press.z_mm = surface_point_mm(sensor.shape, Vector2(press.x_mm, press.y_mm)).z();
+      const Vector3 point = surface_point_mm(sensor.shape, press_chart_mm(sensor.shape, press));
+      press.x_mm = point.x(), press.y_mm = point.y(), press.z_mm = point.z();
     }
   report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv") : job.truth_path;
   if (job.realistic) {

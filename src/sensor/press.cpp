@@ -8,6 +8,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -52,15 +53,19 @@ Press parse_press(const std::string& text) {
   return Press{values[0], values[1], values[2], values[3]};
 }
 
+Vector2 press_chart_mm(const Shape& shape, const Press& press) {
+  return surface_chart_mm(shape, Vector3(press.x_mm, press.y_mm, press.z_mm));
+}
+
 void validate_press(const Sensor& sensor, const Press& press, const std::string& where) {
   char position[96];
   std::snprintf(position, sizeof position, "(%g, %g) mm", press.x_mm, press.y_mm);
-  if (!std::isfinite(press.x_mm) || !std::isfinite(press.y_mm) || !std::isfinite(press.radius_mm) ||
-      !std::isfinite(press.force_N))
+  if (!std::isfinite(press.x_mm) || !std::isfinite(press.y_mm) || !std::isfinite(press.z_mm) ||
+      !std::isfinite(press.radius_mm) || !std::isfinite(press.force_N))
     throw InvalidInput(where + ": values must be finite numbers");
   if (!(press.radius_mm > 0)) throw InvalidInput(where + ": radius must be positive");
   if (press.force_N < 0) throw InvalidInput(where + ": force must not be negative");
-  if (sensor.border && !sensor.border->contains(Vector2(press.x_mm, press.y_mm)))
+  if (sensor.border && !sensor.border->contains(press_chart_mm(sensor.shape, press)))
     throw InvalidInput(where + ": centre " + position + " is off the sheet");
 }
 

@@ -41,15 +41,16 @@ Vector3 surface_point_mm(const Shape& shape, const Vector2& c) {
   }
 }
 
+Vector2 wrapped_chart_mm(const Shape& shape, const Vector2& c) {
+  if (!is_sleeve(shape)) return c;
+  const double round = 2 * std::numbers::pi * shape.radius_mm;
+  return {c.x(), c.y() - round * std::floor(c.y() / round)};
+}
+
 Vector2 surface_chart_mm(const Shape& shape, const Vector3& p) {
   if (shape.kind != ShapeKind::cylinder) return p.head<2>();
-  const double R = shape.radius_mm;
-  double v = R * (std::atan2(p.y(), p.z()) + angle_rad(shape) / 2);
-  if (is_sleeve(shape)) {
-    const double round = 2 * std::numbers::pi * R;
-    v -= round * std::floor(v / round);
-  }
-  return {p.x() + shape.length_mm / 2, v};
+  const double v = shape.radius_mm * (std::atan2(p.y(), p.z()) + angle_rad(shape) / 2);
+  return wrapped_chart_mm(shape, {p.x() + shape.length_mm / 2, v});
 }
 
 Vector3 surface_normal(const Shape& shape, const Vector2& c) {

@@ -25,7 +25,10 @@ Eigen::AlignedBox2d bounding_box(const Border& border) {
   return box;
 }
 
-bool admissible(const Border& border, const Vector2& p, double margin_mm) {
+/// Whether chart point p is on the sheet at least margin_mm from its border. A sleeve's chart
+/// rectangle has the seam as two of its sides; its border is the two rims only.
+bool admissible(const Shape& shape, const Border& border, const Vector2& p, double margin_mm) {
+  if (is_sleeve(shape)) return p.x() >= margin_mm && p.x() <= shape.length_mm - margin_mm;
   return border.contains(p) && border.distance_to_border_mm(p) >= margin_mm;
 }
 
@@ -46,13 +49,14 @@ class Sampler {
     return style_.min_force_N == style_.max_force_N ? style_.min_force_N
                                                     : uniform(style_.min_force_N, style_.max_force_N);
   }
-  /// A press at (x, y), centred on the sheet's surface there (its z: sensor/surface.hpp).
+  /// A press centred on the sheet's point named by chart point p (sensor/surface.hpp).
   Press press_at(const Vector2& p) {
-    Press press{p.x(), p.y(), style_.radius_mm, force(), style_.profile};
-    press.z_mm = surface_point_mm(surface_, p).z();
+    const Vector3 point = surface_point_mm(surface_, p);
+    Press press{point.x(), point.y(), style_.radius_mm, force(), style_.profile};
+    press.z_mm = point.z();
     return press;
   }
-  bool admissible(const Vector2& p) const { return emit::admissible(border_, p, style_.margin_mm); }
+  bool admissible(const Vector2& p) const { return emit::admissible(surface_, border_, p, style_.margin_mm); }
   Vector2 random_point() {
     for (int attempt = 0; attempt < 100000; ++attempt) {
       Vector2 p(uniform(box_.min().x(), box_.max().x()), uniform(box_.min().y(), box_.max().y()));

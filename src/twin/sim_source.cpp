@@ -6,6 +6,8 @@
 #include <random>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/sheet_chart.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -27,6 +29,7 @@ double parse_number(const std::string& text, const std::string& spec) {
 }
 
 bool admissible(const Sensor& sensor, const Mesh& mesh, const Vector2& p, double margin_mm) {
+  if (is_sleeve(sensor.shape)) return p.x() >= margin_mm && p.x() <= sensor.shape.length_mm - margin_mm;
   if (sensor.border) return sensor.border->contains(p) && sensor.border->distance_to_border_mm(p) >= margin_mm;
   return mesh.contains_xy(p);
 }
@@ -66,12 +69,18 @@ SimSource::SimSource(const Sensor& sensor, const SimScript& script, const Source
   if (!(options.frames_per_s >= 0) || !std::isfinite(options.frames_per_s))
     throw InvalidInput("source: frames per second must be 0 (unpaced) or positive");
   if (options.untouched_frames < 0) throw InvalidInput("source: untouched frames must not be negative");
-  const auto& nodes = twin_.mesh().nodes_mm;
-  const Vector2 low(nodes.col(0).minCoeff(), nodes.col(1).minCoeff());
-  const Vector2 high(nodes.col(0).maxCoeff(), nodes.col(1).maxCoeff());
-  center_mm_ = (low + high) / 2;
-  half_extent_mm_ = (high - low) / 2;
+  // The scripts move over the sheet's chart (sensor/surface.hpp).
+  const Eigen::AlignedBox2d box = chart_box(twin_.mesh(), sensor_.shape);
+  center_mm_ = box.center();
+  half_extent_mm_ = box.sizes() / 2;
   if (script_.kind == SimScript::Kind::fixed) validate_press(sensor_, script_.fixed, "source sim:fixed");
+}
+
+Press SimSource::press_at(const Vector2& chart_mm, double force_N) const {
+  const Vector3 point = surface_point_mm(sensor_.shape, chart_mm);
+  Press press{point.x(), point.y(), script_.radius_mm, force_N};
+  press.z_mm = point.z();
+  return press;
 }
 
 SimSource::~SimSource() {
@@ -100,8 +109,7 @@ std::vector<Press> SimSource::presses_of(std::uint64_t sequence) const {
       const double swing = 0.5 - 0.5 * std::cos(2 * std::numbers::pi * t / force_swing_period_s);
       const Vector2 p =
           center_mm_ + Vector2(0.55 * half_extent_mm_.x() * std::sin(w), 0.4 * half_extent_mm_.y() * std::sin(2 * w));
-      return {Press{p.x(), p.y(), script_.radius_mm,
-                    script_.min_force_N + swing * (script_.max_force_N - script_.min_force_N)}};
+      return {press_at(p, script_.min_force_N + swing * (script_.max_force_N - script_.min_force_N))};
     }
     case SimScript::Kind::random: {
       const double period = random_pressed_s + random_lifted_s;
@@ -114,8 +122,7 @@ std::vector<Press> SimSource::presses_of(std::uint64_t sequence) const {
         const Vector2 p =
             center_mm_ + Vector2((2 * u(rng) - 1) * half_extent_mm_.x(), (2 * u(rng) - 1) * half_extent_mm_.y());
         if (admissible(sensor_, twin_.mesh(), p, margin_mm))
-          return {Press{p.x(), p.y(), script_.radius_mm,
-                        script_.min_force_N + u(rng) * (script_.max_force_N - script_.min_force_N)}};
+          return {press_at(p, script_.min_force_N + u(rng) * (script_.max_force_N - script_.min_force_N))};
       }
       return {};
     }

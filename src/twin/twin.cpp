@@ -61,10 +61,11 @@ ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
     const std::string where = "press " + std::to_string(i);
     validate_press(sensor_, presses[i], where);
     // A mesh-file sheet has no analytic border: ask the mesh.
-    if (!sensor_.border && !mesh().contains_xy(Vector2(presses[i].x_mm, presses[i].y_mm)))
-      throw InvalidInput(where + ": centre is off the sheet");
-    // On a curved sheet the press is centred on the surface above (x, y).
-    on_sheet[i].z_mm = surface_point_mm(sensor_.shape, Vector2(presses[i].x_mm, presses[i].y_mm)).z();
+    const Vector2 chart = press_chart_mm(sensor_.shape, presses[i]);
+    if (!sensor_.border && !mesh().contains_xy(chart)) throw InvalidInput(where + ": centre is off the sheet");
+    // On a curved sheet the press is centred on the surface, at the point its chart point names.
+    const Vector3 point = surface_point_mm(sensor_.shape, chart);
+    on_sheet[i].x_mm = point.x(), on_sheet[i].y_mm = point.y(), on_sheet[i].z_mm = point.z();
   }
   return press_contact_load(mesh(), on_sheet, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
 }

@@ -18,10 +18,12 @@
 namespace emit {
 namespace {
 
-TEST(SheetEvaluation, StandardCasesAreTheFiveSheets) {
+TEST(SheetEvaluation, StandardCasesAreTheSixSheets) {
   const auto cases = standard_eval_cases(test::source_path("examples/sensors"));
-  ASSERT_EQ(cases.size(), 5u);
+  ASSERT_EQ(cases.size(), 6u);
   EXPECT_EQ(cases[4].sensor.shape.kind, ShapeKind::spherical_cap);
+  EXPECT_EQ(cases[5].sensor.shape.kind, ShapeKind::cylinder);
+  EXPECT_EQ(cases[5].sensor.shape.angle_deg, 360.0);
   EXPECT_EQ(cases[1].name, "30 x 30 mm sheet");
   EXPECT_EQ(cases[1].sensor.electrode_count(), 16);
   EXPECT_EQ(cases[3].sensor.electrode_count(), 32);

@@ -41,5 +41,55 @@ TEST(Surface, FlatSheetIsThePlane) {
   EXPECT_EQ(surface_area_mm2(s), 1800.0);
 }
 
+Shape cylinder(double radius_mm, double length_mm, double angle_deg) {
+  Shape s;
+  s.kind = ShapeKind::cylinder;
+  s.radius_mm = radius_mm, s.length_mm = length_mm, s.angle_deg = angle_deg;
+  return s;
+}
+
+// A patch R = 20, L = 60, α = 90°: the chart is [0, 60] × [0, 10π]. Its middle (30, 5π) is the
+// top (0, 0, 20); v = 0 is θ = −45°, the point (−30, −20/√2, 20/√2) at u = 0. The area is RαL.
+TEST(Surface, CylinderPatchIsTheUnrolledRectangle) {
+  const Shape s = cylinder(20, 60, 90);
+  const double pi = std::numbers::pi;
+  EXPECT_TRUE(is_curved(s));
+  EXPECT_FALSE(is_sleeve(s));
+  EXPECT_NEAR((surface_point_mm(s, {30, 5 * pi}) - Vector3(0, 0, 20)).norm(), 0, 1e-12);
+  EXPECT_NEAR((surface_point_mm(s, {0, 0}) - Vector3(-30, -20 / std::sqrt(2.0), 20 / std::sqrt(2.0))).norm(), 0, 1e-12);
+  EXPECT_NEAR((surface_normal(s, {0, 0}) - Vector3(0, -1, 1) / std::sqrt(2.0)).norm(), 0, 1e-12);
+  EXPECT_NEAR(surface_area_mm2(s), 20 * pi / 2 * 60, 1e-9);
+  // The inverse, and the tangents against central differences (the map is smooth: h² ≈ 1e-8).
+  for (const Vector2 c : {Vector2(3, 1), Vector2(30, 5 * pi), Vector2(57, 30)}) {
+    EXPECT_NEAR((surface_chart_mm(s, surface_point_mm(s, c)) - c).norm(), 0, 1e-12);
+    const double h = 1e-4;
+    for (int k = 0; k < 2; ++k) {
+      const Vector2 step = h * Vector2::Unit(k);
+      const Vector3 difference = (surface_point_mm(s, c + step) - surface_point_mm(s, c - step)) / (2 * h);
+      EXPECT_NEAR((surface_tangents(s, c).col(k) - difference).norm(), 0, 1e-7);
+    }
+    // An isometry: orthonormal tangents, and the normal is their cross product (outward).
+    const auto t = surface_tangents(s, c);
+    EXPECT_NEAR((t.transpose() * t - Eigen::Matrix2d::Identity()).norm(), 0, 1e-12);
+    EXPECT_NEAR((t.col(0).cross(t.col(1)) - surface_normal(s, c)).norm(), 0, 1e-12);
+  }
+  // A point off the sheet goes to the nearest one along the radius.
+  EXPECT_NEAR((surface_chart_mm(s, Vector3(0, 0, 35)) - Vector2(30, 5 * pi)).norm(), 0, 1e-12);
+}
+
+// A sleeve's chart is periodic: v and v + 2πR are the same point, and the inverse gives v in [0, 2πR).
+TEST(Surface, SleeveChartIsPeriodic) {
+  const Shape s = cylinder(15, 60, 360);
+  const double round = 2 * std::numbers::pi * 15;
+  EXPECT_TRUE(is_sleeve(s));
+  EXPECT_NEAR((surface_point_mm(s, {10, 1}) - surface_point_mm(s, {10, 1 + round})).norm(), 0, 1e-12);
+  EXPECT_NEAR((wrapped_chart_mm(s, {10, -1}) - Vector2(10, round - 1)).norm(), 0, 1e-12);
+  // v = 0 is θ = −180°: the bottom (0, 0, −15); the seam's other side maps back near 2πR.
+  EXPECT_NEAR((surface_point_mm(s, {30, 0}) - Vector3(0, 0, -15)).norm(), 0, 1e-12);
+  const Vector2 c = surface_chart_mm(s, surface_point_mm(s, {30, round - 0.5}));
+  EXPECT_NEAR((c - Vector2(30, round - 0.5)).norm(), 0, 1e-12);
+  EXPECT_NEAR(surface_area_mm2(s), round * 60, 1e-9);
+}
+
 }  // namespace
 }  // namespace emit

@@ -17,15 +17,17 @@
 namespace emit {
 
 struct Contact {
-  double x_mm = 0, y_mm = 0;  ///< centroid, weighted by area × weight (see find())
-  /// The sheet's point above (x, y) and its unit outward normal (sensor/surface.hpp): on a flat
-  /// sheet z = 0 and the normal is +z; on a curved one the contact is a point of the surface.
-  double z_mm = 0, nx = 0, ny = 0, nz = 1;
+  /// The contact's point of the sheet and the sheet's unit outward normal there
+  /// (sensor/surface.hpp): the point the centroid (weighted by area × weight, see find()) names.
+  /// On a flat sheet z = 0 and the normal is +z; on a curved one the point is on the surface.
+  double x_mm = 0, y_mm = 0, z_mm = 0, nx = 0, ny = 0, nz = 1;
   double area_mm2 = 0;                 ///< Σ A_k over the contact's elements
   double pressure_N_per_mm2 = 0;       ///< area-weighted mean pressure
   double peak_pressure_N_per_mm2 = 0;  ///< largest element pressure
   double force_N = 0;                  ///< Σ P_k A_k
   /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
+  /// The position's are along the chart's two axes (sensor/surface.hpp): x and y on a flat sheet
+  /// and a cap, along the axis and around it on a cylinder.
   double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;
   /// The force's 1σ: the fit's, and the indenter's unknown size (contact fitting reports the
   /// calibration indenter's area; frame/reconstructor.hpp says how much that leaves open).
@@ -33,12 +35,17 @@ struct Contact {
   int element_count = 0;
 };
 
-/// Sets the contact's z and normal to the sheet's at its (x, y) (sensor/surface.hpp).
-void place_on_surface(const Shape& surface, Contact& contact);
+/// Puts the contact at the sheet's point named by chart point c, with the sheet's normal there
+/// (sensor/surface.hpp).
+void place_on_surface(const Shape& surface, const Vector2& chart_mm, Contact& contact);
+
+/// The chart point of the contact's position (sensor/surface.hpp): its (x, y) unless on a cylinder.
+Vector2 chart_of(const Shape& surface, const Contact& contact);
 
 class ContactFinder {
  public:
-  /// \param surface  the sheet's shape: each contact's (x, y) is placed on it (place_on_surface).
+  /// \param surface  the sheet's shape: each contact's centroid (in 3D) is placed on it, at the
+  ///                 point whose chart point is the centroid's (surface_chart_mm).
   explicit ContactFinder(const Mesh& mesh, Shape surface = {});
 
   /// \param selected  #F flags, nonzero where the element is above threshold
@@ -56,18 +63,22 @@ class ContactFinder {
   /// The image's peaks: elements whose value is at least min_value and no smaller than any edge
   /// neighbour's, strongest first, each at least min_separation_mm from every stronger one kept.
   /// Where a 50 % threshold merges two presses into one region, the image still has two peaks.
-  /// \return the peaks' centroids, valid until the next call.
+  /// \return the peaks' centroids' chart points, valid until the next call.
   const std::vector<Vector2>& peaks(const Vector& image, double min_value, double min_separation_mm);
 
   Index element_count() const { return static_cast<Index>(areas_mm2_.size()); }
-  const Vector2& centroid_mm(Index element) const { return centroids_mm_[static_cast<std::size_t>(element)]; }
+  /// The chart point (sensor/surface.hpp) of an element's centroid.
+  const Vector2& centroid_chart_mm(Index element) const { return charts_mm_[static_cast<std::size_t>(element)]; }
+  /// An element's centroid in 3D.
+  const Vector3& centroid_mm(Index element) const { return centroids_mm_[static_cast<std::size_t>(element)]; }
 
  private:
   Shape surface_;
   std::vector<int> neighbour_offsets_, neighbours_;  ///< CSR edge adjacency of triangles
   std::vector<double> areas_mm2_;
   Vector no_floor_;  ///< −∞ everywhere: the floor when none is given
-  std::vector<Vector2> centroids_mm_;
+  std::vector<Vector3> centroids_mm_;
+  std::vector<Vector2> charts_mm_;     ///< the centroids' chart points
   std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
   std::vector<int> stack_;             ///< scratch
   std::vector<Contact> contacts_;      ///< output, capacity #F

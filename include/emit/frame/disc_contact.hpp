@@ -24,6 +24,8 @@
 namespace emit {
 
 struct Disc {
+  /// The centre's chart point (sensor/surface.hpp): (x, y) on a flat sheet and a cap; along the
+  /// axis and around it on a cylinder.
   double x_mm = 0, y_mm = 0, radius_mm = 0;
   double conductance_S_per_mm2 = 0;
 };
@@ -41,7 +43,7 @@ class DiscContactIntegrator {
  public:
   /// \param edge_mm  half-width of the smoothed rim; \param levels  subdivision depth of the
   /// quadrature on triangles the rim crosses (4^levels pieces, one point each); \param surface
-  /// the sheet's shape, for where the disc's centre (x, y) is in 3D (flat by default).
+  /// the sheet's shape, for where the disc's centre (its chart point) is in 3D (flat by default).
   DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels = 3, Shape surface = {});
 
   double edge_mm() const { return edge_mm_; }

@@ -13,12 +13,13 @@ namespace emit {
 enum class PressProfile { flat, spherical };
 
 struct Press {
+  /// The centre. On a curved sheet it is the point of the surface nearest (x, y, z): on a cap the
+  /// one above (x, y) (z is set from it), on a cylinder the one along the radius through (x, y, z)
+  /// (press_chart_mm). On a flat sheet z = 0.
   double x_mm = 0, y_mm = 0;
   double radius_mm = 5;  ///< the contact's radius (for spherical, Hertz's a)
   double force_N = 10;
   PressProfile profile = PressProfile::flat;
-  /// The centre's height: on a curved sheet the centre is the point of the surface above
-  /// (x, y) (the twin sets it, sensor/surface.hpp); 0 on a flat one.
   double z_mm = 0;
   /// The mean pressure over the disc, F/(π r²), whatever the profile.
   double pressure_N_per_mm2() const;
@@ -36,6 +37,9 @@ using PressSequence = std::vector<std::vector<Press>>;
 
 /// Parse "x,y,r,F" (mm, mm, mm, N). \throw InvalidInput naming the text.
 Press parse_press(const std::string& text);
+
+/// The chart point (sensor/surface.hpp) of the sheet's point where the press is centred.
+Vector2 press_chart_mm(const Shape& shape, const Press& press);
 
 /// \throw InvalidInput if a value is not finite, the radius is not positive, the force is
 /// negative, or the centre is off the sheet. `where` prefixes the message.

@@ -33,6 +33,9 @@ Vector3 surface_point_mm(const Shape& shape, const Vector2& chart_mm);
 /// cylinder, p's position along the axis and its angle about it (on a sleeve v in [0, 2πR)).
 Vector2 surface_chart_mm(const Shape& shape, const Vector3& point_mm);
 
+/// c with a sleeve's v taken into [0, 2πR) (the same point); c itself on any other sheet.
+Vector2 wrapped_chart_mm(const Shape& shape, const Vector2& chart_mm);
+
 /// The sheet's unit normal at chart point c, pointing away from the sphere's centre or the
 /// cylinder's axis (+z on a flat sheet).
 Vector3 surface_normal(const Shape& shape, const Vector2& chart_mm);

@@ -56,6 +56,8 @@ class SimSource : public FrameSource {
  private:
   void produce();
   double script_time_s(std::uint64_t sequence) const;
+  /// The script's press of this force at chart point p (sensor/surface.hpp).
+  Press press_at(const Vector2& chart_mm, double force_N) const;
 
   Sensor sensor_;
   SimScript script_;
