@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
 
 #include <gmsh.h>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/mesh/cylinder.hpp"
 #include "emit/mesh/flatness.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
@@ -68,20 +70,52 @@ const BorderPiece& piece_holding(const Border& border, double s_mm) {
   return pieces.front();
 }
 
+/// A sleeve's chart (sensor/surface.hpp) is the rectangle [0, L] × [0, 2πR] whose edges v = 0 and
+/// v = 2πR are one seam: the top edge's mesh is the bottom's moved by 2πR along v, so that
+/// wrap_onto_cylinder can merge their nodes. Its curves are the border's first and third pieces
+/// (Border::rectangle), each a single curve: a sleeve's electrodes lie on its rims
+/// (validate_sleeve_electrodes).
+void make_seam_periodic(const Sensor& sensor, const std::vector<int>& curve_tags,
+                        const std::vector<double>& curve_middle_s_mm) {
+  const auto& pieces = sensor.border->pieces();
+  const auto curve_on = [&](const BorderPiece& piece) {
+    std::vector<int> found;
+    for (std::size_t c = 0; c < curve_tags.size(); ++c)
+      if (curve_middle_s_mm[c] > piece.start_s_mm && curve_middle_s_mm[c] < piece.start_s_mm + piece.length_mm)
+        found.push_back(curve_tags[c]);
+    if (found.size() != 1) throw std::logic_error("make_seam_periodic: a seam edge is not one curve");
+    return found.front();
+  };
+  const double round_mm = pieces[1].length_mm;
+  // The affine map from the bottom edge (the master) to the top, row-major 4 × 4: a translation.
+  const std::vector<double> shift{1, 0, 0, 0, 0, 1, 0, round_mm, 0, 0, 1, 0, 0, 0, 0, 1};
+  gmsh::model::mesh::setPeriodic(1, {curve_on(pieces[2])}, {curve_on(pieces[0])}, shift);
+}
+
 /// Build the sheet's geometry in Gmsh's built-in kernel: points, curves (one per border stretch
 /// between breakpoints), one plane surface, and a physical curve group per electrode.
 void build_geometry(const Sensor& sensor, const MeshOptions& options, std::vector<int>& electrode_end_tags) {
   const Border& border = *sensor.border;
   const auto breakpoints = border_breakpoints(border, sensor.electrodes);
   const double h = options.element_size_mm;
+  const bool sleeve = is_sleeve(sensor.shape);
+  const double round_mm = 2 * std::numbers::pi * sensor.shape.radius_mm;
   std::vector<int> point_tags;
   for (const auto& b : breakpoints) {
     const Vector2 p = border.point_at(b.s_mm);
     point_tags.push_back(gmsh::model::geo::addPoint(p.x(), p.y(), 0, h));
-    if (b.electrode_end) electrode_end_tags.push_back(point_tags.back());
+    if (!b.electrode_end) continue;
+    electrode_end_tags.push_back(point_tags.back());
+    // On a sleeve an end near the seam is near the chart's other edge too: its twin there, a point
+    // on no curve, grades the mesh on that side as well (grade_into_electrode_ends reaches 4h).
+    if (sleeve && p.y() < 4 * h)
+      electrode_end_tags.push_back(gmsh::model::geo::addPoint(p.x(), p.y() + round_mm, 0, h));
+    if (sleeve && p.y() > round_mm - 4 * h)
+      electrode_end_tags.push_back(gmsh::model::geo::addPoint(p.x(), p.y() - round_mm, 0, h));
   }
   int center_tag = -1;
   std::vector<int> curve_tags;
+  std::vector<double> curve_middle_s_mm;
   std::vector<std::vector<int>> electrode_curves(sensor.electrodes.size());
   const std::size_t n = breakpoints.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -98,12 +132,14 @@ void build_geometry(const Sensor& sensor, const MeshOptions& options, std::vecto
       curve = gmsh::model::geo::addCircleArc(a, center_tag, b);
     }
     curve_tags.push_back(curve);
+    curve_middle_s_mm.push_back(0.5 * (s0 + s1));
     const int e = electrode_at(border, sensor.electrodes, 0.5 * (s0 + s1));
     if (e >= 0) electrode_curves[e].push_back(curve);
   }
   const int loop = gmsh::model::geo::addCurveLoop(curve_tags);
   const int surface = gmsh::model::geo::addPlaneSurface({loop});
   gmsh::model::geo::synchronize();
+  if (sleeve) make_seam_periodic(sensor, curve_tags, curve_middle_s_mm);
   for (std::size_t e = 0; e < electrode_curves.size(); ++e) {
     const int group = gmsh::model::addPhysicalGroup(1, electrode_curves[e]);
     gmsh::model::setPhysicalName(1, group, "electrode " + std::to_string(e));
@@ -209,6 +245,9 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   });
   Mesh mesh = gmsh_session.extract_mesh(context);
   if (cap) wrap_onto_spherical_cap(mesh, sensor.shape.sphere_radius_mm, sensor.shape.radius_mm);
+  // A cylinder's chart is meshed at the element size itself (the map keeps lengths): wrap it, and
+  // on a sleeve merge the seam's nodes, keeping the chart's numbering for locality.
+  if (sensor.shape.kind == ShapeKind::cylinder) wrap_onto_cylinder(mesh, sensor.shape);
   return mesh;
 }
 

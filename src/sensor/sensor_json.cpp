@@ -14,6 +14,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/electrode_layout.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -136,12 +137,21 @@ Shape parse_shape(const json& j, const std::string& base_dir) {
       ObjectReader::fail("shape.base_radius_mm", "must not exceed sphere_radius_mm (" +
                                                      number_text(shape.sphere_radius_mm) + "), got " +
                                                      number_text(shape.radius_mm));
+  } else if (type == "cylinder") {
+    shape.kind = ShapeKind::cylinder;
+    shape.radius_mm = r.number("radius_mm", Sign::positive);
+    shape.length_mm = r.number("length_mm", Sign::positive);
+    shape.angle_deg = r.number("angle_deg", Sign::any);
+    if (!(shape.angle_deg > 0 && shape.angle_deg <= 360))
+      ObjectReader::fail("shape.angle_deg",
+                         "must be in (0, 360] (360 is a sleeve), got " + number_text(shape.angle_deg));
   } else if (type == "mesh") {
     shape.kind = ShapeKind::mesh_file;
     const std::filesystem::path file = r.string("file");
     shape.mesh_path = (file.is_absolute() ? file : std::filesystem::path(base_dir) / file).string();
   } else {
-    ObjectReader::fail("shape.type", "must be rectangle, circle, polygon, spherical_cap or mesh, got \"" + type + "\"");
+    ObjectReader::fail("shape.type",
+                       "must be rectangle, circle, polygon, spherical_cap, cylinder or mesh, got \"" + type + "\"");
   }
   r.finish();
   return shape;
@@ -152,6 +162,8 @@ Border border_of(const Shape& shape) {
     case ShapeKind::rectangle: return Border::rectangle(shape.width_mm, shape.height_mm);
     case ShapeKind::circle: return Border::circle(shape.center_mm, shape.radius_mm);
     case ShapeKind::spherical_cap: return Border::circle(Vector2::Zero(), shape.radius_mm);
+    case ShapeKind::cylinder:  // the chart's rectangle (sensor/surface.hpp)
+      return Border::rectangle(shape.length_mm, shape.radius_mm * shape.angle_deg * std::numbers::pi / 180);
     case ShapeKind::polygon: try { return Border::polygon(shape.points_mm);
       } catch (const InvalidInput& e) {
         ObjectReader::fail("shape.points_mm", e.what());
@@ -159,6 +171,37 @@ Border border_of(const Shape& shape) {
     case ShapeKind::mesh_file: break;
   }
   throw std::logic_error("border_of: no analytic border for a mesh file");
+}
+
+/// A cylinder's electrode centre {x_mm, angle_deg} as its chart point (sensor/surface.hpp): it must
+/// be on a rim (x = ±L/2) or, on a patch, on a straight side (θ = ±α/2).
+Vector2 cylinder_electrode_chart_mm(ObjectReader& r, const std::string& where, const Shape& shape,
+                                    const Border& border) {
+  if (r.has("y_mm"))
+    ObjectReader::fail(where + ".y_mm",
+                       "a cylinder's electrodes are placed by x_mm (along its axis) and angle_deg; remove y_mm");
+  const double x_mm = r.number("x_mm", Sign::any);
+  const double angle_deg = r.number("angle_deg", Sign::any);
+  const double half_length = shape.length_mm / 2, half_angle = shape.angle_deg / 2;
+  const bool sleeve = is_sleeve(shape);
+  if (sleeve && !(angle_deg > -180 && angle_deg <= 180))
+    ObjectReader::fail(where + ".angle_deg", "must be in (-180, 180] on a sleeve, got " + number_text(angle_deg));
+  if (!sleeve && std::abs(angle_deg) > half_angle * (1 + 1e-12))
+    ObjectReader::fail(where + ".angle_deg", "must be within +-" + number_text(half_angle) + " (the patch's angle is " +
+                                                 number_text(shape.angle_deg) + "), got " + number_text(angle_deg));
+  if (std::abs(x_mm) > half_length * (1 + 1e-12))
+    ObjectReader::fail(where + ".x_mm",
+                       "must be within +-" + number_text(half_length) + " (half the length), got " + number_text(x_mm));
+  const double tolerance_mm = border_tolerance_mm(border);
+  const bool on_rim = std::abs(std::abs(x_mm) - half_length) <= tolerance_mm;
+  const bool on_side =
+      std::abs(half_angle - std::abs(angle_deg)) * std::numbers::pi / 180 * shape.radius_mm <= tolerance_mm;
+  // On a sleeve θ = 180 between the rims is on the seam: validate_sleeve_electrodes says so.
+  if (!on_rim && !on_side)
+    ObjectReader::fail(where, "(x_mm " + number_text(x_mm) + ", angle_deg " + number_text(angle_deg) +
+                                  ") is not on the border: give x_mm = +-" + number_text(half_length) + " (a rim)" +
+                                  (sleeve ? "" : " or angle_deg = +-" + number_text(half_angle) + " (a side)"));
+  return {x_mm + half_length, shape.radius_mm * (angle_deg + half_angle) * std::numbers::pi / 180};
 }
 
 std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const Border& border) {
@@ -177,7 +220,11 @@ std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const
     for (std::size_t i = 0; i < j.size(); ++i) {
       const std::string where = "electrodes[" + std::to_string(i) + "]";
       ObjectReader r(j[i], where);
-      if (r.has("angle_deg")) {  // on a round border: the angle from +x, counter-clockwise seen from +z
+      if (shape.kind == ShapeKind::cylinder) {
+        centers.push_back(cylinder_electrode_chart_mm(r, where, shape, border));
+      } else if (r.has("angle_deg")) {  // on a round border: the angle from +x, counter-clockwise seen from +z
+        if (!round && r.has("x_mm") && !r.has("y_mm"))
+          ObjectReader::fail(where + ".angle_deg", "with x_mm is for a cylinder; give x_mm, y_mm");
         if (!round)
           ObjectReader::fail(where + ".angle_deg", "is for a circle's or a spherical cap's rim; give x_mm, y_mm");
         if (r.has("x_mm") || r.has("y_mm")) ObjectReader::fail(where, "give angle_deg or x_mm, y_mm, not both");
@@ -192,9 +239,11 @@ std::vector<Electrode> parse_electrodes(const json& j, const Shape& shape, const
     electrodes = place_electrodes(border, centers, widths);
   } else {
     ObjectReader::fail("electrodes",
-                       "must be {count, width_mm} or a list of {x_mm, y_mm, width_mm} (or {angle_deg, width_mm})");
+                       "must be {count, width_mm} or a list of {x_mm, y_mm, width_mm} (or {angle_deg, width_mm}, or "
+                       "on a cylinder {x_mm, angle_deg, width_mm})");
   }
   validate_electrodes(border, electrodes);
+  validate_sleeve_electrodes(shape, border, electrodes);
   return electrodes;
 }
 
@@ -338,8 +387,22 @@ json sensor_to_json(const Sensor& sensor) {
                     {"sphere_radius_mm", s.sphere_radius_mm},
                     {"base_radius_mm", s.radius_mm}};
       break;
+    case ShapeKind::cylinder:
+      j["shape"] = {{"type", "cylinder"},
+                    {"radius_mm", s.radius_mm},
+                    {"length_mm", s.length_mm},
+                    {"angle_deg", s.angle_deg}};
+      break;
   }
-  if (s.kind != ShapeKind::mesh_file) {
+  if (s.kind == ShapeKind::cylinder) {
+    // A chart point is not a point in space: each electrode by its place along the axis and its angle.
+    json electrodes = json::array();
+    for (const auto& e : sensor.electrodes)
+      electrodes.push_back({{"x_mm", e.center_mm.x() - s.length_mm / 2},
+                            {"angle_deg", e.center_mm.y() / s.radius_mm * 180 / std::numbers::pi - s.angle_deg / 2},
+                            {"width_mm", e.width_mm}});
+    j["electrodes"] = electrodes;
+  } else if (s.kind != ShapeKind::mesh_file) {
     json electrodes = json::array();
     for (const auto& e : sensor.electrodes)
       electrodes.push_back({{"x_mm", e.center_mm.x()}, {"y_mm", e.center_mm.y()}, {"width_mm", e.width_mm}});

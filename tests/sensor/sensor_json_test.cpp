@@ -49,7 +49,8 @@ TEST(Sensor, ExplicitListsMatchTheDefaultRule) {
 }
 
 TEST(Sensor, AllExamplesLoad) {
-  for (const char* name : {"default60", "square30", "circle40", "square120_32", "hexagon", "dome25"}) {
+  for (const char* name :
+       {"default60", "square30", "circle40", "square120_32", "hexagon", "dome25", "sleeve", "cylinder_patch"}) {
     const Sensor s = load_sensor(test::source_path(std::string("examples/sensors/") + name + ".json"));
     EXPECT_GE(s.electrode_count(), 12) << name;
     EXPECT_TRUE(s.border.has_value()) << name;
@@ -99,6 +100,16 @@ json explicit_electrodes(const std::vector<std::array<double, 3>>& list) {
   return electrodes;
 }
 
+/// A sleeve (README "Sensor description"): R = 15 mm, L = 60 mm.
+json sleeve_shape() { return {{"type", "cylinder"}, {"radius_mm", 15}, {"length_mm", 60}, {"angle_deg", 360}}; }
+
+/// Electrodes of 3 mm on a cylinder, each {x_mm, angle_deg}.
+json sleeve_electrodes(const std::vector<std::array<double, 2>>& list) {
+  json electrodes = json::array();
+  for (const auto& [x, angle] : list) electrodes.push_back({{"x_mm", x}, {"angle_deg", angle}, {"width_mm", 3}});
+  return electrodes;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Errors, SensorValidation,
     ::testing::Values(
@@ -133,6 +144,76 @@ INSTANTIATE_TEST_SUITE_P(
                   j["electrodes"] = json::array({{{"angle_deg", 0}, {"x_mm", 40}, {"y_mm", 20}, {"width_mm", 3}}});
                 },
                 "electrodes[0]: give angle_deg or x_mm, y_mm, not both"},
+        BadCase{"x_mm with angle_deg off a cylinder",
+                [](json& j) {
+                  j["electrodes"] = json::array({{{"x_mm", 10}, {"angle_deg", 0}, {"width_mm", 3}}});
+                },
+                "electrodes[0].angle_deg: with x_mm is for a cylinder; give x_mm, y_mm"},
+        BadCase{"cylinder angle beyond a turn",
+                [](json& j) {
+                  j["shape"] = {{"type", "cylinder"}, {"radius_mm", 15}, {"length_mm", 60}, {"angle_deg", 400}};
+                },
+                "shape.angle_deg: must be in (0, 360] (360 is a sleeve), got 400"},
+        BadCase{"cylinder angle zero",
+                [](json& j) {
+                  j["shape"] = {{"type", "cylinder"}, {"radius_mm", 15}, {"length_mm", 60}, {"angle_deg", 0}};
+                },
+                "shape.angle_deg: must be in (0, 360] (360 is a sleeve), got 0"},
+        BadCase{"cylinder without a length",
+                [](json& j) {
+                  j["shape"] = {{"type", "cylinder"}, {"radius_mm", 15}, {"angle_deg", 90}};
+                },
+                "shape.length_mm: missing"},
+        BadCase{"sleeve with an odd count",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"]["count"] = 15;
+                },
+                "electrodes.count: the default layout puts count/2 electrodes on each rim of a sleeve, so count must "
+                "be even (got 15)"},
+        BadCase{"y_mm on a cylinder",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = json::array({{{"x_mm", 30}, {"y_mm", 0}, {"width_mm", 3}}});
+                },
+                "electrodes[0].y_mm: a cylinder's electrodes are placed by x_mm (along its axis) and angle_deg"},
+        BadCase{"sleeve angle out of range",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {30, 90}, {-30, -180}});
+                },
+                "electrodes[2].angle_deg: must be in (-180, 180] on a sleeve, got -180"},
+        BadCase{"patch angle beyond the patch",
+                [](json& j) {
+                  j["shape"] = {{"type", "cylinder"}, {"radius_mm", 20}, {"length_mm", 60}, {"angle_deg", 120}};
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {30, 70}, {-30, 0}});
+                },
+                "electrodes[1].angle_deg: must be within +-60 (the patch's angle is 120), got 70"},
+        BadCase{"cylinder electrode beyond the rims",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {31, 90}, {-30, 0}});
+                },
+                "electrodes[1].x_mm: must be within +-30 (half the length), got 31"},
+        BadCase{"sleeve electrode off the rims",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {30, 90}, {10, 90}});
+                },
+                "electrodes[2]: (x_mm 10, angle_deg 90) is not on the border: give x_mm = +-30 (a rim)"},
+        BadCase{"sleeve electrode on the seam",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {30, 90}, {10, 180}});
+                },
+                "electrodes[2]: lies on the sleeve's seam (angle 180 deg between its rims), not on a rim"},
+        BadCase{"sleeve electrode across a rim's seam point",
+                [](json& j) {
+                  j["shape"] = sleeve_shape();
+                  j["electrodes"] = sleeve_electrodes({{30, 0}, {30, 90}, {-30, 175}});
+                },
+                "electrodes[2]: crosses its rim's seam point (angle 180 deg): 3 mm wide, it must lie wholly within "
+                "(-180, 180) deg"},
         BadCase{"text for a number", [](json& j) { j["drive_voltage_V"] = "3.3"; },
                 "drive_voltage_V: must be a number"},
         BadCase{"fewer than 3 electrodes", [](json& j) { j["electrodes"]["count"] = 2; }, "at least 3 electrodes"},
@@ -283,6 +364,75 @@ TEST(Sensor, RimElectrodesByAngle) {
   EXPECT_NEAR((uneven.electrodes[0].center_mm - Vector2(0, 20)).norm(), 0, 1e-9);
   EXPECT_NEAR((uneven.electrodes[2].center_mm - 20 * Vector2(std::cos(-std::numbers::pi / 6), -0.5)).norm(), 0, 1e-9);
   EXPECT_NEAR(uneven.electrodes[0].width_mm, 4, 1e-12);
+}
+
+// A sleeve's default layout (README "Sensor description"): 8 electrodes on each rim, centred in
+// equal divisions of the rim from its seam (θ = ±180°), so at 22.5° + k·45°; each rim numbered from
+// the first past θ = 0 along the chart's border (θ rising on x = +L/2, falling on x = −L/2). A
+// chart point (u, v) is x = u − L/2, θ = v/R − π. Back through JSON as {x_mm, angle_deg}.
+TEST(Sensor, SleeveHasEightElectrodesOnEachRimAndRoundTrips) {
+  const Sensor s = load_sensor(test::source_path("examples/sensors/sleeve.json"));
+  ASSERT_EQ(s.shape.kind, ShapeKind::cylinder);
+  ASSERT_EQ(s.electrode_count(), 16);
+  const double R = 15, pi = std::numbers::pi;
+  EXPECT_NEAR(s.border->length_mm(), 2 * 60 + 2 * 2 * pi * R, 1e-9);
+  for (int k = 0; k < 8; ++k) {
+    const double rising = (22.5 + 45 * k) * pi / 180, falling = -(22.5 + 45 * k) * pi / 180;
+    const auto wrapped = [&](double theta) { return std::remainder(theta, 2 * pi); };
+    EXPECT_NEAR((s.electrodes[k].center_mm - Vector2(60, R * (wrapped(rising) + pi))).norm(), 0, 1e-9) << k;
+    EXPECT_NEAR((s.electrodes[8 + k].center_mm - Vector2(0, R * (wrapped(falling) + pi))).norm(), 0, 1e-9) << k;
+    EXPECT_EQ(s.electrodes[k].width_mm, 3.0);
+  }
+  const json j = sensor_to_json(s);
+  EXPECT_EQ(j["shape"]["type"], "cylinder");
+  EXPECT_NEAR(j["electrodes"][0]["x_mm"].get<double>(), 30, 1e-12);
+  EXPECT_NEAR(j["electrodes"][0]["angle_deg"].get<double>(), 22.5, 1e-9);
+  EXPECT_NEAR(j["electrodes"][8]["x_mm"].get<double>(), -30, 1e-12);
+  EXPECT_NEAR(j["electrodes"][8]["angle_deg"].get<double>(), -22.5, 1e-9);
+  const Sensor back = parse_sensor(j);
+  EXPECT_EQ(back.shape.kind, ShapeKind::cylinder);
+  EXPECT_EQ(back.shape.radius_mm, 15.0);
+  EXPECT_EQ(back.shape.length_mm, 60.0);
+  EXPECT_EQ(back.shape.angle_deg, 360.0);
+  ASSERT_EQ(back.electrode_count(), 16);
+  for (int e = 0; e < 16; ++e) {
+    EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9);
+    EXPECT_NEAR(back.electrodes[e].center_s_mm, s.electrodes[e].center_s_mm, 1e-9);
+  }
+}
+
+// An odd count per rim puts one electrode at θ = 0 (+z) on each rim.
+TEST(Sensor, SleeveWithOddElectrodesPerRimHasOneOnTop) {
+  json j = sensor_to_json(load_sensor(test::source_path("examples/sensors/sleeve.json")));
+  j["electrodes"] = {{"count", 6}, {"width_mm", 3}};
+  const Sensor s = parse_sensor(j);
+  ASSERT_EQ(s.electrode_count(), 6);
+  EXPECT_NEAR((s.electrodes[0].center_mm - Vector2(60, 15 * std::numbers::pi)).norm(), 0, 1e-9);
+  EXPECT_NEAR((s.electrodes[3].center_mm - Vector2(0, 15 * std::numbers::pi)).norm(), 0, 1e-9);
+}
+
+// A patch's chart is the rectangle L × Rα: its default layout is that rectangle's, 4 per side;
+// explicit electrodes on a rim (x = ±L/2) or a straight side (θ = ±α/2) land where they say.
+TEST(Sensor, CylinderPatchIsItsChartsRectangleAndRoundTrips) {
+  const Sensor s = load_sensor(test::source_path("examples/sensors/cylinder_patch.json"));
+  const double arc = 20 * 2 * std::numbers::pi / 3;  // R α
+  nlohmann::json j = base_sensor();
+  j["shape"] = {{"type", "rectangle"}, {"width_mm", 60}, {"height_mm", arc}};
+  const Sensor rectangle = parse_sensor(j);
+  ASSERT_EQ(s.electrode_count(), 16);
+  for (int e = 0; e < 16; ++e)
+    EXPECT_NEAR((s.electrodes[e].center_mm - rectangle.electrodes[e].center_mm).norm(), 0, 1e-12) << e;
+  const Sensor back = parse_sensor(sensor_to_json(s));
+  EXPECT_EQ(back.shape.angle_deg, 120.0);
+  for (int e = 0; e < 16; ++e)
+    EXPECT_NEAR((back.electrodes[e].center_mm - s.electrodes[e].center_mm).norm(), 0, 1e-9) << e;
+  j = sensor_to_json(s);
+  j["electrodes"] = sleeve_electrodes({{-10, -60}, {30, 15}, {5, 60}, {-30, 0}});
+  const Sensor listed = parse_sensor(j);
+  EXPECT_NEAR((listed.electrodes[0].center_mm - Vector2(20, 0)).norm(), 0, 1e-9);
+  EXPECT_NEAR((listed.electrodes[1].center_mm - Vector2(60, arc * 0.625)).norm(), 0, 1e-9);
+  EXPECT_NEAR((listed.electrodes[2].center_mm - Vector2(35, arc)).norm(), 0, 1e-9);
+  EXPECT_NEAR((listed.electrodes[3].center_mm - Vector2(0, arc / 2)).norm(), 0, 1e-9);
 }
 
 }  // namespace
