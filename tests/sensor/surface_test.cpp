@@ -60,7 +60,7 @@ TEST(Surface, CylinderPatchIsTheUnrolledRectangle) {
   EXPECT_NEAR((surface_normal(s, {0, 0}) - Vector3(0, -1, 1) / std::sqrt(2.0)).norm(), 0, 1e-12);
   EXPECT_NEAR(surface_area_mm2(s), 20 * pi / 2 * 60, 1e-9);
   // The inverse, and the tangents against central differences (the map is smooth: h² ≈ 1e-8).
-  for (const Vector2 c : {Vector2(3, 1), Vector2(30, 5 * pi), Vector2(57, 30)}) {
+  for (const Vector2& c : {Vector2(3, 1), Vector2(30, 5 * pi), Vector2(57, 30)}) {
     EXPECT_NEAR((surface_chart_mm(s, surface_point_mm(s, c)) - c).norm(), 0, 1e-12);
     const double h = 1e-4;
     for (int k = 0; k < 2; ++k) {
