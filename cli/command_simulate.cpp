@@ -123,7 +123,9 @@ void add_simulate_command(CLI::App& app) {
       "  emit simulate --realistic --realistic-series-ohm 0 --realistic-blur-mm 2 --press 30,30,5,10 --out f.csv");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--press", a->presses, "A press x_mm,y_mm,radius_mm,force_N (repeat for simultaneous presses)");
+  cmd->add_option("--press", a->presses,
+                  "A press x_mm,y_mm,radius_mm,force_N, or x_mm,y_mm,z_mm,radius_mm,force_N on a curved sheet (repeat "
+                  "for simultaneous presses)");
   cmd->add_option("--script", a->script,
                   "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger or "
                   "moving");

@@ -44,11 +44,17 @@ Press parse_press(const std::string& text) {
     }
     if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
       throw InvalidInput("press \"" + text + "\": \"" + item +
-                         "\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+                         "\" is not a number (expected x_mm,y_mm[,z_mm],radius_mm,force_N)");
     values.push_back(value);
   }
+  if (values.size() == 5) {  // with the centre's z, for a curved sheet (a cylinder needs it)
+    Press press{values[0], values[1], values[3], values[4]};
+    press.z_mm = values[2];
+    return press;
+  }
   if (values.size() != 4)
-    throw InvalidInput("press \"" + text + "\": expected 4 values x_mm,y_mm,radius_mm,force_N, got " +
+    throw InvalidInput("press \"" + text +
+                       "\": expected 4 values x_mm,y_mm,radius_mm,force_N (or 5, with z_mm after y_mm), got " +
                        std::to_string(values.size()));
   return Press{values[0], values[1], values[2], values[3]};
 }

@@ -219,6 +219,31 @@ TEST(Cli, FitsContactsOnTheDomesIndependentFrames) {
     }
 }
 
+// A sleeve as a user runs it: a press given with its z (the cylinder's underside, on the chart's
+// seam) is simulated, and contact fitting finds it within issue 15's 0.3 mm, on the cylinder with
+// the radial normal; the truth file carries the press's z.
+TEST(Cli, SimulatesAndFitsAPressUnderASleeve) {
+  const std::string dir = test::temp_folder("cli_sleeve");
+  const std::string sleeve = test::source_path("examples/sensors/sleeve.json");
+  ASSERT_EQ(run_emit("simulate --sensor " + sleeve + " --script none --frames 1 --out " + dir + "/ref.csv").exit_code,
+            0);
+  const auto simulated = run_emit("simulate --sensor " + sleeve + " --press 8,0,-15,4,10 --out " + dir + "/frames.csv");
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.err;
+  const PressSequence truth = read_presses_csv(dir + "/frames_presses.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  EXPECT_NEAR(truth[0][0].z_mm, -15, 1e-4);
+  const auto r = run_emit("reconstruct --sensor " + sleeve + " --reference " + dir + "/ref.csv --frames " + dir +
+                          "/frames.csv --contacts " + dir + "/c.jsonl --no-cache");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto contacts = read_contacts_file(dir + "/c.jsonl");
+  ASSERT_EQ(contacts.size(), 1u);
+  ASSERT_EQ(contacts[0].size(), 1u);
+  const Contact& c = contacts[0][0];
+  EXPECT_LE((Vector3(c.x_mm, c.y_mm, c.z_mm) - Vector3(8, 0, -15)).norm(), 0.3);
+  EXPECT_NEAR(std::hypot(c.y_mm, c.z_mm), 15, 1e-4);  // JSON Lines keep 6 decimals
+  EXPECT_NEAR((Vector3(0, c.y_mm, c.z_mm) / 15 - Vector3(c.nx, c.ny, c.nz)).norm(), 0, 1e-5);
+}
+
 // --images on the dome: each frame's pressure map is the shaded two-panel picture (an oblique view
 // and the top view), of the size its layout gives for the title emit writes.
 TEST(Cli, ImagesOfTheDomeAreTheShadedTwoPanelPicture) {

@@ -39,8 +39,8 @@ TEST(CylinderFit, SleeveFitsPressesAllRoundAndAcrossTheSeam) {
     ASSERT_EQ(contacts.size(), 1u) << "v " << v;
     const Contact& c = contacts[0];
     const double error = std::hypot(c.x_mm - press.x_mm, c.y_mm - press.y_mm, c.z_mm - press.z_mm);
-    std::printf("sleeve press at v %.1f mm (%.1f, %.1f, %.1f): error %.3f mm\n", v, press.x_mm, press.y_mm,
-                press.z_mm, error);
+    std::printf("sleeve press at v %.1f mm (%.1f, %.1f, %.1f): error %.3f mm\n", v, press.x_mm, press.y_mm, press.z_mm,
+                error);
     EXPECT_LT(error, 0.3) << "v " << v;
     // On the cylinder, the normal along its radius.
     EXPECT_NEAR(std::hypot(c.y_mm, c.z_mm), 15, 1e-9);

@@ -33,13 +33,23 @@ std::string error_of(const std::function<void()>& f) {
   return "no error";
 }
 
+// Five values carry the centre's z (a cylinder's presses need it: sensor/press.hpp).
+TEST(Press, ParsesAPressWithItsHeight) {
+  const Press p = parse_press("-8,1.5,-14.9,4,10");
+  EXPECT_EQ(p.x_mm, -8.0);
+  EXPECT_EQ(p.y_mm, 1.5);
+  EXPECT_EQ(p.z_mm, -14.9);
+  EXPECT_EQ(p.radius_mm, 4.0);
+  EXPECT_EQ(p.force_N, 10.0);
+}
+
 TEST(Press, ParseErrorsNameTheText) {
   EXPECT_EQ(error_of([] { parse_press("1,2,3"); }),
-            "press \"1,2,3\": expected 4 values x_mm,y_mm,radius_mm,force_N, got 3");
+            "press \"1,2,3\": expected 4 values x_mm,y_mm,radius_mm,force_N (or 5, with z_mm after y_mm), got 3");
   EXPECT_EQ(error_of([] { parse_press("1,2,3mm,4"); }),
-            "press \"1,2,3mm,4\": \"3mm\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+            "press \"1,2,3mm,4\": \"3mm\" is not a number (expected x_mm,y_mm[,z_mm],radius_mm,force_N)");
   EXPECT_EQ(error_of([] { parse_press("1,,3,4"); }),
-            "press \"1,,3,4\": \"\" is not a number (expected x_mm,y_mm,radius_mm,force_N)");
+            "press \"1,,3,4\": \"\" is not a number (expected x_mm,y_mm[,z_mm],radius_mm,force_N)");
 }
 
 TEST(Press, ValidationNamesWhatIsWrong) {

@@ -35,7 +35,7 @@ PressProfile parse_press_profile(const std::string& name);
 /// The presses of each frame of a sequence.
 using PressSequence = std::vector<std::vector<Press>>;
 
-/// Parse "x,y,r,F" (mm, mm, mm, N). \throw InvalidInput naming the text.
+/// Parse "x,y,r,F" (mm, mm, mm, N) or "x,y,z,r,F". \throw InvalidInput naming the text.
 Press parse_press(const std::string& text);
 
 /// The chart point (sensor/surface.hpp) of the sheet's point where the press is centred.
