@@ -71,6 +71,18 @@ void validate_press(const Sensor& sensor, const Press& press, const std::string&
     throw InvalidInput(where + ": values must be finite numbers");
   if (!(press.radius_mm > 0)) throw InvalidInput(where + ": radius must be positive");
   if (press.force_N < 0) throw InvalidInput(where + ": force must not be negative");
+  if (sensor.shape.kind == ShapeKind::cylinder) {
+    // A cylinder's point is the one along the radius through the centre: one far off the surface
+    // (a press given without its z lies on the axis' plane z = 0) is refused, not moved there.
+    const Vector3 centre(press.x_mm, press.y_mm, press.z_mm);
+    const double off_mm = (surface_point_mm(sensor.shape, press_chart_mm(sensor.shape, press)) - centre).norm();
+    if (off_mm > press_surface_tolerance_mm) {
+      char text[160];
+      std::snprintf(text, sizeof text, ": centre (%g, %g, %g) mm is %.3g mm off the cylinder's surface (give its z)",
+                    press.x_mm, press.y_mm, press.z_mm, off_mm);
+      throw InvalidInput(where + text);
+    }
+  }
   if (sensor.border && !sensor.border->contains(press_chart_mm(sensor.shape, press)))
     throw InvalidInput(where + ": centre " + position + " is off the sheet");
 }

@@ -11,6 +11,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "test_support.hpp"
 
 namespace emit {
 namespace {
@@ -41,6 +42,19 @@ TEST(Press, ParsesAPressWithItsHeight) {
   EXPECT_EQ(p.z_mm, -14.9);
   EXPECT_EQ(p.radius_mm, 4.0);
   EXPECT_EQ(p.force_N, 10.0);
+}
+
+// On a cylinder the centre must be on the surface (within 1 mm, then moved onto it): a press
+// given without its z is on the axis' plane, half a sleeve's radius or more away, and refused.
+TEST(Press, OnACylinderMustBeOnItsSurface) {
+  Sensor sensor = load_sensor(test::source_path("examples/sensors/sleeve.json"));
+  Press under{8, 0, 4, 10};
+  under.z_mm = -15.5;  // 0.5 mm off: taken
+  EXPECT_NO_THROW(validate_press(sensor, under, "press 0"));
+  EXPECT_EQ(error_of([&] {
+              validate_press(sensor, Press{8, 0, 4, 10}, "press 0");
+            }),
+            "press 0: centre (8, 0, 0) mm is 15 mm off the cylinder's surface (give its z)");
 }
 
 TEST(Press, ParseErrorsNameTheText) {

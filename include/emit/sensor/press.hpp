@@ -41,8 +41,12 @@ Press parse_press(const std::string& text);
 /// The chart point (sensor/surface.hpp) of the sheet's point where the press is centred.
 Vector2 press_chart_mm(const Shape& shape, const Press& press);
 
+/// How far a press's centre may be from a cylinder's surface [mm] (it is then moved onto it).
+inline constexpr double press_surface_tolerance_mm = 1.0;
+
 /// \throw InvalidInput if a value is not finite, the radius is not positive, the force is
-/// negative, or the centre is off the sheet. `where` prefixes the message.
+/// negative, the centre is off the sheet, or on a cylinder more than press_surface_tolerance_mm
+/// off its surface. `where` prefixes the message.
 void validate_press(const Sensor& sensor, const Press& press, const std::string& where);
 
 }  // namespace emit
