@@ -1,5 +1,6 @@
 #include "emit/twin/sim_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -73,7 +74,13 @@ SimSource::SimSource(const Sensor& sensor, const SimScript& script, const Source
   const Eigen::AlignedBox2d box = chart_box(twin_.mesh(), sensor_.shape);
   center_mm_ = box.center();
   half_extent_mm_ = box.sizes() / 2;
-  if (script_.kind == SimScript::Kind::fixed) validate_press(sensor_, script_.fixed, "source sim:fixed");
+  if (script_.kind == SimScript::Kind::fixed) {
+    // X, Y name the sheet's point seen from +z: on a cylinder, the upper one above (X, Y).
+    if (sensor_.shape.kind == ShapeKind::cylinder)
+      script_.fixed.z_mm =
+          std::sqrt(std::max(0.0, std::pow(sensor_.shape.radius_mm, 2) - std::pow(script_.fixed.y_mm, 2)));
+    validate_press(sensor_, script_.fixed, "source sim:fixed");
+  }
 }
 
 Press SimSource::press_at(const Vector2& chart_mm, double force_N) const {
