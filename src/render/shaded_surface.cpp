@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,7 +28,12 @@ constexpr double widest_value = -8.888e-88;
 /// from the depth of a mark on the surface near a silhouette (≈ 1 mm on a 40 mm dome), far less
 /// than what lies between the near and the far side.
 constexpr double mark_depth_tolerance = 0.02;
+/// Where a mark falls on a pixel the surface does not cover (past a silhouette or a rim seen edge
+/// on), the surface within this many pixels decides whether it is in sight.
+constexpr int uncovered_window_px = 2;
 constexpr int ring_segments = 72;
+/// unseen_from_above_fraction's z-buffers: the mesh's largest extent across this many pixels.
+constexpr int probe_px = 256;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180; }
 
@@ -90,6 +96,54 @@ void place(SurfaceView& view, const Extent& extent, int left_px, int top_px, int
   view.offset_y_px = top_px + 0.5 * size_px + scale_px_per_mm * 0.5 * (extent.min_up + extent.max_up);
 }
 
+/// The depth of the nearest surface drawn so far at each pixel (−∞: none), row-major like Image.
+class DepthBuffer {
+ public:
+  DepthBuffer(int width, int height)
+      : width_(width),
+        depth_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
+               -std::numeric_limits<double>::infinity()) {}
+  double& at(int x, int y) { return depth_[index(x, y)]; }
+  double at(int x, int y) const { return depth_[index(x, y)]; }
+
+ private:
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+  }
+  int width_;
+  std::vector<double> depth_;
+};
+
+/// The unit normal of triangle t (either side), or zero for a degenerate one.
+Vector3 triangle_normal(const Mesh& mesh, Index t) {
+  const Vector3 a = node(mesh, mesh.triangles(t, 0)), b = node(mesh, mesh.triangles(t, 1)),
+                c = node(mesh, mesh.triangles(t, 2));
+  const Vector3 n = (b - a).cross(c - a);
+  return n.norm() > 0 ? Vector3(n.normalized()) : Vector3(Vector3::Zero());
+}
+
+/// Calls visit(t, x, y, weights, depths) for every pixel of `bounds` that triangle t covers in
+/// `view`, for every triangle: `depths` its corners' depths, `weights` the pixel's barycentric ones.
+template <typename Visit>
+void for_each_surface_pixel(const Image& bounds, const SurfaceView& view, const Mesh& mesh, Visit&& visit) {
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    std::array<Vector2, 3> p;
+    std::array<double, 3> d{};
+    for (int k = 0; k < 3; ++k) {
+      const Vector3 corner = node(mesh, mesh.triangles(t, k));
+      p[k] = view.to_px(corner);
+      d[k] = view.depth_mm(corner);
+    }
+    detail::for_each_triangle_pixel(bounds, p,
+                                    [&](int x, int y, const std::array<double, 3>& w) { visit(t, x, y, w, d); });
+  }
+}
+
+/// The largest extent of the mesh's bounding box: the marks' depth tolerance is a share of it.
+double box_extent_mm(const Mesh& mesh) {
+  return (mesh.nodes_mm.colwise().maxCoeff() - mesh.nodes_mm.colwise().minCoeff()).maxCoeff();
+}
+
 int line_height_px() { return detail::text_height_px(detail::font_scale) + 4; }
 
 std::string oblique_caption() {
@@ -97,6 +151,9 @@ std::string oblique_caption() {
          std::to_string(int(oblique_elevation_deg));
 }
 const std::string top_caption = "top: from +z";
+const std::string bottom_caption = "bottom: from -z";
+
+SurfaceView bottom_view() { return SurfaceView::looking_from(-90, -90); }
 
 /// A panel's caption, wrapped to the panel's width.
 std::vector<std::string> caption_lines(const std::string& caption, int panel_px) {
@@ -104,9 +161,10 @@ std::vector<std::string> caption_lines(const std::string& caption, int panel_px)
 }
 
 /// The top of the panels: below the title, the panels' captions and the electrode numbers' margin.
-int panels_top_px(const std::vector<std::string>& title_lines, int panel_px) {
-  const std::size_t captions =
+int panels_top_px(const std::vector<std::string>& title_lines, int panel_px, bool with_bottom) {
+  std::size_t captions =
       std::max(caption_lines(oblique_caption(), panel_px).size(), caption_lines(top_caption, panel_px).size());
+  if (with_bottom) captions = std::max(captions, caption_lines(bottom_caption, panel_px).size());
   return detail::title_height_px(title_lines) + detail::padding_px + line_height_px() * static_cast<int>(captions) +
          detail::label_margin_px;
 }
@@ -119,27 +177,74 @@ int label_room_px(const FieldImageOptions& options) {
   return detail::text_width_px(detail::value_label(widest_value, options.unit), detail::font_scale);
 }
 
+double largest_extent_mm(const Extent& a, const Extent& b) {
+  return std::max({a.max_right - a.min_right, a.max_up - a.min_up, b.max_right - b.min_right, b.max_up - b.min_up});
+}
+
 }  // namespace
+
+double unseen_from_above_fraction(const Mesh& mesh) {
+  detail::check_field_inputs(mesh, Vector::Zero(mesh.node_count()), /*check_z=*/true, "unseen_from_above_fraction");
+  std::array<SurfaceView, 2> views{SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg),
+                                   SurfaceView::looking_from(-90, 90)};
+  const std::array<Extent, 2> extents{projected_extent(mesh, views[0]), projected_extent(mesh, views[1])};
+  const double largest_mm = largest_extent_mm(extents[0], extents[1]);
+  if (!(largest_mm > 0) || !std::isfinite(largest_mm)) return 0;
+  const Image bounds(probe_px + 1, probe_px + 1, detail::white);
+  const double tolerance_mm = mark_depth_tolerance * box_extent_mm(mesh);
+  std::vector<char> seen(static_cast<std::size_t>(mesh.triangle_count()), 0);
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    place(views[v], extents[v], 0, 0, probe_px, probe_px / largest_mm);
+    DepthBuffer depth(bounds.width(), bounds.height());
+    for_each_surface_pixel(bounds, views[v], mesh,
+                           [&](Index, int x, int y, const std::array<double, 3>& w, const std::array<double, 3>& d) {
+                             depth.at(x, y) = std::max(depth.at(x, y), w[0] * d[0] + w[1] * d[1] + w[2] * d[2]);
+                           });
+    for (Index t = 0; t < mesh.triangle_count(); ++t) {
+      const Vector3 centroid = mesh.triangle_centroid_mm(t);
+      const int x = views[v].pixel_x(centroid), y = views[v].pixel_y(centroid);
+      // A centroid on no covered pixel (an edge-on sliver) counts as seen.
+      if (x < 0 || y < 0 || x >= bounds.width() || y >= bounds.height() ||
+          views[v].depth_mm(centroid) >= depth.at(x, y) - tolerance_mm)
+        seen[static_cast<std::size_t>(t)] = 1;
+    }
+  }
+  double unseen = 0, total = 0;
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    const double area = mesh.triangle_area_mm2(t);
+    total += area;
+    if (!seen[static_cast<std::size_t>(t)]) unseen += area;
+  }
+  return total > 0 ? unseen / total : 0;
+}
 
 ShadedLayout plan_shaded_layout(const Mesh& mesh, const FieldImageOptions& options) {
   detail::check_field_inputs(mesh, Vector::Zero(mesh.node_count()), /*check_z=*/true, who);
   using detail::label_margin_px;
-  const int panel_px = (options.width_px - 3 * label_margin_px - detail::bar_width_px - detail::bar_label_gap_px -
-                        label_room_px(options) - detail::padding_px) /
-                       2;
-  if (panel_px < min_panel_px)
-    throw InvalidInput(who + ": width_px " + std::to_string(options.width_px) + " leaves no room for the panels");
   ShadedLayout layout;
   layout.oblique = SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg);
   layout.top = SurfaceView::looking_from(-90, 90);
   const Extent oblique = projected_extent(mesh, layout.oblique), top = projected_extent(mesh, layout.top);
-  const double largest_mm = std::max({oblique.max_right - oblique.min_right, oblique.max_up - oblique.min_up,
-                                      top.max_right - top.min_right, top.max_up - top.min_up});
+  double largest_mm = largest_extent_mm(oblique, top);
   if (!(largest_mm > 0) || !std::isfinite(largest_mm)) throw InvalidInput(who + ": the mesh has no extent");
+  const bool with_bottom = unseen_from_above_fraction(mesh) > bottom_panel_min_unseen_fraction;
+  const int panels = with_bottom ? 3 : 2;
+  const int panel_px = (options.width_px - (panels + 1) * label_margin_px - detail::bar_width_px -
+                        detail::bar_label_gap_px - label_room_px(options) - detail::padding_px) /
+                       panels;
+  if (panel_px < min_panel_px)
+    throw InvalidInput(who + ": width_px " + std::to_string(options.width_px) + " leaves no room for the panels");
+  Extent bottom;
+  if (with_bottom) {
+    layout.bottom = bottom_view();
+    bottom = projected_extent(mesh, *layout.bottom);
+    largest_mm = std::max(largest_mm, largest_extent_mm(bottom, bottom));
+  }
   const double scale_px_per_mm = panel_px / largest_mm;
-  const int top_px = panels_top_px(title_lines(options), panel_px);
+  const int top_px = panels_top_px(title_lines(options), panel_px, with_bottom);
   place(layout.oblique, oblique, label_margin_px, top_px, panel_px, scale_px_per_mm);
   place(layout.top, top, 2 * label_margin_px + panel_px, top_px, panel_px, scale_px_per_mm);
+  if (with_bottom) place(*layout.bottom, bottom, 3 * label_margin_px + 2 * panel_px, top_px, panel_px, scale_px_per_mm);
   layout.width_px = options.width_px;
   layout.height_px = top_px + panel_px + label_margin_px;
   return layout;
@@ -147,56 +252,31 @@ ShadedLayout plan_shaded_layout(const Mesh& mesh, const FieldImageOptions& optio
 
 namespace {
 
-/// The depth of the nearest surface drawn so far at each pixel (−∞: none), row-major like Image.
-class DepthBuffer {
- public:
-  DepthBuffer(int width, int height)
-      : width_(width),
-        depth_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
-               -std::numeric_limits<double>::infinity()) {}
-  double& at(int x, int y) {
-    return depth_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
-  }
-
- private:
-  int width_;
-  std::vector<double> depth_;
-};
-
 Rgb shaded(Rgb colour, double shade) {
   auto channel = [shade](std::uint8_t c) { return static_cast<std::uint8_t>(std::lround(c * shade)); };
   return {channel(colour.r), channel(colour.g), channel(colour.b)};
-}
-
-/// The unit normal of triangle t (either side), or zero for a degenerate one.
-Vector3 triangle_normal(const Mesh& mesh, Index t) {
-  const Vector3 a = node(mesh, mesh.triangles(t, 0)), b = node(mesh, mesh.triangles(t, 1)),
-                c = node(mesh, mesh.triangles(t, 2));
-  const Vector3 n = (b - a).cross(c - a);
-  return n.norm() > 0 ? Vector3(n.normalized()) : Vector3(Vector3::Zero());
 }
 
 /// Rasterises every triangle into one view: per pixel, the value interpolated linearly and the
 /// depth likewise; the pixel takes the nearest triangle's colour (the z-buffer), shaded per facet.
 void fill_surface(Image& image, DepthBuffer& depth, const SurfaceView& view, const Mesh& mesh, const Vector& values,
                   const detail::ValueRange& range) {
-  for (Index t = 0; t < mesh.triangle_count(); ++t) {
-    const double shade = lambert_shade(triangle_normal(mesh, t));
-    std::array<Vector2, 3> p;
-    std::array<double, 3> v{}, d{};
-    for (int k = 0; k < 3; ++k) {
-      const Vector3 corner = node(mesh, mesh.triangles(t, k));
-      p[k] = view.to_px(corner);
-      d[k] = view.depth_mm(corner);
-      v[k] = values[mesh.triangles(t, k)];
-    }
-    detail::for_each_triangle_pixel(image, p, [&](int x, int y, const std::array<double, 3>& w) {
-      const double z = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
-      if (z <= depth.at(x, y)) return;
-      depth.at(x, y) = z;
-      image.set(x, y, shaded(colormap(range.fraction(w[0] * v[0] + w[1] * v[1] + w[2] * v[2])), shade));
-    });
-  }
+  Index current = -1;
+  double shade = 0;
+  std::array<double, 3> v{};
+  for_each_surface_pixel(image, view, mesh,
+                         [&](Index t, int x, int y, const std::array<double, 3>& w, const std::array<double, 3>& d) {
+                           if (t != current) {
+                             current = t;
+                             shade = lambert_shade(triangle_normal(mesh, t));
+                             for (int k = 0; k < 3; ++k) v[k] = values[mesh.triangles(t, k)];
+                           }
+                           const double z = w[0] * d[0] + w[1] * d[1] + w[2] * d[2];
+                           if (z <= depth.at(x, y)) return;
+                           depth.at(x, y) = z;
+                           image.set(x, y,
+                                     shaded(colormap(range.fraction(w[0] * v[0] + w[1] * v[1] + w[2] * v[2])), shade));
+                         });
 }
 
 /// Draws the marks (lines, rings, labels) over one view's surface, each only where it is in sight.
@@ -205,23 +285,39 @@ class MarkPainter {
   MarkPainter(Image& image, DepthBuffer& depth, const SurfaceView& view, double tolerance_mm)
       : image_(image), depth_(depth), view_(view), tolerance_mm_(tolerance_mm) {}
 
-  /// Whether a point at this pixel and depth is not behind the surface there.
-  bool in_sight(int x, int y, double depth_mm) {
+  /// Whether a point of the surface at this pixel and depth is in sight: where the surface covers
+  /// the pixel, when it is not behind it; where not (past a silhouette, on a rim seen edge on),
+  /// unless all of the surface within uncovered_window_px is in front of it (the near side hiding
+  /// the far side's rim, as a sleeve's top hides its bottom's rims in the top view).
+  bool in_sight(int x, int y, double depth_mm) const {
     if (x < 0 || y < 0 || x >= image_.width() || y >= image_.height()) return false;
-    return depth_mm >= depth_.at(x, y) - tolerance_mm_;  // no surface there: −∞
+    constexpr double none = -std::numeric_limits<double>::infinity();
+    if (depth_.at(x, y) != none) return depth_mm >= depth_.at(x, y) - tolerance_mm_;
+    bool covered = false;
+    for (int j = std::max(0, y - uncovered_window_px); j <= std::min(image_.height() - 1, y + uncovered_window_px); ++j)
+      for (int i = std::max(0, x - uncovered_window_px); i <= std::min(image_.width() - 1, x + uncovered_window_px);
+           ++i) {
+        if (depth_.at(i, j) == none) continue;
+        if (depth_mm >= depth_.at(i, j) - tolerance_mm_) return true;
+        covered = true;
+      }
+    return !covered;
   }
 
-  /// The thick segment ab in 3D: each pixel within half_width_px of it where the segment's
-  /// nearest point is in sight (tested at that point's pixel, so that a hidden line does not show
-  /// its edge beyond a silhouette, and a line in sight keeps its width there).
-  void segment(const Vector3& a, const Vector3& b, double half_width_px, Rgb colour) {
-    const double da = view_.depth_mm(a), db = view_.depth_mm(b);
+  bool in_sight(const Vector3& point_mm) const {
+    return in_sight(view_.pixel_x(point_mm), view_.pixel_y(point_mm), view_.depth_mm(point_mm));
+  }
+
+  /// The thick segment ab in 3D: each pixel within half_width_px of it where the surface under
+  /// the segment's nearest point is in sight (tested at that surface point's pixel, so that a
+  /// hidden line does not show its edge beyond a silhouette, and a line in sight keeps its width
+  /// there). The surface under the segment goes from `under_a` to `under_b` (a and b themselves
+  /// for a line on the mesh).
+  void segment(const Vector3& a, const Vector3& b, const Vector3& under_a, const Vector3& under_b, double half_width_px,
+               Rgb colour) {
     const Vector2 pa = view_.to_px(a), pb = view_.to_px(b);
     detail::for_each_segment_pixel(image_, pa, pb, half_width_px, [&](int x, int y, double s) {
-      const Vector2 nearest = pa + s * (pb - pa);
-      if (in_sight(static_cast<int>(std::floor(nearest.x())), static_cast<int>(std::floor(nearest.y())),
-                   da + s * (db - da)))
-        image_.set(x, y, colour);
+      if (in_sight(Vector3(under_a + s * (under_b - under_a)))) image_.set(x, y, colour);
     });
   }
 
@@ -237,7 +333,10 @@ class MarkPainter {
 
 void draw_edges(MarkPainter& painter, const Mesh& mesh, const std::vector<std::array<int, 2>>& edges,
                 double half_width_px, Rgb colour) {
-  for (const auto& [a, b] : edges) painter.segment(node(mesh, a), node(mesh, b), half_width_px, colour);
+  for (const auto& [a, b] : edges) {
+    const Vector3 pa = node(mesh, a), pb = node(mesh, b);
+    painter.segment(pa, pb, pa, pb, half_width_px, colour);
+  }
 }
 
 /// The centre of the mesh's bounding box: the labels go away from its projection.
@@ -260,9 +359,7 @@ void draw_electrodes(MarkPainter& painter, const Mesh& mesh) {
       return (node(mesh, a) - mean).squaredNorm() < (node(mesh, b) - mean).squaredNorm();
     });
     const Vector3 anchor = node(mesh, middle);
-    if (!painter.in_sight(painter.view().pixel_x(anchor), painter.view().pixel_y(anchor),
-                          painter.view().depth_mm(anchor)))
-      continue;
+    if (!painter.in_sight(anchor)) continue;
     const Vector2 anchor_px = painter.view().to_px(anchor);
     Vector2 away = anchor_px - centre_px;
     away = away.norm() > 0 ? away.normalized() : Vector2(0, -1);
@@ -270,8 +367,14 @@ void draw_electrodes(MarkPainter& painter, const Mesh& mesh) {
   }
 }
 
-/// The unit normal of the triangle whose centroid is nearest `point`.
-Vector3 normal_near(const Mesh& mesh, const Vector3& point) {
+/// The triangle whose centroid is nearest a point: its unit normal (+z for a degenerate one) and
+/// that distance.
+struct NearestFacet {
+  Vector3 normal;
+  double distance_mm;
+};
+
+NearestFacet facet_near(const Mesh& mesh, const Vector3& point) {
   Index nearest = 0;
   double best = std::numeric_limits<double>::infinity();
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
@@ -282,25 +385,94 @@ Vector3 normal_near(const Mesh& mesh, const Vector3& point) {
     }
   }
   const Vector3 n = triangle_normal(mesh, nearest);
-  return n.isZero() ? Vector3(0, 0, 1) : n;
+  return {n.isZero() ? Vector3(0, 0, 1) : n, std::sqrt(best)};
 }
 
-/// Each circle in the surface's tangent plane at its centre, as render_field draws it: white 2 px
-/// wide with a dark pixel either side.
-void draw_outlines(MarkPainter& painter, const Mesh& mesh, const std::vector<Circle>& outlines) {
+/// The point of triangle abc nearest p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vector3 nearest_on_triangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c) {
+  const Vector3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vector3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vector3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double sum = va + vb + vc;
+  if (!(sum > 0)) return a;  // a degenerate triangle
+  return a + vb / sum * ab + vc / sum * ac;
+}
+
+/// The longest edge of any triangle.
+double longest_edge_mm(const Mesh& mesh) {
+  double longest = 0;
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k)
+      longest =
+          std::max(longest, (node(mesh, mesh.triangles(t, k)) - node(mesh, mesh.triangles(t, (k + 1) % 3))).norm());
+  return longest;
+}
+
+/// A circle as drawn: its points in the surface's tangent plane at its centre, and under each the
+/// surface's nearest point, whose visibility decides the mark's.
+struct Ring {
+  std::array<Vector3, ring_segments + 1> points, under;
+};
+
+/// The circles' rings (none for a circle with a non-finite centre or radius: nothing sensible to
+/// draw).
+std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& outlines) {
+  std::vector<Ring> rings;
+  const double longest_mm = outlines.empty() ? 0 : longest_edge_mm(mesh);
   for (const Circle& circle : outlines) {
     const Vector3 centre(circle.center_mm.x(), circle.center_mm.y(), circle.z_mm);
-    if (!centre.allFinite() || !std::isfinite(circle.radius_mm)) continue;  // nothing sensible to draw
-    const Vector3 n = normal_near(mesh, centre);
-    const Vector3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);
-    std::array<Vector3, ring_segments + 1> ring;
+    if (!centre.allFinite() || !std::isfinite(circle.radius_mm)) continue;
+    const NearestFacet facet = facet_near(mesh, centre);
+    const Vector3 e1 = facet.normal.unitOrthogonal(), e2 = facet.normal.cross(e1);
+    Ring ring;
     for (int k = 0; k <= ring_segments; ++k) {
       const double angle = 2 * std::numbers::pi * k / ring_segments;
-      ring[k] = centre + circle.radius_mm * (std::cos(angle) * e1 + std::sin(angle) * e2);
+      ring.points[k] = centre + circle.radius_mm * (std::cos(angle) * e1 + std::sin(angle) * e2);
     }
-    for (const auto& [half_width, colour] : {std::pair{2.0, detail::outline_shadow}, std::pair{1.0, detail::white}})
-      for (int k = 0; k < ring_segments; ++k) painter.segment(ring[k], ring[k + 1], half_width, colour);
+    // A ring point p is within r of the centre, which is within d of a centroid, so p's nearest
+    // surface point is within r + d of p, 2r + d of the centre, and its triangle's centroid within
+    // a longest edge more.
+    const double reach_mm = 2 * std::abs(circle.radius_mm) + facet.distance_mm + longest_mm;
+    std::vector<Index> candidates;
+    for (Index t = 0; t < mesh.triangle_count(); ++t)
+      if ((mesh.triangle_centroid_mm(t) - centre).norm() <= reach_mm) candidates.push_back(t);
+    for (int k = 0; k <= ring_segments; ++k) {
+      const Vector3& p = ring.points[k];
+      Vector3 best = p;
+      double best_distance = std::numeric_limits<double>::infinity();
+      for (Index t : candidates) {
+        const Vector3 q = nearest_on_triangle(p, node(mesh, mesh.triangles(t, 0)), node(mesh, mesh.triangles(t, 1)),
+                                              node(mesh, mesh.triangles(t, 2)));
+        if (const double d = (q - p).squaredNorm(); d < best_distance) {
+          best_distance = d;
+          best = q;
+        }
+      }
+      ring.under[k] = best;
+    }
+    rings.push_back(ring);
   }
+  return rings;
+}
+
+/// Each ring as render_field draws a circle: white 2 px wide with a dark pixel either side.
+void draw_outlines(MarkPainter& painter, const std::vector<Ring>& rings) {
+  for (const Ring& ring : rings)
+    for (const auto& [half_width, colour] : {std::pair{2.0, detail::outline_shadow}, std::pair{1.0, detail::white}})
+      for (int k = 0; k < ring_segments; ++k)
+        painter.segment(ring.points[k], ring.points[k + 1], ring.under[k], ring.under[k + 1], half_width, colour);
 }
 
 void draw_caption(Image& image, const SurfaceView& view, const std::string& caption) {
@@ -318,22 +490,25 @@ Image render_shaded_surface(const Mesh& mesh, const Vector& nodal_values, const 
   detail::check_field_inputs(mesh, nodal_values, /*check_z=*/true, who);
   const detail::ValueRange range = detail::value_range(nodal_values, options, who);
   const ShadedLayout plan = plan_shaded_layout(mesh, options);
-  const double extent_mm = (mesh.nodes_mm.colwise().maxCoeff() - mesh.nodes_mm.colwise().minCoeff()).maxCoeff();
 
   Image image(plan.width_px, plan.height_px, detail::white);
   DepthBuffer depth(plan.width_px, plan.height_px);
   const std::vector<std::array<int, 2>> border = mesh.border_edges();
-  for (const SurfaceView* view : {&plan.oblique, &plan.top}) {
+  const std::vector<Ring> rings = outline_rings(mesh, outlines);
+  std::vector<std::pair<const SurfaceView*, std::string>> panels{{&plan.oblique, oblique_caption()},
+                                                                 {&plan.top, top_caption}};
+  if (plan.bottom) panels.emplace_back(&*plan.bottom, bottom_caption);
+  for (const auto& [view, caption] : panels) {
     fill_surface(image, depth, *view, mesh, nodal_values, range);
-    MarkPainter painter(image, depth, *view, mark_depth_tolerance * extent_mm);
+    MarkPainter painter(image, depth, *view, mark_depth_tolerance * box_extent_mm(mesh));
     draw_edges(painter, mesh, border, detail::border_half_width_px, detail::border_colour);
     draw_electrodes(painter, mesh);
-    draw_outlines(painter, mesh, outlines);
+    draw_outlines(painter, rings);
   }
-  draw_caption(image, plan.oblique, oblique_caption());
-  draw_caption(image, plan.top, top_caption);
-  const detail::Box bar{plan.top.left_px + plan.top.size_px + detail::label_margin_px, plan.top.top_px,
-                        detail::bar_width_px, plan.top.size_px};
+  for (const auto& [view, caption] : panels) draw_caption(image, *view, caption);
+  const SurfaceView& last = *panels.back().first;
+  const detail::Box bar{last.left_px + last.size_px + detail::label_margin_px, last.top_px, detail::bar_width_px,
+                        last.size_px};
   detail::draw_colour_bar(image, bar, detail::value_label(range.min, options.unit),
                           detail::value_label(range.max, options.unit));
   detail::draw_title(image, title_lines(options));

@@ -1,14 +1,18 @@
 // The shaded picture of a curved sheet: where points land in each panel, the Lambert shading, the
-// z-buffer hiding the far side, and the marks (circles) drawn only where they are in sight.
+// z-buffer hiding the far side, the marks (circles, electrodes' numbers) drawn only where they are
+// in sight, and the bottom panel a sleeve gets for its underside.
 #include "emit/render/shaded_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 #include "test_support.hpp"
 
@@ -226,6 +230,155 @@ TEST(ShadedSurface, LayoutIsTwoSquarePanelsWithinTheWidth) {
     }
   options.width_px = 300;
   EXPECT_THROW(plan_shaded_layout(test::dome_mesh(), options), InvalidInput);
+}
+
+/// The example sleeve (examples/sensors/sleeve.json: radius 15 mm about the x axis, x from −30 to
+/// 30, 8 electrodes on each rim) and its reconstruction mesh, made once.
+const Mesh& sleeve_mesh() {
+  static const Mesh mesh = [] {
+    const Sensor sensor = load_sensor(test::source_path("examples/sensors/sleeve.json"));
+    return generate_mesh(sensor, reconstruction_mesh_options(sensor));
+  }();
+  return mesh;
+}
+
+/// The sleeve's point at x and angle θ about the x axis from +y towards +z: (x, 15 cos θ, 15 sin θ).
+Vector3 on_sleeve(double x_mm, double angle_deg) {
+  const double a = angle_deg * std::numbers::pi / 180;
+  return {x_mm, 15 * std::cos(a), 15 * std::sin(a)};
+}
+
+Index nearest_node(const Mesh& mesh, const Vector3& point) {
+  Index best = 0;
+  (mesh.nodes_mm.rowwise() - point.transpose()).rowwise().squaredNorm().minCoeff(&best);
+  return best;
+}
+
+// The dome is all in sight from above (its top view sees every facet), so it keeps its two panels;
+// the sleeve's underside is seen by neither view from above but for what the oblique view sees of
+// it (outside, down to 56° below the side facing the viewer; inside, through the open end): about
+// a third of its area by the facing test alone (124° of 360°), less the inside's share. So it gets
+// the third panel, from −z (x right, y down), beside the other two and as large, all within the
+// width, every node inside it.
+TEST(ShadedSurface, TheSleeveGetsABottomPanelTheDomeDoesNot) {
+  EXPECT_LT(unseen_from_above_fraction(test::dome_mesh()), 0.005);
+  EXPECT_FALSE(plan_shaded_layout(test::dome_mesh(), of_width(1024)).bottom.has_value());
+  const Mesh& mesh = sleeve_mesh();
+  const double unseen = unseen_from_above_fraction(mesh);
+  EXPECT_GT(unseen, 0.2);
+  EXPECT_LT(unseen, 124.0 / 360 + 0.02);
+  const ShadedLayout layout = plan_shaded_layout(mesh, of_width(1024));
+  ASSERT_TRUE(layout.bottom.has_value());
+  const SurfaceView& bottom = *layout.bottom;
+  EXPECT_NEAR((bottom.right - Vector3(1, 0, 0)).norm(), 0, 1e-15);
+  EXPECT_NEAR((bottom.up - Vector3(0, -1, 0)).norm(), 0, 1e-15);
+  EXPECT_NEAR((bottom.toward_viewer - Vector3(0, 0, -1)).norm(), 0, 1e-15);
+  EXPECT_EQ(bottom.size_px, layout.top.size_px);
+  EXPECT_EQ(bottom.top_px, layout.top.top_px);
+  EXPECT_EQ(bottom.scale_px_per_mm, layout.top.scale_px_per_mm);
+  EXPECT_GE(bottom.left_px, layout.top.left_px + layout.top.size_px);
+  EXPECT_LE(bottom.left_px + bottom.size_px, layout.width_px);
+  for (Index i = 0; i < mesh.node_count(); ++i) {
+    const Vector2 p = bottom.to_px(node(mesh, i));
+    ASSERT_TRUE(p.x() >= bottom.left_px && p.x() <= bottom.left_px + bottom.size_px && p.y() >= bottom.top_px &&
+                p.y() <= bottom.top_px + bottom.size_px)
+        << "node " << i;
+  }
+}
+
+// A bump on the sleeve's underside, 70° below the side facing +y (n·v ≈ −0.73 for the oblique
+// viewer, −0.94 from +z): the bottom panel shows it, its most yellow pixel within 3 px of where
+// its peak projects and that pixel yellow; the oblique and top panels show no yellow anywhere (the
+// bump has fallen to nothing 14 mm of arc away, where the oblique view's silhouette is).
+TEST(ShadedSurface, APressOnTheSleevesUndersideShowsInTheBottomPanelOnly) {
+  const Mesh& mesh = sleeve_mesh();
+  const Vector3 peak = node(mesh, nearest_node(mesh, on_sleeve(8, -70)));
+  ShadedLayout layout;
+  const Image image = render_shaded_surface(mesh, bump(mesh, peak, 3), {}, of_width(1024), &layout);
+  ASSERT_TRUE(layout.bottom.has_value());
+  const Pixel found = most_yellow(image, *layout.bottom);
+  EXPECT_LE(std::hypot(found.x - layout.bottom->pixel_x(peak), found.y - layout.bottom->pixel_y(peak)), 3)
+      << "found (" << found.x << ", " << found.y << ")";
+  EXPECT_LT(distance_from_yellow(pixel_at(image, *layout.bottom, peak)), 0.05);
+  for (const SurfaceView* view : {&layout.oblique, &layout.top}) {
+    const Pixel nearest = most_yellow(image, *view);
+    EXPECT_GT(distance_from_yellow(image.get(nearest.x, nearest.y)), 0.2);
+  }
+}
+
+/// The sleeve with only the electrodes `keep` (the others' node lists emptied: not drawn).
+Mesh with_electrodes(const Mesh& mesh, const std::vector<int>& keep) {
+  Mesh out = mesh;
+  for (int e = 0; e < out.electrode_count(); ++e)
+    if (std::find(keep.begin(), keep.end(), e) == keep.end()) out.electrode_nodes[e].clear();
+  return out;
+}
+
+Vector3 electrode_mean(const Mesh& mesh, int e) {
+  Vector3 mean = Vector3::Zero();
+  for (int n : mesh.electrode_nodes[e]) mean += node(mesh, n);
+  return mean / static_cast<double>(mesh.electrode_nodes[e].size());
+}
+
+/// How many pixels differ between two pictures in the columns [x0, x1), all rows.
+int changed_in_columns(const Image& a, const Image& b, int x0, int x1) {
+  int changed = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = x0; x < x1; ++x) changed += !(a.get(x, y) == b.get(x, y));
+  return changed;
+}
+
+// In the top view an electrode on the sleeve's +x rim below (z < 0) lies exactly under its mirror
+// image above: their numbers would land on the same spot. Drawn alone, the one below changes
+// nothing from the top panel's left edge to the bottom panel's (its number and its line are hidden
+// by the top half, though the rim's pixels are ones the surface does not cover); the one above
+// does (its number: ≥ 20 pixels), and the one below shows in the bottom panel (at its right, the
+// +x side). The oblique panel's marks are all left of the top panel.
+TEST(ShadedSurface, AnElectrodeHiddenInAPanelGetsNoNumberThere) {
+  const Mesh& mesh = sleeve_mesh();
+  int below = -1, above = -1;
+  for (int e = 0; e < mesh.electrode_count() && above < 0; ++e) {
+    const Vector3 m = electrode_mean(mesh, e);
+    if (m.x() < 0 || m.z() > -5) continue;
+    for (int f = 0; f < mesh.electrode_count(); ++f) {
+      const Vector3 n = electrode_mean(mesh, f);
+      if (n.x() > 0 && std::abs(n.y() - m.y()) < 0.5 && std::abs(n.z() + m.z()) < 0.5) {
+        below = e;
+        above = f;
+      }
+    }
+  }
+  ASSERT_GE(above, 0) << "no electrode pair mirrored in z = 0 on the +x rim";
+  const Vector values = Vector::Constant(mesh.node_count(), 0.5);
+  ShadedLayout layout;
+  const Image none = render_shaded_surface(with_electrodes(mesh, {}), values, {}, of_width(1024), &layout);
+  const Image only_below = render_shaded_surface(with_electrodes(mesh, {below}), values, {}, of_width(1024));
+  const Image only_above = render_shaded_surface(with_electrodes(mesh, {above}), values, {}, of_width(1024));
+  ASSERT_TRUE(layout.bottom.has_value());
+  const int x0 = layout.top.left_px, x1 = layout.bottom->left_px;
+  EXPECT_EQ(changed_in_columns(none, only_below, x0, x1), 0);
+  EXPECT_GT(changed_in_columns(none, only_above, x0, x1), 20);
+  EXPECT_GT(changed_in_columns(none, only_below, layout.bottom->left_px, layout.width_px), 20);
+}
+
+// Circles on the sleeve's underside: one at the bottom (θ = −90°) is hidden in the oblique and
+// top panels, one 20° below the side facing +y, near the top view's silhouette, too: its tangent
+// plane reaches 0.47 mm past the silhouette (15 cos 20° + 4 sin 20° > 15), where no surface covers
+// the pixels, but the surface under those points is the underside, which the top half hides. Both
+// show in the bottom panel.
+TEST(ShadedSurface, CirclesOnTheSleevesUndersideAreHiddenFromAbove) {
+  const Mesh& mesh = sleeve_mesh();
+  const Vector values = Vector::Constant(mesh.node_count(), 0.5);
+  ShadedLayout layout;
+  const Image plain = render_shaded_surface(mesh, values, {}, of_width(2048), &layout);
+  ASSERT_TRUE(layout.bottom.has_value());
+  for (const double angle : {-90.0, -20.0}) {
+    const Vector3 c = on_sleeve(5, angle);
+    const Image ring = render_shaded_surface(mesh, values, {{c.head<2>(), 4.0, c.z()}}, of_width(2048));
+    EXPECT_EQ(changed_pixels(plain, ring, layout.oblique), 0) << angle;
+    EXPECT_EQ(changed_pixels(plain, ring, layout.top), 0) << angle;
+    EXPECT_GT(changed_pixels(plain, ring, *layout.bottom), 200) << angle;
+  }
 }
 
 TEST(ShadedSurface, RejectsValuesThatDoNotMatchTheMesh) {

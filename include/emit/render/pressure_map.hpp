@@ -2,8 +2,9 @@
 /// \file pressure_map.hpp
 /// A pressure image as a picture: the per-element pressure drawn smooth over the mesh (N/mm², from
 /// 0), with circles outlined (contacts found, or the true presses). A flat sheet is drawn from +z
-/// (render_field); a curved one, a mesh not flat (mesh/flatness.hpp), as the shaded two-panel picture
-/// (render_shaded_surface: an oblique view and the top view), shaded_pressure_map_width_px wide.
+/// (render_field); a curved one, a mesh not flat (mesh/flatness.hpp), as the shaded picture
+/// (render_shaded_surface: an oblique view and the top view, and the bottom view for a sheet those
+/// leave partly unseen), shaded_pressure_map_width_px wide.
 #include <string>
 #include <vector>
 

@@ -1,16 +1,22 @@
 #pragma once
 /// \file shaded_surface.hpp
-/// A picture of a scalar field on a curved sheet (a triangle mesh in 3D): two panels side by side,
-/// each an orthographic view of the mesh coloured by nodal values (linear inside each triangle,
-/// colormap()) and shaded by a fixed light, hidden parts removed by a z-buffer:
+/// A picture of a scalar field on a curved sheet (a triangle mesh in 3D): two or three panels side
+/// by side, each an orthographic view of the mesh coloured by nodal values (linear inside each
+/// triangle, colormap()) and shaded by a fixed light, hidden parts removed by a z-buffer:
 /// - left, the oblique view, from azimuth −60° and elevation 30° (the viewer in the direction
 ///   (cos 30° cos −60°, cos 30° sin −60°, sin 30°) from the sheet: in front of it at −y, to the +x
 ///   side, 30° up);
-/// - right, the top view, from +z (x right, y up, as render_field draws a flat sheet).
+/// - next, the top view, from +z (x right, y up, as render_field draws a flat sheet);
+/// - right, only where those two leave part of the surface unseen (a sleeve's underside: see
+///   unseen_from_above_fraction), the bottom view, from −z (x right, y down).
 /// Over the surface: the border dark, the electrodes thick in render_field's orange with their
 /// numbers (where their middle is in sight), outlined circles (contacts, presses) in the surface's
 /// tangent plane at their centres; beside the panels a colour bar with its range and unit, above
-/// them their captions and the title.
+/// them their captions and the title. A mark (a line, a circle, a number) shows only where the
+/// surface under it is in sight in that panel: a circle's point stands for the surface's point
+/// nearest it, and at a pixel the surface does not cover (a silhouette, a rim seen edge-on) a mark
+/// is hidden when all of the surface within two pixels lies in front of it.
+#include <optional>
 #include <vector>
 
 #include "emit/core/types.hpp"
@@ -42,11 +48,21 @@ struct SurfaceView {
   double depth_mm(const Vector3& point_mm) const { return point_mm.dot(toward_viewer); }
 };
 
-/// Where everything goes: the picture's size and the two panels' projections.
+/// Where everything goes: the picture's size and the panels' projections.
 struct ShadedLayout {
   int width_px = 0, height_px = 0;
   SurfaceView oblique, top;
+  std::optional<SurfaceView> bottom;  ///< the view from −z (x right, y down), if the picture has it
 };
+
+/// The share of the surface's area above which the picture gets its bottom panel.
+inline constexpr double bottom_panel_min_unseen_fraction = 0.03;
+
+/// The share of the mesh's area (0 to 1) that neither the oblique nor the top view shows: the
+/// triangles whose centroid lies behind the surface drawn at its pixel (a z-buffer of about 256 px
+/// across, the marks' depth tolerance) in both. 0 for a flat sheet or a dome; about a third for a
+/// sleeve (its underside, less what the oblique view sees of it).
+double unseen_from_above_fraction(const Mesh& mesh);
 
 /// The unit vector towards the light (world frame, the same for both panels): from above, over the
 /// oblique viewer's left shoulder, (−1, −5, 7)/√75.
@@ -57,8 +73,9 @@ Vector3 shading_light_direction();
 double lambert_shade(const Vector3& unit_normal);
 
 /// Where render_shaded_surface puts everything for this mesh and these options (options.width_px
-/// is the whole picture's; title, unit and width decide the layout, not the values). Both panels
-/// share one scale, the largest at which each view of the mesh fits its square.
+/// is the whole picture's; title, unit and width decide the layout, not the values). The bottom
+/// panel is there when unseen_from_above_fraction(mesh) exceeds bottom_panel_min_unseen_fraction.
+/// All panels share one scale, the largest at which each view of the mesh fits its square.
 /// \throw InvalidInput as render_shaded_surface does for the mesh, or if width_px leaves panels
 /// under 40 px.
 ShadedLayout plan_shaded_layout(const Mesh& mesh, const FieldImageOptions& options);
