@@ -22,7 +22,7 @@ struct EvalArgs {
   std::vector<std::string> methods{"paper", "noser", "laplacian", "fit"};
   bool sweep = false;
   std::string plots_dir = "emit-eval";
-  std::string sheet;                 ///< only the sheets whose name contains this
+  std::string sheet;                 ///< only the sheets whose name begins with this
   CLI::Option* realistic = nullptr;  ///< --realistic [SEED]
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
@@ -43,13 +43,14 @@ std::uint64_t parse_seed(const std::string& text) {
   return seed;
 }
 
-/// The standard sheets whose name contains `sheet` (all for ""). \throw InvalidInput if none.
+/// The standard sheets whose name begins with `sheet` (all for ""): "60" is the 60 mm sheet, not
+/// the sleeve 60 mm long. \throw InvalidInput if none.
 std::vector<EvalCase> matching_cases(const std::string& sheet) {
   std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
-  std::erase_if(cases, [&](const EvalCase& c) { return c.name.find(sheet) == std::string::npos; });
+  std::erase_if(cases, [&](const EvalCase& c) { return c.name.rfind(sheet, 0) != 0; });
   if (cases.empty())
     throw InvalidInput("--sheet " + quote_input(sheet) +
-                       ": no sheet's name has it (60, 30, circle, 120, dome, sleeve)");
+                       ": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve)");
   return cases;
 }
 
@@ -174,7 +175,8 @@ void add_eval_command(CLI::App& app) {
   a->seed =
       cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise (default 1; with --realistic, 11)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
-  cmd->add_option("--sheet", a->sheet, "Only the sheets whose name contains this (60, 30, circle, 120, dome, sleeve)");
+  cmd->add_option("--sheet", a->sheet,
+                  "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve)");
   cmd->add_flag("--quick", o.quick, "Fewer presses (a smoke test)");
   a->realistic = cmd->add_option("--realistic", a->realistic_seed,
                                  "The round a user runs with a real sheet, on a realistic sheet drawn from SEED "

@@ -428,6 +428,7 @@ TEST(Cli, EvalRealisticRunsTheRoundAgainstTheTargets) {
   EXPECT_NE(r.out.find("60 x 60 mm sheet, 16 electrodes, realistic sheet 3"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| realistic sheet, seed 3"), std::string::npos) << r.out;  // what it drew
   EXPECT_EQ(r.out.find("30 x 30 mm sheet"), std::string::npos) << "only the 60 mm sheet by default";
+  EXPECT_EQ(r.out.find("sleeve"), std::string::npos) << "\"60\" begins the 60 mm sheet's name, not the sleeve's";
   double nominal_mm = -1, calibrated_mm = -1, nominal_p95_mm = -1, calibrated_p95_mm = -1;
   ASSERT_EQ(read_row(r.out, "position, mean", " %lf mm %lf mm", &nominal_mm, &calibrated_mm), 2) << r.out;
   ASSERT_EQ(read_row(r.out, "position, p95", " %lf mm %lf mm", &nominal_p95_mm, &calibrated_p95_mm), 2) << r.out;
@@ -724,9 +725,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"realistic eval seed not a number", "eval --realistic x --quick",
                "--realistic: the seed must be a whole number 0 or larger, got \"x\""},
         BadRun{"realistic eval on no sheet", "eval --realistic --sheet 45 --quick",
-               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120, dome, sleeve)"},
+               "--sheet \"45\": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve)"},
         BadRun{"eval on no sheet", "eval --sheet 45 --quick",
-               "--sheet \"45\": no sheet's name has it (60, 30, circle, 120, dome, sleeve)"},
+               "--sheet \"45\": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve)"},
         BadRun{"fingers that do not fit", "simulate --script four-finger --separation-mm 55 --frames 1 --out OUT",
                "no room on the sheet for 4 presses 55 mm apart"},
         BadRun{"output folder missing", "simulate --press 30,30,5,10 --out DIR/no/such/folder.csv", "does not exist"},
