@@ -101,12 +101,11 @@ ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const Dense
     : sensor_(sensor),
       mesh_(mesh),
       measurements_(measurements),
+      chart_box_(chart_box(mesh, sensor.shape)),
       options_(resolved_fit_options(options, sensor, mesh)),
       integrator_(mesh, options_.edge_mm, 3, sensor.shape),
       predictor_(mesh, green),
-      noise_V_(reading_noise_V(sensor.adc)),
-      lower_mm_(chart_box(mesh, sensor.shape).min()),
-      upper_mm_(chart_box(mesh, sensor.shape).max()) {
+      noise_V_(reading_noise_V(sensor.adc)) {
   predictor_.set_series_resistance(sensor.series_resistance_ohm);
   build_atoms();
 }
@@ -121,9 +120,9 @@ void ContactFitter::build_atoms() {
   // The grid's coordinates are accumulated steps, as the fits (and their recorded results) have
   // always seen them; a rounding at the far edge can only add or drop a point off the mesh.
   // NOLINTNEXTLINE(clang-analyzer-security.FloatLoopCounter)
-  for (double y = lower_mm_.y() + spacing / 2; y < upper_mm_.y(); y += spacing)
+  for (double y = chart_box_.min().y() + spacing / 2; y < chart_box_.max().y(); y += spacing)
     // NOLINTNEXTLINE(clang-analyzer-security.FloatLoopCounter)
-    for (double x = lower_mm_.x() + spacing / 2; x < upper_mm_.x(); x += spacing) {
+    for (double x = chart_box_.min().x() + spacing / 2; x < chart_box_.max().x(); x += spacing) {
       const Disc d{x, y, options_.prior_radius_mm, g};
       if (!chart_on_sheet(mesh_, sensor_.shape, Vector2(x, y))) continue;
       Vector column;
@@ -226,9 +225,9 @@ double ContactFitter::separation_mm(const Disc& a, const Disc& b) const {
 }
 
 Disc ContactFitter::clamp_seed(Disc seed) const {
-  seed.x_mm = std::clamp(seed.x_mm, lower_mm_.x(), upper_mm_.x());
+  seed.x_mm = std::clamp(seed.x_mm, chart_box_.min().x(), chart_box_.max().x());
   seed.y_mm = is_sleeve(sensor_.shape) ? wrapped_chart_mm(sensor_.shape, {seed.x_mm, seed.y_mm}).y()
-                                       : std::clamp(seed.y_mm, lower_mm_.y(), upper_mm_.y());
+                                       : std::clamp(seed.y_mm, chart_box_.min().y(), chart_box_.max().y());
   seed.radius_mm = options_.prior_radius_mm;
   const double g = sensor_.contact.conductance_S_per_mm2(0.1);
   seed.conductance_S_per_mm2 =
@@ -298,11 +297,11 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   for (auto& p : parameters) blocks.push_back(p.data());
   problem.AddResidualBlock(new FrameMisfit(*this, dV, k), nullptr, blocks);
   for (double* p : blocks) {
-    problem.SetParameterLowerBound(p, 0, lower_mm_.x());
-    problem.SetParameterUpperBound(p, 0, upper_mm_.x());
+    problem.SetParameterLowerBound(p, 0, chart_box_.min().x());
+    problem.SetParameterUpperBound(p, 0, chart_box_.max().x());
     if (!is_sleeve(sensor_.shape)) {  // around a sleeve the chart is periodic: no bound
-      problem.SetParameterLowerBound(p, 1, lower_mm_.y());
-      problem.SetParameterUpperBound(p, 1, upper_mm_.y());
+      problem.SetParameterLowerBound(p, 1, chart_box_.min().y());
+      problem.SetParameterUpperBound(p, 1, chart_box_.max().y());
     }
     // g within six decades of the contact law's at 0.1 N/mm²: keeps exp(log g) finite.
     const double log_g = std::log(sensor_.contact.conductance_S_per_mm2(0.1));

@@ -53,6 +53,18 @@ Vector2 surface_chart_mm(const Shape& shape, const Vector3& p) {
   return wrapped_chart_mm(shape, {p.x() + shape.length_mm / 2, v});
 }
 
+double chart_distance_to_border_mm(const Shape& shape, const Border& border, const Vector2& c) {
+  if (is_sleeve(shape)) return std::min(c.x(), shape.length_mm - c.x());
+  const double distance = border.distance_to_border_mm(c);
+  return border.contains(c) ? distance : -distance;
+}
+
+Vector3 surface_point_above_mm(const Shape& shape, const Vector2& xy) {
+  if (shape.kind != ShapeKind::cylinder) return surface_point_mm(shape, xy);
+  const double y = std::clamp(xy.y(), -shape.radius_mm, shape.radius_mm);
+  return {xy.x(), y, std::sqrt(shape.radius_mm * shape.radius_mm - y * y)};
+}
+
 Vector3 surface_normal(const Shape& shape, const Vector2& c) {
   switch (shape.kind) {
     case ShapeKind::spherical_cap:

@@ -25,11 +25,9 @@ Eigen::AlignedBox2d bounding_box(const Border& border) {
   return box;
 }
 
-/// Whether chart point p is on the sheet at least margin_mm from its border. A sleeve's chart
-/// rectangle has the seam as two of its sides; its border is the two rims only.
+/// Whether chart point p is on the sheet at least margin_mm from its border.
 bool admissible(const Shape& shape, const Border& border, const Vector2& p, double margin_mm) {
-  if (is_sleeve(shape)) return p.x() >= margin_mm && p.x() <= shape.length_mm - margin_mm;
-  return border.contains(p) && border.distance_to_border_mm(p) >= margin_mm;
+  return chart_distance_to_border_mm(shape, border, p) >= margin_mm;
 }
 
 class Sampler {

@@ -30,8 +30,7 @@ double parse_number(const std::string& text, const std::string& spec) {
 }
 
 bool admissible(const Sensor& sensor, const Mesh& mesh, const Vector2& p, double margin_mm) {
-  if (is_sleeve(sensor.shape)) return p.x() >= margin_mm && p.x() <= sensor.shape.length_mm - margin_mm;
-  if (sensor.border) return sensor.border->contains(p) && sensor.border->distance_to_border_mm(p) >= margin_mm;
+  if (sensor.border) return chart_distance_to_border_mm(sensor.shape, *sensor.border, p) >= margin_mm;
   return mesh.contains_xy(p);
 }
 
@@ -76,9 +75,7 @@ SimSource::SimSource(const Sensor& sensor, const SimScript& script, const Source
   half_extent_mm_ = box.sizes() / 2;
   if (script_.kind == SimScript::Kind::fixed) {
     // X, Y name the sheet's point seen from +z: on a cylinder, the upper one above (X, Y).
-    if (sensor_.shape.kind == ShapeKind::cylinder)
-      script_.fixed.z_mm =
-          std::sqrt(std::max(0.0, std::pow(sensor_.shape.radius_mm, 2) - std::pow(script_.fixed.y_mm, 2)));
+    script_.fixed.z_mm = surface_point_above_mm(sensor_.shape, {script_.fixed.x_mm, script_.fixed.y_mm}).z();
     validate_press(sensor_, script_.fixed, "source sim:fixed");
   }
 }

@@ -91,5 +91,28 @@ TEST(Surface, SleeveChartIsPeriodic) {
   EXPECT_NEAR(surface_area_mm2(s), round * 60, 1e-9);
 }
 
+// The margin presses keep: a patch's chart keeps its rectangle's distances, so a point 2 mm
+// from a side is 2 mm in (and −1 mm outside); around a sleeve the seam is no border, only the
+// rims are (the chart rectangle's lower side v = 0 is 2πR from nothing).
+TEST(Surface, ChartDistanceToBorderIsTheRimsOnASleeve) {
+  const Shape patch = cylinder(20, 60, 120), sleeve = cylinder(15, 60, 360);
+  const Border patch_border = Border::rectangle(60, 20 * 2 * std::numbers::pi / 3);
+  EXPECT_NEAR(chart_distance_to_border_mm(patch, patch_border, {30, 2}), 2, 1e-12);
+  EXPECT_NEAR(chart_distance_to_border_mm(patch, patch_border, {30, -1}), -1, 1e-12);
+  const Border sleeve_chart = Border::rectangle(60, 2 * std::numbers::pi * 15);
+  EXPECT_NEAR(chart_distance_to_border_mm(sleeve, sleeve_chart, {7, 0.5}), 7, 1e-12);
+  EXPECT_NEAR(chart_distance_to_border_mm(sleeve, sleeve_chart, {57, 50}), 3, 1e-12);
+  EXPECT_NEAR(chart_distance_to_border_mm(sleeve, sleeve_chart, {61, 50}), -1, 1e-12);
+}
+
+// Seen from +z: the cap's point of chart (x, y), the cylinder's upper point z = √(R² − y²), the
+// plane's z = 0; y beyond the cylinder's radius is taken at its side.
+TEST(Surface, PointAboveIsTheUpperOne) {
+  EXPECT_NEAR((surface_point_above_mm(cap(25, 20), {12, 9}) - Vector3(12, 9, 5)).norm(), 0, 1e-12);
+  EXPECT_NEAR((surface_point_above_mm(cylinder(15, 60, 360), {-8, 9}) - Vector3(-8, 9, 12)).norm(), 0, 1e-12);
+  EXPECT_NEAR((surface_point_above_mm(cylinder(15, 60, 360), {0, 20}) - Vector3(0, 15, 0)).norm(), 0, 1e-12);
+  EXPECT_NEAR((surface_point_above_mm(Shape{}, {3, 4}) - Vector3(3, 4, 0)).norm(), 0, 1e-12);
+}
+
 }  // namespace
 }  // namespace emit

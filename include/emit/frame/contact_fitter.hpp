@@ -12,6 +12,8 @@
 #include <functional>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "emit/fem/forward_model.hpp"
 #include "emit/frame/disc_contact.hpp"
 #include "emit/frame/frame_predictor.hpp"
@@ -117,11 +119,11 @@ class ContactFitter {
   const Sensor& sensor_;
   const Mesh& mesh_;
   const MeasurementSet& measurements_;
+  Eigen::AlignedBox2d chart_box_;  ///< where the discs' centres may go (mesh/sheet_chart.hpp)
   FitOptions options_;
   DiscContactIntegrator integrator_;
   FramePredictor predictor_;
   double noise_V_;
-  Vector2 lower_mm_, upper_mm_;
   DiscLoad load_;
   Frame frame_;
   FitResult result_;

@@ -13,6 +13,7 @@
 ///     sheet's true border and the distances along it are the sheet's. A sleeve (α = 360°) is
 ///     periodic in v: v and v + 2πR are the same point, and its border is the two rims u = 0, L.
 #include "emit/core/types.hpp"
+#include "emit/sensor/border.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
@@ -35,6 +36,15 @@ Vector2 surface_chart_mm(const Shape& shape, const Vector3& point_mm);
 
 /// c with a sleeve's v taken into [0, 2πR) (the same point); c itself on any other sheet.
 Vector2 wrapped_chart_mm(const Shape& shape, const Vector2& chart_mm);
+
+/// How far chart point c is inside the sheet's border [mm] (negative outside it): the border's
+/// distance (sensor/border.hpp) on a flat sheet, a cap or a cylinder patch, whose charts keep the
+/// border's lengths; around a sleeve, whose chart's v wraps, the distance to the nearer rim.
+double chart_distance_to_border_mm(const Shape& shape, const Border& border, const Vector2& chart_mm);
+
+/// The sheet's highest point above (x, y) seen from +z: on a cap and a flat sheet the point of
+/// chart (x, y); on a cylinder the upper one, z = √(R² − y²) (y taken within ±R).
+Vector3 surface_point_above_mm(const Shape& shape, const Vector2& xy_mm);
 
 /// The sheet's unit normal at chart point c, pointing away from the sphere's centre or the
 /// cylinder's axis (+z on a flat sheet).
