@@ -16,6 +16,7 @@
 #include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/eval/linear_robustness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/sheet_file.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/image_noise.hpp"
@@ -25,6 +26,7 @@
 #include "emit/render/image.hpp"
 #include "emit/render/line_plot.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "emit/sensor/surface.hpp"
 #include "emit/twin/press_scripts.hpp"
 #include "emit/twin/sensor_mismatch.hpp"
 
@@ -103,7 +105,7 @@ Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
     runs.test = simulate_run(twin, pressure_presses(c.sensor, c.radius_mm, n, options.seed + 200));
     PressStyle two = grid_style(c, options);
     two.min_force_N = 5 * c.radius_mm * c.radius_mm / 25, two.max_force_N = 20 * c.radius_mm * c.radius_mm / 25;
-    const double side = c.sensor.border->size_mm() / std::sqrt(2.0);
+    const double side = sheet_outline(c.sensor).size_mm() / std::sqrt(2.0);
     runs.two_press = simulate_run(twin, two_finger_script(c.sensor, n, 0.2 * side, 0.67 * side, two));
   }
   return runs;

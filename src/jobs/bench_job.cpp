@@ -1,4 +1,5 @@
 #include "emit/jobs/bench_job.hpp"
+#include "emit/mesh/sheet_file.hpp"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -74,7 +75,7 @@ ChildReport<Result> run_in_child(Work&& work, double& peak_MiB) {
 }  // namespace
 
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row, const Progress& progress) {
-  const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  const Sensor sensor = load_sheet_sensor(job.sensor_path);
   const std::string scratch =
       (std::filesystem::temp_directory_path() / ("emit-bench-" + std::to_string(::getpid()))).string();
   int failures = 0;

@@ -1,4 +1,5 @@
 #include "emit/jobs/live_session.hpp"
+#include "emit/mesh/sheet_file.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -43,7 +44,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
-  s.sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  s.sensor = load_sheet_sensor(job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);

@@ -1,4 +1,5 @@
 #include "emit/jobs/mesh_job.hpp"
+#include "emit/mesh/sheet_file.hpp"
 
 #include <chrono>
 
@@ -11,7 +12,7 @@
 namespace emit {
 
 MeshReport run_mesh_job(const MeshJob& job) {
-  const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  const Sensor sensor = load_sheet_sensor(job.sensor_path);
   check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
                 {{"--out", job.out_path}});
   MeshOptions options = job.twin ? twin_mesh_options(sensor, job.seed) : reconstruction_mesh_options(sensor);

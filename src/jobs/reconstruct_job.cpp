@@ -1,4 +1,5 @@
 #include "emit/jobs/reconstruct_job.hpp"
+#include "emit/mesh/sheet_file.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -75,7 +76,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                  {"--frames", job.frames_path},
                  {"--calibration", job.calibration_path}},
                 {{"--contacts", job.contacts_path}});
-  const Sensor sensor = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  const Sensor sensor = load_sheet_sensor(job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);

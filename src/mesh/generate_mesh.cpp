@@ -8,6 +8,7 @@
 
 #include <gmsh.h>
 
+#include "cad_sheet.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
 #include "emit/mesh/cylinder.hpp"
@@ -169,7 +170,7 @@ void grade_into_electrode_ends(const std::vector<int>& end_points, const MeshOpt
 
 double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options) {
   const Shape& shape = sensor.shape;
-  if (shape.kind == ShapeKind::mesh_file) return 0;
+  if (shape.kind == ShapeKind::mesh_file && !shape.surface) return 0;  // CAD not yet read: its meshing is bounded after
   // A cap is meshed as its disc at a finer size (mesh/spherical_cap.hpp): the disc's count.
   const double area_mm2 = shape.kind == ShapeKind::spherical_cap
                               ? std::numbers::pi * shape.radius_mm * shape.radius_mm *
@@ -198,14 +199,14 @@ MeshOptions twin_mesh_options(const Sensor& sensor, int seed) {
 }
 
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
-  if (sensor.shape.kind == ShapeKind::mesh_file) {
+  const bool cad = sensor.shape.kind == ShapeKind::mesh_file && is_cad_file(sensor.shape.mesh_path);
+  if (sensor.shape.kind == ShapeKind::mesh_file && !cad) {
     Mesh mesh = read_msh(sensor.shape.mesh_path);
-    // Presses and contacts on a mesh file's sheet are placed in the plane (sensor/surface.hpp):
-    // on a curved one a press would miss the sheet and every frame read as untouched.
-    if (!is_flat(mesh))
+    // Presses and contacts on a curved file's sheet are placed through its surface, read with the
+    // sensor (mesh/sheet_file.hpp): without it a press would miss the sheet.
+    if (!is_flat(mesh) && !sensor.shape.surface)
       throw InvalidInput(quote_input(sensor.shape.mesh_path) +
-                         ": a curved surface (nodes off z = 0); a mesh file's sheet must be flat for now: describe a "
-                         "dome by its shape, {\"type\": \"spherical_cap\", ...}");
+                         ": a curved surface whose sensor was read without it (mesh/sheet_file.hpp load_sheet_sensor)");
     return mesh;
   }
   if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
@@ -239,7 +240,8 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
     // makes seeds give visibly different meshes of the same density.
     gmsh::option::setNumber("Mesh.MeshSizeFactor", 1.0 + 0.01 * (options.seed % 7));
     std::vector<int> electrode_ends;
-    build_geometry(sensor, flat, electrode_ends);
+    if (cad) detail::import_cad_sheet(sensor, electrode_ends);
+    else build_geometry(sensor, flat, electrode_ends);
     if (flat.electrode_edge_size_factor < 1) grade_into_electrode_ends(electrode_ends, flat);
     gmsh::model::mesh::generate(2);
   });

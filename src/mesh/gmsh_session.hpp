@@ -5,6 +5,7 @@
 #include <mutex>
 #include <string>
 
+#include "emit/core/errors.hpp"
 #include "emit/mesh/mesh.hpp"
 
 namespace emit::detail {
@@ -16,11 +17,14 @@ class GmshSession {
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 
-  /// Run a Gmsh call; if it fails, throw E("<context>: <Gmsh's last error>").
+  /// Run a Gmsh call; if it fails, throw E("<context>: <Gmsh's last error>"); emit's own errors
+  /// thrown from inside it pass unchanged.
   template <class E>
   void run(const std::string& context, const std::function<void()>& call) {
     try {
       call();
+    } catch (const Error&) {
+      throw;  // emit's own, from inside the call: already says what is wrong
     } catch (...) {
       throw E(context + ": " + last_error());
     }

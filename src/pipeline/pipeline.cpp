@@ -16,8 +16,9 @@ OperatorOptions linear_options(const PipelineOptions& options) {
 }  // namespace
 
 int electrode_count_of(const Sensor& sensor) {
-  return sensor.shape.kind == ShapeKind::mesh_file ? read_msh(sensor.shape.mesh_path).electrode_count()
-                                                   : sensor.electrode_count();
+  if (sensor.shape.kind != ShapeKind::mesh_file) return sensor.electrode_count();
+  if (is_cad_file(sensor.shape.mesh_path)) return static_cast<int>(sensor.shape.electrode_at_mm.size());
+  return read_msh(sensor.shape.mesh_path).electrode_count();
 }
 
 void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source) {

@@ -1,5 +1,6 @@
 #include "emit/sensor/sensor_json.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -270,6 +271,35 @@ std::vector<double> parse_series_resistance(ObjectReader& r, const Sensor& senso
   return values;
 }
 
+}  // namespace
+
+bool is_cad_file(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".step" || extension == ".stp" || extension == ".iges" || extension == ".igs";
+}
+
+namespace {
+
+/// A CAD sheet's electrodes, in order: [{"at_mm": [x, y, z]}, ...], each naming the border curve
+/// of the file's surface nearest that point (mesh/generate_mesh.hpp).
+std::vector<Vector3> parse_cad_electrodes(const json& v) {
+  if (!v.is_array() || v.size() < 2)
+    ObjectReader::fail("electrodes", "must be a list of at least 2 {\"at_mm\": [x, y, z]}, got " + shown(v));
+  std::vector<Vector3> points;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string where = "electrodes[" + std::to_string(i) + "]";
+    ObjectReader r(v[i], where);
+    const json& p = r.value("at_mm");
+    if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+      ObjectReader::fail(where + ".at_mm", "must be a point [x, y, z] in mm, got " + shown(p));
+    points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    if (!points.back().allFinite()) ObjectReader::fail(where + ".at_mm", "must be finite");
+    r.finish();
+  }
+  return points;
+}
+
 void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) {
   ObjectReader r(j, "");
   if (r.has("name")) sensor.name = r.string("name");
@@ -278,9 +308,14 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
     sensor.border = border_of(sensor.shape);
     sensor.electrodes = parse_electrodes(r.value("electrodes"), sensor.shape, *sensor.border);
   } else if (r.has("electrodes")) {
+    if (!is_cad_file(sensor.shape.mesh_path))
+      ObjectReader::fail("electrodes",
+                         "a .msh sensor takes its electrodes from the file's "
+                         "\"electrode <i>\" curves; remove this key");
+    sensor.shape.electrode_at_mm = parse_cad_electrodes(r.value("electrodes"));
+  } else if (is_cad_file(sensor.shape.mesh_path)) {
     ObjectReader::fail("electrodes",
-                       "a mesh-file sensor takes its electrodes from the file's "
-                       "\"electrode <i>\" curves; remove this key");
+                       "missing: a CAD sheet names each electrode's border curve, [{\"at_mm\": [x, y, z]}, ...]");
   }
   sensor.drive_voltage_V = r.number_or("drive_voltage_V", sensor.drive_voltage_V, Sign::positive);
   sensor.sheet_resistance_ohm_per_sq =
@@ -381,7 +416,13 @@ json sensor_to_json(const Sensor& sensor) {
       j["shape"] = {{"type", "polygon"}, {"points_mm", points}};
       break;
     }
-    case ShapeKind::mesh_file: j["shape"] = {{"type", "mesh"}, {"file", s.mesh_path}}; break;
+    case ShapeKind::mesh_file: {
+      j["shape"] = {{"type", "mesh"}, {"file", s.mesh_path}};
+      json electrodes = json::array();
+      for (const Vector3& p : s.electrode_at_mm) electrodes.push_back({{"at_mm", {p.x(), p.y(), p.z()}}});
+      if (!s.electrode_at_mm.empty()) j["electrodes"] = electrodes;
+      break;
+    }
     case ShapeKind::spherical_cap:
       j["shape"] = {{"type", "spherical_cap"},
                     {"sphere_radius_mm", s.sphere_radius_mm},

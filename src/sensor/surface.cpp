@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "emit/core/errors.hpp"
+
 namespace emit {
 
 namespace {
@@ -18,15 +20,20 @@ double angle_rad(const Shape& s) { return s.angle_deg * std::numbers::pi / 180; 
 /// A cylinder's polar angle θ (from +z towards +y) at chart point c.
 double cylinder_theta(const Shape& s, const Vector2& c) { return c.y() / s.radius_mm - angle_rad(s) / 2; }
 
+/// A mesh file's surface once read (sensor/height_field.hpp), else null.
+const HeightField* file_surface(const Shape& s) { return s.kind == ShapeKind::mesh_file ? s.surface.get() : nullptr; }
+
 }  // namespace
 
 bool is_curved(const Shape& shape) {
+  if (const HeightField* surface = file_surface(shape)) return surface->is_curved();
   return shape.kind == ShapeKind::spherical_cap || shape.kind == ShapeKind::cylinder;
 }
 
 bool is_sleeve(const Shape& shape) { return shape.kind == ShapeKind::cylinder && shape.angle_deg >= 360; }
 
 Vector3 surface_point_mm(const Shape& shape, const Vector2& c) {
+  if (const HeightField* surface = file_surface(shape)) return surface->point_mm(c);
   switch (shape.kind) {
     case ShapeKind::spherical_cap: {
       const double R = shape.sphere_radius_mm;
@@ -59,6 +66,13 @@ double chart_distance_to_border_mm(const Shape& shape, const Border& border, con
   return border.contains(c) ? distance : -distance;
 }
 
+const Border& sheet_outline(const Sensor& sensor) {
+  if (sensor.border) return *sensor.border;
+  if (sensor.shape.surface && sensor.shape.surface->outline()) return *sensor.shape.surface->outline();
+  throw InvalidInput(sensor.shape.surface ? "the sheet's surface has holes: press scripts need one border"
+                                          : "a mesh file's sheet read without its surface has no border for presses");
+}
+
 Vector3 surface_point_above_mm(const Shape& shape, const Vector2& xy) {
   if (shape.kind != ShapeKind::cylinder) return surface_point_mm(shape, xy);
   const double y = std::clamp(xy.y(), -shape.radius_mm, shape.radius_mm);
@@ -66,6 +80,7 @@ Vector3 surface_point_above_mm(const Shape& shape, const Vector2& xy) {
 }
 
 Vector3 surface_normal(const Shape& shape, const Vector2& c) {
+  if (const HeightField* surface = file_surface(shape)) return surface->normal(c);
   switch (shape.kind) {
     case ShapeKind::spherical_cap:
       return (surface_point_mm(shape, c) + Vector3(0, 0, centre_depth_mm(shape))).normalized();
@@ -78,6 +93,7 @@ Vector3 surface_normal(const Shape& shape, const Vector2& c) {
 }
 
 Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& c) {
+  if (const HeightField* surface = file_surface(shape)) return surface->tangents(c);
   Eigen::Matrix<double, 3, 2> t;
   t << 1, 0, 0, 1, 0, 0;
   if (shape.kind == ShapeKind::spherical_cap) {
@@ -109,7 +125,7 @@ double surface_area_mm2(const Shape& shape) {
       }
       return std::abs(twice) / 2;
     }
-    case ShapeKind::mesh_file: return 0;
+    case ShapeKind::mesh_file: return shape.surface ? shape.surface->area_mm2() : 0;
   }
   return 0;
 }

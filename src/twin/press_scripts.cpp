@@ -14,11 +14,6 @@ namespace emit {
 
 namespace {
 
-const Border& border_for_scripts(const Sensor& sensor) {
-  if (!sensor.border) throw InvalidInput("press scripts need a rectangle, circle or polygon sheet, not a mesh file");
-  return *sensor.border;
-}
-
 Eigen::AlignedBox2d bounding_box(const Border& border) {
   Eigen::AlignedBox2d box;
   for (int k = 0; k < 512; ++k) box.extend(border.point_at(border.length_mm() * k / 512));
@@ -33,7 +28,7 @@ bool admissible(const Shape& shape, const Border& border, const Vector2& p, doub
 class Sampler {
  public:
   Sampler(const Sensor& sensor, const PressStyle& style)
-      : border_(border_for_scripts(sensor)),
+      : border_(sheet_outline(sensor)),
         surface_(sensor.shape),
         style_(style),
         box_(bounding_box(border_)),

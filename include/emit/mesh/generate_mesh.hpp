@@ -37,8 +37,10 @@ MeshOptions reconstruction_mesh_options(const Sensor& sensor);
 /// The twin's finer, edge-graded mesh (docs/physics.md, "The digital twin": finer than the reconstruction's).
 MeshOptions twin_mesh_options(const Sensor& sensor, int seed = 1);
 
-/// Mesh the sensor's sheet; for a mesh-file sensor, read the file instead. Either way the mesh comes
-/// out numbered for locality (sort_for_locality.hpp).
+/// Mesh the sensor's sheet; for a .msh sensor, read the file instead. A CAD sheet (STEP or IGES)
+/// is read through Gmsh's OpenCASCADE kernel and meshed like a built-in shape, electrode i the
+/// border curve nearest shape.electrode_at_mm[i] (within 0.5 mm). Either way the mesh comes out
+/// numbered for locality (sort_for_locality.hpp).
 /// \throw InvalidInput if the sheet cannot be meshed as asked or its estimated triangle count is
 /// beyond options.max_triangles (the message says how to raise it); IoError for an unreadable mesh file.
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options);

@@ -3,12 +3,14 @@
 /// The sensor description (README, "Sensor description"): the probing sheet's shape, its electrodes, the drive,
 /// the materials, the ADC and the mesh size. Built from JSON by `load_sensor` (sensor_json.hpp),
 /// validated there; every field here is in the units its name says.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "emit/core/types.hpp"
 #include "emit/sensor/border.hpp"
+#include "emit/sensor/height_field.hpp"
 
 namespace emit {
 
@@ -27,8 +29,17 @@ struct Shape {
   /// +z; 360° is a sleeve (README "Sensor description"; sensor/surface.hpp).
   double length_mm = 0, angle_deg = 0;
   std::vector<Vector2> points_mm;  ///< polygon, as given
-  std::string mesh_path;           ///< mesh_file: a Gmsh .msh with "electrode <i>" curves
+  std::string mesh_path;           ///< mesh_file: a Gmsh .msh with "electrode <i>" curves, or CAD (STEP/IGES)
+  /// mesh_file from CAD (is_cad_file): electrode i is the border curve of the file's surface
+  /// nearest this point (mesh/generate_mesh.hpp).
+  std::vector<Vector3> electrode_at_mm;
+  /// mesh_file: the file's surface, once read (mesh/sheet_file.hpp): its chart is (x, y).
+  std::shared_ptr<const HeightField> surface;
 };
+
+/// Whether a mesh file is CAD (STEP or IGES, by its extension, any case), which Gmsh's
+/// OpenCASCADE kernel reads and emit meshes, rather than a Gmsh mesh.
+bool is_cad_file(const std::string& path);
 
 /// One electrode: an arc-length interval of the border, [start_s_mm, start_s_mm + width_mm]
 /// (wrapping past the end of the border if need be).

@@ -12,6 +12,8 @@
 ///     towards +y. The map keeps lengths and areas (an isometry), so the chart's rectangle is the
 ///     sheet's true border and the distances along it are the sheet's. A sleeve (α = 360°) is
 ///     periodic in v: v and v + 2πR are the same point, and its border is the two rims u = 0, L.
+///   - A surface from a file, once read (Shape::surface, sensor/height_field.hpp), is seen once
+///     from +z: its chart is (x, y) too, its points' heights the file's triangles'.
 #include "emit/core/types.hpp"
 #include "emit/sensor/border.hpp"
 #include "emit/sensor/sensor.hpp"
@@ -42,6 +44,11 @@ Vector2 wrapped_chart_mm(const Shape& shape, const Vector2& chart_mm);
 /// border's lengths; around a sleeve, whose chart's v wraps, the distance to the nearer rim.
 double chart_distance_to_border_mm(const Shape& shape, const Border& border, const Vector2& chart_mm);
 
+/// The border of the sheet's chart: the sensor's border, or a file's surface's outline seen from
+/// +z (sensor/height_field.hpp). \throw InvalidInput for a mesh file read without its surface
+/// or with holes.
+const Border& sheet_outline(const Sensor& sensor);
+
 /// The sheet's highest point above (x, y) seen from +z: on a cap and a flat sheet the point of
 /// chart (x, y); on a cylinder the upper one, z = √(R² − y²) (y taken within ±R).
 Vector3 surface_point_above_mm(const Shape& shape, const Vector2& xy_mm);
@@ -56,8 +63,8 @@ Vector3 surface_normal(const Shape& shape, const Vector2& chart_mm);
 /// columns are orthonormal: (1, 0, 0) and (0, cos θ, −sin θ).
 Eigen::Matrix<double, 3, 2> surface_tangents(const Shape& shape, const Vector2& chart_mm);
 
-/// The sheet's area [mm²]: 2πR²(1 − cos θ) for a cap (sin θ = a/R), RαL for a cylinder; 0 for
-/// a mesh file.
+/// The sheet's area [mm²]: 2πR²(1 − cos θ) for a cap (sin θ = a/R), RαL for a cylinder, a mesh
+/// file's triangles' once read (0 before).
 double surface_area_mm2(const Shape& shape);
 
 }  // namespace emit

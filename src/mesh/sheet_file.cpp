@@ -1,0 +1,25 @@
+#include "emit/mesh/sheet_file.hpp"
+
+#include <memory>
+
+#include "emit/core/quote_input.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+
+Sensor with_sheet_surface(Sensor sensor) {
+  if (sensor.shape.kind != ShapeKind::mesh_file || sensor.shape.surface) return sensor;
+  const Mesh mesh = is_cad_file(sensor.shape.mesh_path) ? generate_mesh(sensor, reconstruction_mesh_options(sensor))
+                                                        : read_msh(sensor.shape.mesh_path);
+  sensor.shape.surface =
+      std::make_shared<const HeightField>(mesh.nodes_mm, mesh.triangles, quote_input(sensor.shape.mesh_path));
+  return sensor;
+}
+
+Sensor load_sheet_sensor(const std::string& path) {
+  return path.empty() ? default_sensor() : with_sheet_surface(load_sensor(path));
+}
+
+}  // namespace emit
