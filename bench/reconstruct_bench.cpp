@@ -12,6 +12,7 @@
 #include "emit/fem/forward_model.hpp"
 #include "emit/frame/frame_predictor.hpp"
 #include "emit/frame/reconstructor.hpp"
+#include "emit/mesh/sheet_file.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/method.hpp"
@@ -123,8 +124,8 @@ struct CurvedBench {
   Twin twin;
   Frame reference;
   std::vector<Frame> frames;
-  CurvedBench(const std::string& file, const std::vector<Vector2>& charts_mm)
-      : sensor(load_sensor(file)),
+  CurvedBench(const std::string& file, const std::vector<Vector2>& charts_mm, double press_radius_mm = 4)
+      : sensor(load_sheet_sensor(file)),
         model(build_reconstruction_model(sensor, operator_options(Method::paper), "")),
         fit_model(build_fit_model(sensor)),
         twin(sensor, held_out_twin()),
@@ -132,7 +133,7 @@ struct CurvedBench {
     set_thread_count(1);
     for (const Vector2& c : charts_mm) {
       const Vector3 p = surface_point_mm(sensor.shape, c);
-      Press press{p.x(), p.y(), 4, 8};
+      Press press{p.x(), p.y(), press_radius_mm, press_radius_mm * press_radius_mm / 2};  // 0.16 N/mm²
       press.z_mm = p.z();
       frames.push_back(twin.frame({press}));
     }
@@ -158,6 +159,21 @@ CurvedBench& sleeve_bench() {
       for (double turn : {0.0, 0.25, 0.5}) charts.emplace_back(u, turn * 2 * std::numbers::pi * 15);
     return charts;
   }());
+  return b;
+}
+
+/// The CAD fingertip (a half capsule, R 9 mm): presses of a fingertip's 2.5 mm on its pad, its sides
+/// and its tip.
+CurvedBench& fingertip_bench() {
+  static CurvedBench b(
+      EMIT_EXAMPLES_DIR "/fingertip.json",
+      [] {
+        std::vector<Vector2> charts;
+        for (double x : {-10.0, -4.0, 3.0})
+          for (double y : {-4.0, 0.0, 4.0}) charts.emplace_back(x, y);
+        return charts;
+      }(),
+      /*press_radius_mm=*/2.5);
   return b;
 }
 
@@ -187,6 +203,9 @@ void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench(),
 void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true); }
 void BM_FitFrameDome(benchmark::State& state) { fit_frames(state, dome_bench(), dome_bench().frames, false); }
 void BM_FitFrameSleeve(benchmark::State& state) { fit_frames(state, sleeve_bench(), sleeve_bench().frames, false); }
+void BM_FitFrameFingertip(benchmark::State& state) {
+  fit_frames(state, fingertip_bench(), fingertip_bench().frames, false);
+}
 
 /// One predicted frame for a disc of the fit's size (2.4 mm) on the fit's mesh.
 ContactLoad fit_sized_contact() {
@@ -221,6 +240,7 @@ BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameDome)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameSleeve)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameFingertip)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingTracked)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PredictWoodbury)->Unit(benchmark::kMicrosecond);

@@ -12,6 +12,7 @@
 #include "emit/core/quote_input.hpp"
 #include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
+#include "emit/pipeline/pipeline.hpp"
 
 namespace emit::cli {
 
@@ -50,7 +51,7 @@ std::vector<EvalCase> matching_cases(const std::string& sheet) {
   std::erase_if(cases, [&](const EvalCase& c) { return c.name.rfind(sheet, 0) != 0; });
   if (cases.empty())
     throw InvalidInput("--sheet " + quote_input(sheet) +
-                       ": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve)");
+                       ": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve, fingertip)");
   return cases;
 }
 
@@ -69,7 +70,7 @@ void run_realistic(EvalArgs& args) {
       static_cast<unsigned long long>(o.sheet.seed), o.mesh_seed, static_cast<unsigned long long>(o.seed),
       args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
   for (const EvalCase& c : cases) {
-    std::printf("\n%s, %d electrodes, realistic sheet %llu\n", c.name.c_str(), c.sensor.electrode_count(),
+    std::printf("\n%s, %d electrodes, realistic sheet %llu\n", c.name.c_str(), electrode_count_of(c.sensor),
                 static_cast<unsigned long long>(o.sheet.seed));
     std::fflush(stdout);
     const RealisticEvaluation e = evaluate_realistic_sheet(c, o, stderr_progress());
@@ -144,8 +145,8 @@ void run_eval(EvalArgs args) {
       "position: the paper's estimate (centroid of the image above 50 %% of its max); also the strongest\n"
       "contact's centroid. pressure: after calibration on separate presses, |error| vs 0.5 N/mm2 full scale.\n");
   for (const EvalCase& c : cases) {
-    std::printf("\n%s, %d electrodes (%s; pressure paper: 0.0457 N/mm2)\n", c.name.c_str(), c.sensor.electrode_count(),
-                c.paper_position.c_str());
+    std::printf("\n%s, %d electrodes (%s; pressure paper: 0.0457 N/mm2)\n", c.name.c_str(),
+                electrode_count_of(c.sensor), c.paper_position.c_str());
     std::fflush(stdout);
     const SheetEvaluation e = evaluate_sheet(c, args.options, stderr_progress());
     std::printf("  %zu single presses (r = %.1f mm), reconstruction mesh %ld triangles\n", e.grid_presses, c.radius_mm,
@@ -176,7 +177,7 @@ void add_eval_command(CLI::App& app) {
       cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise (default 1; with --realistic, 11)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_option("--sheet", a->sheet,
-                  "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve)");
+                  "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve, fingertip)");
   cmd->add_flag("--quick", o.quick, "Fewer presses (a smoke test)");
   a->realistic = cmd->add_option("--realistic", a->realistic_seed,
                                  "The round a user runs with a real sheet, on a realistic sheet drawn from SEED "

@@ -14,7 +14,7 @@ Sensor with_sheet_surface(Sensor sensor) {
   const Mesh mesh = is_cad_file(sensor.shape.mesh_path) ? generate_mesh(sensor, reconstruction_mesh_options(sensor))
                                                         : read_msh(sensor.shape.mesh_path);
   sensor.shape.surface =
-      std::make_shared<const HeightField>(mesh.nodes_mm, mesh.triangles, quote_input(sensor.shape.mesh_path));
+      std::make_shared<const HeightField>(mesh.nodes_mm, mesh.triangles, quote_input(sensor.shape.mesh_path, 120));
   return sensor;
 }
 

@@ -149,23 +149,6 @@ TEST(Cli, SimulatesASphericalCap) {
   EXPECT_LE((frame - reference).cwiseAbs().maxCoeff(), 0.01 * reference.cwiseAbs().maxCoeff());
 }
 
-// A mesh file's sheet is placed in the plane: a curved one (the dome as `emit mesh` writes it)
-// is refused in one line rather than simulated as a sheet no press reaches.
-TEST(Cli, RefusesACurvedMeshFileAsASensor) {
-  const std::string dir = test::temp_folder("cli_curved_msh");
-  ASSERT_EQ(run_emit("mesh --sensor " + test::source_path("examples/sensors/dome25.json") + " --out " + dir +
-                     "/dome.msh")
-                .exit_code,
-            0);
-  std::ofstream(dir + "/dome_msh.json") << R"({"shape": {"type": "mesh", "file": "dome.msh"}})";
-  const auto r = run_emit("simulate --sensor " + dir + "/dome_msh.json --press 3,4,4,10 --out " + dir + "/f.csv");
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find(": a curved surface (nodes off z = 0)"), std::string::npos) << r.err;
-  EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
-  EXPECT_EQ(last_line_of(r.err).rfind("emit: ", 0), 0u) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(dir + "/f.csv"));
-}
-
 /// The contacts of a contacts file, frame by frame.
 std::vector<std::vector<Contact>> read_contacts_file(const std::string& path) {
   std::vector<std::vector<Contact>> frames;
@@ -180,6 +163,45 @@ void write_zero_reference(const std::string& path) {
   std::ofstream zeros(path);
   for (int i = 0; i < 256; ++i) zeros << (i ? ",0" : "0");
   zeros << "\n";
+}
+
+// A curved .msh is a sensor (sensor/height_field.hpp): the dome meshed to a file, pressed at
+// (3, 4) and fitted, is found on the dome's surface there, z = √(25² − 25) − 15 = 9.49 mm (the
+// file is both twin and reconstruction mesh: the bound is issue 15's 0.3 mm). The sleeve, whose
+// sides are vertical and whose underside +z sees through its top, is refused in one line, naming
+// where.
+TEST(Cli, ACurvedMeshFileIsASensorAndAFoldedOneIsRefused) {
+  const std::string dir = test::temp_folder("cli_curved_msh");
+  for (const std::string sheet : {"dome25", "sleeve"})
+    ASSERT_EQ(run_emit("mesh --sensor " + test::source_path("examples/sensors/" + sheet + ".json") + " --out " + dir +
+                       "/" + sheet + ".msh")
+                  .exit_code,
+              0);
+  std::ofstream(dir + "/dome_msh.json") << R"({"shape": {"type": "mesh", "file": "dome25.msh"}})";
+  write_zero_reference(dir + "/zeros.csv");
+  ASSERT_EQ(run_emit("simulate --sensor " + dir + "/dome_msh.json --press 3,4,4,10 --exact --out " + dir + "/f.csv")
+                .exit_code,
+            0);
+  const auto fitted = run_emit("reconstruct --sensor " + dir + "/dome_msh.json --method fit --frames " + dir +
+                               "/f.csv --reference " + dir + "/zeros.csv --contacts " + dir + "/c.jsonl");
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  const auto frames = read_contacts_file(dir + "/c.jsonl");
+  ASSERT_EQ(frames.size(), 1u);
+  ASSERT_EQ(frames[0].size(), 1u);
+  const Contact& c = frames[0][0];
+  EXPECT_LT(std::hypot(c.x_mm - 3, c.y_mm - 4, c.z_mm - (std::sqrt(600.0) - 15)), 0.3);
+  std::ofstream(dir + "/sleeve_msh.json") << R"({"shape": {"type": "mesh", "file": "sleeve.msh"}})";
+  const auto r = run_emit("simulate --sensor " + dir + "/sleeve_msh.json --press 3,4,4,10 --out " + dir + "/g.csv");
+  EXPECT_NE(r.exit_code, 0);
+  // Its sides are vertical: a triangle there is seen edge-on, or past them its underside twice.
+  const bool edge_on = r.err.find("sleeve.msh\": a triangle at (") != std::string::npos &&
+                       r.err.find(" mm is seen edge-on from +z") != std::string::npos;
+  const bool twice = r.err.find("sleeve.msh\": the surface covers (") != std::string::npos &&
+                     r.err.find(" twice seen from +z") != std::string::npos;
+  EXPECT_TRUE(edge_on || twice) << r.err;
+  EXPECT_EQ(occurrences(r.err, "emit: "), 1) << r.err;
+  EXPECT_EQ(last_line_of(r.err).rfind("emit: ", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/g.csv"));
 }
 
 // Contact fitting on a curved sheet, checked on frames nobody here simulated: the independent

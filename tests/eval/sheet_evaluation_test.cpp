@@ -18,9 +18,11 @@
 namespace emit {
 namespace {
 
-TEST(SheetEvaluation, StandardCasesAreTheSixSheets) {
+TEST(SheetEvaluation, StandardCasesAreTheSevenSheets) {
   const auto cases = standard_eval_cases(test::source_path("examples/sensors"));
-  ASSERT_EQ(cases.size(), 6u);
+  ASSERT_EQ(cases.size(), 7u);
+  EXPECT_EQ(cases[6].sensor.shape.kind, ShapeKind::mesh_file);
+  EXPECT_TRUE(cases[6].sensor.shape.surface);  // read with its sensor: press scripts need its outline
   EXPECT_EQ(cases[4].sensor.shape.kind, ShapeKind::spherical_cap);
   EXPECT_EQ(cases[5].sensor.shape.kind, ShapeKind::cylinder);
   EXPECT_EQ(cases[5].sensor.shape.angle_deg, 360.0);
