@@ -15,6 +15,7 @@
 #include "emit/mesh/flatness.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
+#include "emit/mesh/stl_sheet.hpp"
 #include "emit/sensor/surface.hpp"
 #include "gmsh_session.hpp"
 
@@ -201,7 +202,7 @@ MeshOptions twin_mesh_options(const Sensor& sensor, int seed) {
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   const bool cad = sensor.shape.kind == ShapeKind::mesh_file && is_cad_file(sensor.shape.mesh_path);
   if (sensor.shape.kind == ShapeKind::mesh_file && !cad) {
-    Mesh mesh = read_msh(sensor.shape.mesh_path);
+    Mesh mesh = is_stl_file(sensor.shape.mesh_path) ? read_stl_sheet(sensor) : read_msh(sensor.shape.mesh_path);
     // Presses and contacts on a curved file's sheet are placed through its surface, read with the
     // sensor (mesh/sheet_file.hpp): without it a press would miss the sheet.
     if (!is_flat(mesh) && !sensor.shape.surface)

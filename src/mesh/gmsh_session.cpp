@@ -63,10 +63,10 @@ std::optional<int> electrode_number(const std::string& name) {
 
 }  // namespace
 
-Mesh GmshSession::extract_mesh(const std::string& context) {
+Mesh GmshSession::extract_mesh(const std::string& context, bool electrodes_required) {
   // Gmsh's calls below throw std::string (not std::exception) on failure: each becomes emit's error.
   try {
-    return extract_mesh_unchecked(context);
+    return extract_mesh_unchecked(context, electrodes_required);
   } catch (const Error&) {
     throw;
   } catch (...) {
@@ -74,7 +74,7 @@ Mesh GmshSession::extract_mesh(const std::string& context) {
   }
 }
 
-Mesh GmshSession::extract_mesh_unchecked(const std::string& context) {
+Mesh GmshSession::extract_mesh_unchecked(const std::string& context, bool electrodes_required) {
   std::vector<std::size_t> element_tags, triangle_node_tags;
   gmsh::model::mesh::getElementsByType(2, element_tags, triangle_node_tags);
   if (element_tags.empty()) throw InvalidInput(context + ": the mesh has no 3-node triangles");
@@ -136,7 +136,7 @@ Mesh GmshSession::extract_mesh_unchecked(const std::string& context) {
       if (t < index_of.size() && index_of[t] >= 0) nodes.push_back(index_of[t]);
     std::sort(nodes.begin(), nodes.end());
   }
-  if (electrodes.empty())
+  if (electrodes.empty() && electrodes_required)
     throw InvalidInput(context + ": no physical curves named \"electrode 0\", \"electrode 1\", …");
   for (int e = 0; e < static_cast<int>(electrodes.size()); ++e) {
     if (!electrodes.count(e))

@@ -34,11 +34,13 @@ class GmshSession {
 
   /// The current Gmsh model's triangles, nodes and "electrode <i>" curve groups as a Mesh.
   /// Unreferenced nodes (e.g. a circle's centre point) are dropped; flat meshes are oriented
-  /// counter-clockwise; numbered for locality (sort_for_locality.hpp). \throw InvalidInput (prefixed with `context`).
-  Mesh extract_mesh(const std::string& context);
+  /// counter-clockwise; numbered for locality (sort_for_locality.hpp). Without electrodes_required
+  /// a model with no electrode groups (an STL surface) gives a mesh without electrodes.
+  /// \throw InvalidInput (prefixed with `context`).
+  Mesh extract_mesh(const std::string& context, bool electrodes_required = true);
 
  private:
-  Mesh extract_mesh_unchecked(const std::string& context);
+  Mesh extract_mesh_unchecked(const std::string& context, bool electrodes_required);
   std::string last_error();
   static std::mutex& mutex();
   std::lock_guard<std::mutex> lock_;

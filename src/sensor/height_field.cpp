@@ -19,8 +19,8 @@ Vector3 upward_normal(const HeightField::Nodes& nodes, const HeightField::Triang
   return n.z() < 0 ? Vector3(-n) : n;
 }
 
-/// The border edges (used by one triangle) chained into one loop of nodes; none if they make
-/// several loops or do not close.
+}  // namespace
+
 std::optional<std::vector<int>> border_loop(const HeightField::Triangles& triangles) {
   std::map<std::pair<int, int>, int> uses;
   for (Index t = 0; t < triangles.rows(); ++t)
@@ -50,8 +50,6 @@ std::optional<std::vector<int>> border_loop(const HeightField::Triangles& triang
   if (loop.size() != edges) return std::nullopt;
   return loop;
 }
-
-}  // namespace
 
 HeightField::HeightField(Nodes nodes_mm, Triangles triangles, const std::string& context)
     : nodes_mm_(std::move(nodes_mm)), triangles_(std::move(triangles)) {

@@ -273,31 +273,43 @@ std::vector<double> parse_series_resistance(ObjectReader& r, const Sensor& senso
 
 }  // namespace
 
-bool is_cad_file(const std::string& path) {
+namespace {
+
+std::string lower_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+}  // namespace
+
+bool is_cad_file(const std::string& path) {
+  const std::string extension = lower_extension(path);
   return extension == ".step" || extension == ".stp" || extension == ".iges" || extension == ".igs";
 }
 
+bool is_stl_file(const std::string& path) { return lower_extension(path) == ".stl"; }
+
 namespace {
 
-/// A CAD sheet's electrodes, in order: [{"at_mm": [x, y, z]}, ...], each naming the border curve
-/// of the file's surface nearest that point (mesh/generate_mesh.hpp).
-std::vector<Vector3> parse_cad_electrodes(const json& v) {
+/// A CAD or STL sheet's electrodes, in order: [{"at_mm": [x, y, z]}, ...] (CAD: each names the
+/// border curve of the file's surface nearest that point), or with "width_mm" (STL: the border's
+/// stretch of that length centred on its point nearest; mesh/generate_mesh.hpp).
+void parse_file_electrodes(const json& v, bool with_width, Shape& shape) {
+  const std::string form = with_width ? "{\"at_mm\": [x, y, z], \"width_mm\": w}" : "{\"at_mm\": [x, y, z]}";
   if (!v.is_array() || v.size() < 2)
-    ObjectReader::fail("electrodes", "must be a list of at least 2 {\"at_mm\": [x, y, z]}, got " + shown(v));
-  std::vector<Vector3> points;
+    ObjectReader::fail("electrodes", "must be a list of at least 2 " + form + ", got " + shown(v));
   for (std::size_t i = 0; i < v.size(); ++i) {
     const std::string where = "electrodes[" + std::to_string(i) + "]";
     ObjectReader r(v[i], where);
     const json& p = r.value("at_mm");
     if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
       ObjectReader::fail(where + ".at_mm", "must be a point [x, y, z] in mm, got " + shown(p));
-    points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
-    if (!points.back().allFinite()) ObjectReader::fail(where + ".at_mm", "must be finite");
+    shape.electrode_at_mm.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    if (!shape.electrode_at_mm.back().allFinite()) ObjectReader::fail(where + ".at_mm", "must be finite");
+    if (with_width) shape.electrode_width_mm.push_back(r.number("width_mm", Sign::positive));
     r.finish();
   }
-  return points;
 }
 
 void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) {
@@ -308,14 +320,19 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
     sensor.border = border_of(sensor.shape);
     sensor.electrodes = parse_electrodes(r.value("electrodes"), sensor.shape, *sensor.border);
   } else if (r.has("electrodes")) {
-    if (!is_cad_file(sensor.shape.mesh_path))
+    const bool stl = is_stl_file(sensor.shape.mesh_path);
+    if (!stl && !is_cad_file(sensor.shape.mesh_path))
       ObjectReader::fail("electrodes",
                          "a .msh sensor takes its electrodes from the file's "
                          "\"electrode <i>\" curves; remove this key");
-    sensor.shape.electrode_at_mm = parse_cad_electrodes(r.value("electrodes"));
+    parse_file_electrodes(r.value("electrodes"), stl, sensor.shape);
   } else if (is_cad_file(sensor.shape.mesh_path)) {
     ObjectReader::fail("electrodes",
                        "missing: a CAD sheet names each electrode's border curve, [{\"at_mm\": [x, y, z]}, ...]");
+  } else if (is_stl_file(sensor.shape.mesh_path)) {
+    ObjectReader::fail("electrodes",
+                       "missing: an STL sheet places each electrode on its border, [{\"at_mm\": [x, y, z], "
+                       "\"width_mm\": w}, ...]");
   }
   sensor.drive_voltage_V = r.number_or("drive_voltage_V", sensor.drive_voltage_V, Sign::positive);
   sensor.sheet_resistance_ohm_per_sq =
@@ -419,7 +436,11 @@ json sensor_to_json(const Sensor& sensor) {
     case ShapeKind::mesh_file: {
       j["shape"] = {{"type", "mesh"}, {"file", s.mesh_path}};
       json electrodes = json::array();
-      for (const Vector3& p : s.electrode_at_mm) electrodes.push_back({{"at_mm", {p.x(), p.y(), p.z()}}});
+      for (std::size_t e = 0; e < s.electrode_at_mm.size(); ++e) {
+        const Vector3& p = s.electrode_at_mm[e];
+        electrodes.push_back({{"at_mm", {p.x(), p.y(), p.z()}}});
+        if (e < s.electrode_width_mm.size()) electrodes.back()["width_mm"] = s.electrode_width_mm[e];
+      }
       if (!s.electrode_at_mm.empty()) j["electrodes"] = electrodes;
       break;
     }

@@ -62,4 +62,8 @@ class HeightField {
   std::optional<Border> outline_;
 };
 
+/// A surface's border edges (each used by one triangle) chained into one loop of nodes, in the
+/// order they follow each other; none if they make several loops or do not close.
+std::optional<std::vector<int>> border_loop(const HeightField::Triangles& triangles);
+
 }  // namespace emit

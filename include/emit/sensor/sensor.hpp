@@ -31,8 +31,10 @@ struct Shape {
   std::vector<Vector2> points_mm;  ///< polygon, as given
   std::string mesh_path;           ///< mesh_file: a Gmsh .msh with "electrode <i>" curves, or CAD (STEP/IGES)
   /// mesh_file from CAD (is_cad_file): electrode i is the border curve of the file's surface
-  /// nearest this point (mesh/generate_mesh.hpp).
+  /// nearest this point; from STL (is_stl_file): the border's stretch electrode_width_mm[i] long
+  /// centred on its point nearest this one (mesh/generate_mesh.hpp).
   std::vector<Vector3> electrode_at_mm;
+  std::vector<double> electrode_width_mm;  ///< STL only
   /// mesh_file: the file's surface, once read (mesh/sheet_file.hpp): its chart is (x, y).
   std::shared_ptr<const HeightField> surface;
 };
@@ -40,6 +42,8 @@ struct Shape {
 /// Whether a mesh file is CAD (STEP or IGES, by its extension, any case), which Gmsh's
 /// OpenCASCADE kernel reads and emit meshes, rather than a Gmsh mesh.
 bool is_cad_file(const std::string& path);
+/// Whether a mesh file is an STL surface (by its extension, any case): its triangles are the mesh.
+bool is_stl_file(const std::string& path);
 
 /// One electrode: an arc-length interval of the border, [start_s_mm, start_s_mm + width_mm]
 /// (wrapping past the end of the border if need be).

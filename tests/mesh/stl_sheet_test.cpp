@@ -1,0 +1,122 @@
+// A sheet from an STL surface (mesh/stl_sheet.hpp): the CAD fingertip's mesh written as ASCII
+// STL (each triangle with its own three vertices, as STL has it) is read back as one surface with
+// its 16 electrodes of 3 mm placed on its border by point and width, exactly 3 mm along it; a
+// press on it is fitted on the surface; bad electrodes are refused in one line.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "emit/core/errors.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/mesh/sheet_file.hpp"
+#include "emit/mesh/stl_sheet.hpp"
+#include "emit/pipeline/pipeline.hpp"
+#include "emit/sensor/sensor_json.hpp"
+#include "emit/sensor/surface.hpp"
+#include "emit/twin/twin.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+void write_ascii_stl(const Mesh& mesh, const std::string& path) {
+  std::ofstream out(path);
+  out.precision(17);
+  out << "solid fingertip\n";
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    out << " facet normal 0 0 1\n  outer loop\n";
+    for (int k = 0; k < 3; ++k) {
+      const auto p = mesh.nodes_mm.row(mesh.triangles(t, k));
+      out << "   vertex " << p.x() << " " << p.y() << " " << p.z() << "\n";
+    }
+    out << "  endloop\n endfacet\n";
+  }
+  out << "endsolid fingertip\n";
+}
+
+/// The fingertip's description with its surface from `stl` and electrodes of `width_mm` at the
+/// CAD electrodes' midpoints.
+nlohmann::json stl_fingertip(const std::string& stl, double width_mm) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(test::source_path("examples/sensors/fingertip.json")));
+  j["shape"]["file"] = stl;
+  for (auto& e : j["electrodes"]) e["width_mm"] = width_mm;
+  return j;
+}
+
+std::string message_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(StlSheet, TheFingertipAsStlHasItsElectrodesAndFitsAPress) {
+  const std::string dir = test::temp_folder("stl_sheet");
+  const Sensor cad = load_sensor(test::source_path("examples/sensors/fingertip.json"));
+  const Mesh cad_mesh = generate_mesh(cad, reconstruction_mesh_options(cad));
+  write_ascii_stl(cad_mesh, dir + "/fingertip.stl");
+  const Sensor sensor = with_sheet_surface(parse_sensor(stl_fingertip(dir + "/fingertip.stl", 3)));
+  const Mesh mesh = read_stl_sheet(sensor);
+  // Repeated vertices merged: the CAD mesh's nodes, and one per electrode end not on one of its
+  // nodes (the CAD mesh has nodes at its electrodes' ends, so none here).
+  EXPECT_EQ(mesh.node_count(), cad_mesh.node_count());
+  EXPECT_EQ(mesh.triangle_count(), cad_mesh.triangle_count());
+  ASSERT_EQ(mesh.electrode_count(), 16);
+  for (int e = 0; e < 16; ++e) {
+    double length_mm = 0;
+    for (const auto& edge : mesh.electrode_edges(e))
+      length_mm += (mesh.nodes_mm.row(edge[0]) - mesh.nodes_mm.row(edge[1])).norm();
+    // The stretch of the border polyline 3 mm long, to the micrometre an end may snap by.
+    EXPECT_NEAR(length_mm, 3, 2e-3) << "electrode " << e;
+  }
+  // The STL is both twin and reconstruction mesh: a press is found on the surface within issue
+  // 15's 0.3 mm.
+  Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
+  Reconstructor reconstructor = pipeline.reconstructor();
+  const Twin twin(sensor);
+  reconstructor.set_reference(twin.exact_frame({}));
+  const Vector3 p = surface_point_mm(sensor.shape, {-6, 2});
+  Press press{p.x(), p.y(), 2.5, 2};
+  press.z_mm = p.z();
+  const auto& contacts = reconstructor.process(twin.exact_frame({press}));
+  ASSERT_EQ(contacts.size(), 1u);
+  const double error_mm = (Vector3(contacts[0].x_mm, contacts[0].y_mm, contacts[0].z_mm) - p).norm();
+  std::printf("STL fingertip: press at (%.1f, %.1f, %.2f) found %.3f mm away\n", p.x(), p.y(), p.z(), error_mm);
+  EXPECT_LT(error_mm, 0.3);
+  // An electrode whose ends fall between border nodes splits the border there.
+  nlohmann::json shifted = stl_fingertip(dir + "/fingertip.stl", 2.5);
+  shifted["electrodes"][0]["at_mm"] = {8.4, 1.2, 3};  // 1.2 mm round the tip's circle
+  const Mesh split = read_stl_sheet(parse_sensor(shifted));
+  EXPECT_GT(split.node_count(), cad_mesh.node_count());
+  double first_mm = 0;
+  for (const auto& edge : split.electrode_edges(0))
+    first_mm += (split.nodes_mm.row(edge[0]) - split.nodes_mm.row(edge[1])).norm();
+  EXPECT_NEAR(first_mm, 2.5, 2e-3);
+}
+
+TEST(StlSheet, BadElectrodesAreRefusedInOneLine) {
+  const std::string dir = test::temp_folder("stl_sheet_bad");
+  const Sensor cad = load_sensor(test::source_path("examples/sensors/fingertip.json"));
+  write_ascii_stl(generate_mesh(cad, reconstruction_mesh_options(cad)), dir + "/f.stl");
+  const auto read = [](const nlohmann::json& j) { return message_of([&] { read_stl_sheet(parse_sensor(j)); }); };
+  EXPECT_NE(read(stl_fingertip(dir + "/f.stl", 5)).find("f.stl\": electrodes 0 and 1 overlap"), std::string::npos)
+      << read(stl_fingertip(dir + "/f.stl", 5));
+  nlohmann::json far = stl_fingertip(dir + "/f.stl", 3);
+  far["electrodes"][2]["at_mm"] = {0, 0, 9};
+  EXPECT_NE(read(far).find("f.stl\": electrode 2 at (0, 0, 9) mm is 10.4 mm from the border (at most 0.5)"),
+            std::string::npos)
+      << read(far);
+  nlohmann::json no_width = stl_fingertip(dir + "/f.stl", 3);
+  no_width["electrodes"][1].erase("width_mm");
+  EXPECT_EQ(message_of([&] { parse_sensor(no_width); }), "sensor: electrodes[1].width_mm: missing");
+  nlohmann::json missing = stl_fingertip(dir + "/none.stl", 3);
+  EXPECT_NE(read(missing).find("none.stl\": no such STL file"), std::string::npos) << read(missing);
+}
+
+}  // namespace
+}  // namespace emit
