@@ -60,10 +60,7 @@ HeightField::HeightField(Nodes nodes_mm, Triangles triangles, const std::string&
     area_mm2_ += n.norm() / 2;
     // cos 89°: steeper, and the chart (x, y) would stretch a millimetre of it over 57 of the sheet.
     if (!(n.z() > std::cos(89.0 * std::numbers::pi / 180) * n.norm())) {
-      const Vector3 centre =
-          (nodes_mm_.row(triangles_(t, 0)) + nodes_mm_.row(triangles_(t, 1)) + nodes_mm_.row(triangles_(t, 2)))
-              .transpose() /
-          3;
+      const Vector3 centre = centroid_mm(t);
       char text[200];
       std::snprintf(text, sizeof text, "a triangle at (%.3g, %.3g, %.3g) mm is seen edge-on from +z", centre.x(),
                     centre.y(), centre.z());
@@ -74,11 +71,6 @@ HeightField::HeightField(Nodes nodes_mm, Triangles triangles, const std::string&
       edge_sum_mm += (nodes_mm_.row(triangles_(t, k)) - nodes_mm_.row(triangles_(t, (k + 1) % 3))).norm();
   }
   curved_ = nodes_mm_.col(2).cwiseAbs().maxCoeff() > 0;
-  if (const auto loop = border_loop(triangles_)) {
-    std::vector<Vector2> points;
-    for (int v : *loop) points.emplace_back(nodes_mm_(v, 0), nodes_mm_(v, 1));
-    outline_ = Border::polygon(points);
-  }
   box_ = {nodes_mm_.leftCols<2>().colwise().minCoeff().transpose(),
           nodes_mm_.leftCols<2>().colwise().maxCoeff().transpose()};
   // Cells about an edge long: a few triangles each.
@@ -105,26 +97,37 @@ HeightField::HeightField(Nodes nodes_mm, Triangles triangles, const std::string&
   }
   // Seen once from +z: no triangle's centroid lies inside another triangle.
   for (Index t = 0; t < triangles_.rows(); ++t) {
-    const Vector2 centroid =
-        (nodes_mm_.row(triangles_(t, 0)) + nodes_mm_.row(triangles_(t, 1)) + nodes_mm_.row(triangles_(t, 2)))
-            .head<2>()
-            .transpose() /
-        3;
+    const Vector3 centre = centroid_mm(t);
+    const Vector2 centroid = centre.head<2>();
     const Eigen::Vector2i cell = cell_of(centroid);
     const std::size_t index =
         static_cast<std::size_t>(cell.y()) * static_cast<std::size_t>(cells_.x()) + static_cast<std::size_t>(cell.x());
     for (int k = cell_start_[index]; k < cell_start_[index + 1]; ++k) {
       const Index other = cell_triangles_[static_cast<std::size_t>(k)];
       if (other != t && barycentric(other, centroid).minCoeff() > 1e-9) {
-        const Vector3 p = nodes_mm_.row(triangles_(t, 0));
         char text[200];
         std::snprintf(text, sizeof text, "the surface covers (%.3g, %.3g) mm twice seen from +z (near z = %.3g mm)",
-                      centroid.x(), centroid.y(), p.z());
+                      centroid.x(), centroid.y(), centre.z());
         throw InvalidInput(context + ": " + text +
                            "; emit charts a surface from a file by (x, y), so it must not fold over itself");
       }
     }
   }
+  if (const auto loop = border_loop(triangles_)) {
+    std::vector<Vector2> points;
+    for (int v : *loop) points.emplace_back(nodes_mm_(v, 0), nodes_mm_(v, 1));
+    try {
+      outline_ = Border::polygon(points);
+    } catch (const InvalidInput&) {
+      // A border that crosses itself seen from +z has no outline: press scripts say so.
+    }
+  }
+}
+
+Vector3 HeightField::centroid_mm(Index t) const {
+  return (nodes_mm_.row(triangles_(t, 0)) + nodes_mm_.row(triangles_(t, 1)) + nodes_mm_.row(triangles_(t, 2)))
+             .transpose() /
+         3;
 }
 
 Eigen::Vector2i HeightField::cell_of(const Vector2& c) const {

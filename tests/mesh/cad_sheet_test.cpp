@@ -36,15 +36,6 @@ double off_capsule_mm(const Vector3& p) {
   return p.x() <= 0 ? std::abs(std::hypot(p.y(), p.z()) - radius_mm) : std::abs(p.norm() - radius_mm);
 }
 
-std::string message_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(CadSheet, TheFingertipMeshIsItsSkinWithItsElectrodes) {
   const Sensor sensor = load_sensor(test::source_path("examples/sensors/fingertip.json"));
   const Mesh mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
@@ -112,7 +103,7 @@ TEST(CadSheet, BadElectrodePointsAndFilesAreRefusedInOneLine) {
   nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
   j["shape"]["file"] = test::source_path("examples/sensors/fingertip.step");
   const auto meshed = [](const nlohmann::json& description) {
-    return message_of([&] { generate_mesh(parse_sensor(description), MeshOptions{}); });
+    return test::error_of([&] { generate_mesh(parse_sensor(description), MeshOptions{}); });
   };
   nlohmann::json far = j;
   far["electrodes"][3]["at_mm"] = {-1.5, 8.4853, 5};
@@ -135,12 +126,12 @@ TEST(CadSheet, BadElectrodePointsAndFilesAreRefusedInOneLine) {
   EXPECT_NE(meshed(missing).find("missing.stp\": no such CAD file"), std::string::npos) << meshed(missing);
   nlohmann::json no_electrodes = j;
   no_electrodes.erase("electrodes");
-  EXPECT_EQ(message_of([&] { parse_sensor(no_electrodes); }),
+  EXPECT_EQ(test::error_of([&] { parse_sensor(no_electrodes); }),
             "sensor: electrodes: missing: a CAD sheet names each electrode's border curve, [{\"at_mm\": [x, y, z]}, "
             "...]");
   nlohmann::json flat_point = j;
   flat_point["electrodes"][0]["at_mm"] = {8.4853, 0};
-  EXPECT_EQ(message_of([&] { parse_sensor(flat_point); }),
+  EXPECT_EQ(test::error_of([&] { parse_sensor(flat_point); }),
             "sensor: electrodes[0].at_mm: must be a point [x, y, z] in mm, got [8.4853,0]");
 }
 

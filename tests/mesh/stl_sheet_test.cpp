@@ -46,15 +46,6 @@ nlohmann::json stl_fingertip(const std::string& stl, double width_mm) {
   return j;
 }
 
-std::string message_of(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(StlSheet, TheFingertipAsStlHasItsElectrodesAndFitsAPress) {
   const std::string dir = test::temp_folder("stl_sheet");
   const Sensor cad = load_sensor(test::source_path("examples/sensors/fingertip.json"));
@@ -103,7 +94,7 @@ TEST(StlSheet, BadElectrodesAreRefusedInOneLine) {
   const std::string dir = test::temp_folder("stl_sheet_bad");
   const Sensor cad = load_sensor(test::source_path("examples/sensors/fingertip.json"));
   write_ascii_stl(generate_mesh(cad, reconstruction_mesh_options(cad)), dir + "/f.stl");
-  const auto read = [](const nlohmann::json& j) { return message_of([&] { read_stl_sheet(parse_sensor(j)); }); };
+  const auto read = [](const nlohmann::json& j) { return test::error_of([&] { read_stl_sheet(parse_sensor(j)); }); };
   EXPECT_NE(read(stl_fingertip(dir + "/f.stl", 5)).find("f.stl\": electrodes 0 and 1 overlap"), std::string::npos)
       << read(stl_fingertip(dir + "/f.stl", 5));
   nlohmann::json far = stl_fingertip(dir + "/f.stl", 3);
@@ -113,7 +104,7 @@ TEST(StlSheet, BadElectrodesAreRefusedInOneLine) {
       << read(far);
   nlohmann::json no_width = stl_fingertip(dir + "/f.stl", 3);
   no_width["electrodes"][1].erase("width_mm");
-  EXPECT_EQ(message_of([&] { parse_sensor(no_width); }), "sensor: electrodes[1].width_mm: missing");
+  EXPECT_EQ(test::error_of([&] { parse_sensor(no_width); }), "sensor: electrodes[1].width_mm: missing");
   nlohmann::json missing = stl_fingertip(dir + "/none.stl", 3);
   EXPECT_NE(read(missing).find("none.stl\": no such STL file"), std::string::npos) << read(missing);
 }

@@ -23,24 +23,15 @@ Sensor coarse_sensor() {
   return sensor;
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Pipeline, ACalibrationOfTheOtherKindIsRefusedNamingTheFix) {
-  EXPECT_EQ(error_of([] { check_calibration_for_method(FitCalibration{}, Method::paper, "c.json"); }),
+  EXPECT_EQ(test::error_of([] { check_calibration_for_method(FitCalibration{}, Method::paper, "c.json"); }),
             "c.json: a calibration for contact fitting; run 'emit calibrate --method paper'");
-  EXPECT_EQ(error_of([] { check_calibration_for_method(LinearCalibration{}, Method::fit, "c.json"); }),
+  EXPECT_EQ(test::error_of([] { check_calibration_for_method(LinearCalibration{}, Method::fit, "c.json"); }),
             "c.json: a calibration for the linear methods; run 'emit calibrate --method fit'");
-  EXPECT_EQ(error_of([] { check_calibration_for_method(LinearCalibration{}, Method::laplacian, "c.json"); }),
+  EXPECT_EQ(test::error_of([] { check_calibration_for_method(LinearCalibration{}, Method::laplacian, "c.json"); }),
             "no error");
   // The pipeline refuses before building anything.
-  EXPECT_EQ(error_of([] {
+  EXPECT_EQ(test::error_of([] {
               Pipeline p(coarse_sensor(), {Method::noser, 0, "", {}}, FitCalibration{}, {}, "f.json");
             }),
             "f.json: a calibration for contact fitting; run 'emit calibrate --method noser'");

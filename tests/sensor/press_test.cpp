@@ -25,15 +25,6 @@ TEST(Press, ParsesFourNumbersAndGivesItsPressure) {
   EXPECT_DOUBLE_EQ(p.pressure_N_per_mm2(), 7 / (std::numbers::pi * 6.25));
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 // Five values carry the centre's z (a cylinder's presses need it: sensor/press.hpp).
 TEST(Press, ParsesAPressWithItsHeight) {
   const Press p = parse_press("-8,1.5,-14.9,4,10");
@@ -51,34 +42,37 @@ TEST(Press, OnACylinderMustBeOnItsSurface) {
   Press under{8, 0, 4, 10};
   under.z_mm = -15.5;  // 0.5 mm off: taken
   EXPECT_NO_THROW(validate_press(sensor, under, "press 0"));
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(test::error_of([&] {
               validate_press(sensor, Press{8, 0, 4, 10}, "press 0");
             }),
             "press 0: centre (8, 0, 0) mm is 15 mm off the cylinder's surface (give its z)");
 }
 
 TEST(Press, ParseErrorsNameTheText) {
-  EXPECT_EQ(error_of([] { parse_press("1,2,3"); }),
+  EXPECT_EQ(test::error_of([] { parse_press("1,2,3"); }),
             "press \"1,2,3\": expected 4 values x_mm,y_mm,radius_mm,force_N (or 5, with z_mm after y_mm), got 3");
-  EXPECT_EQ(error_of([] { parse_press("1,2,3mm,4"); }),
+  EXPECT_EQ(test::error_of([] { parse_press("1,2,3mm,4"); }),
             "press \"1,2,3mm,4\": \"3mm\" is not a number (expected x_mm,y_mm[,z_mm],radius_mm,force_N)");
-  EXPECT_EQ(error_of([] { parse_press("1,,3,4"); }),
+  EXPECT_EQ(test::error_of([] { parse_press("1,,3,4"); }),
             "press \"1,,3,4\": \"\" is not a number (expected x_mm,y_mm[,z_mm],radius_mm,force_N)");
 }
 
 TEST(Press, ValidationNamesWhatIsWrong) {
   const Sensor sensor = default_sensor();  // 60 × 60 mm from the origin
-  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 5, 10}, "press 1"); }), "no error");
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(test::error_of([&] { validate_press(sensor, {30, 30, 5, 10}, "press 1"); }), "no error");
+  EXPECT_EQ(test::error_of([&] {
               validate_press(sensor, {30, std::nan(""), 5, 10}, "press 1");
             }),
             "press 1: values must be finite numbers");
-  EXPECT_EQ(error_of([&] { validate_press(sensor, {30, 30, 0, 10}, "press 2"); }), "press 2: radius must be positive");
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(test::error_of([&] {
+              validate_press(sensor, {30, 30, 0, 10}, "press 2");
+            }),
+            "press 2: radius must be positive");
+  EXPECT_EQ(test::error_of([&] {
               validate_press(sensor, {30, 30, 5, -1}, "press 3");
             }),
             "press 3: force must not be negative");
-  EXPECT_EQ(error_of([&] {
+  EXPECT_EQ(test::error_of([&] {
               validate_press(sensor, {-1, 30, 5, 1}, "press 4");
             }),
             "press 4: centre (-1, 30) mm is off the sheet");

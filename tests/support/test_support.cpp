@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "emit/core/errors.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/sensor/sensor_json.hpp"
 
@@ -78,6 +79,15 @@ CommandResult run_emit(const std::string& arguments, const std::string& environm
   result.err = read_text(err);
   std::filesystem::remove_all(folder);
   return result;
+}
+
+std::string error_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace emit::test

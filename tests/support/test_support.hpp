@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the tests: meshes built without Gmsh (so FEM tests do not depend on the
 // mesher), paths to the repository's data, and a CLI runner for end-to-end tests.
+#include <functional>
 #include <string>
 
 #include "emit/mesh/mesh.hpp"
@@ -30,5 +31,8 @@ CommandResult run_emit(const std::string& arguments, const std::string& environm
 std::string temp_folder(const std::string& name);
 
 std::string read_text(const std::string& path);
+
+/// The message of the emit error (core/errors.hpp) that `call` throws, or "no error".
+std::string error_of(const std::function<void()>& call);
 
 }  // namespace emit::test

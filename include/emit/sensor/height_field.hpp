@@ -49,6 +49,7 @@ class HeightField {
   /// c's barycentric coordinates in triangle t seen from +z.
   Vector3 barycentric(Index t, const Vector2& c) const;
   Vector2 nearest_on_triangle(Index t, const Vector2& c) const;
+  Vector3 centroid_mm(Index t) const;
   Eigen::Vector2i cell_of(const Vector2& c) const;
 
   Nodes nodes_mm_;
