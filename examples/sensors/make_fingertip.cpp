@@ -90,7 +90,7 @@ std::pair<double, Point> length_and_midpoint_mm(int curve) {
   for (int k = 0; k <= samples; ++k) params[k] = low[0] + (high[0] - low[0]) * k / samples;
   gmsh::model::getValue(1, curve, params, xyz);
   std::vector<double> cumulative_mm(samples + 1, 0);
-  for (int k = 1; k <= samples; ++k)
+  for (std::size_t k = 1; k <= static_cast<std::size_t>(samples); ++k)
     cumulative_mm[k] = cumulative_mm[k - 1] + distance_mm({xyz[3 * k - 3], xyz[3 * k - 2], xyz[3 * k - 1]},
                                                           {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
   const double half_mm = cumulative_mm.back() / 2;
@@ -182,9 +182,9 @@ bool check_skin(const std::string& step_path) {
   report("border length (mm)", border_length_mm, border_mm, 1e-3 * border_mm);
 
   // Each electrode is one border curve 3 mm long, with its midpoint where border_point_mm puts it.
-  const int electrodes_found = std::count_if(curves.begin(), curves.end(),
-                                             [](const auto& c) { return std::abs(c.first - electrode_mm) <= 0.01; });
-  report("curves 3.00 +- 0.01 mm", electrodes_found, electrode_count, 0);
+  const auto electrodes_found = std::count_if(curves.begin(), curves.end(),
+                                              [](const auto& c) { return std::abs(c.first - electrode_mm) <= 0.01; });
+  report("curves 3.00 +- 0.01 mm", static_cast<double>(electrodes_found), electrode_count, 0);
   const auto spans = electrode_spans_mm();
   for (int i = 0; i < electrode_count; ++i) {
     const Point want = border_point_mm((spans[i][0] + spans[i][1]) / 2);

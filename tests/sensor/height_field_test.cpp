@@ -14,18 +14,18 @@ namespace {
 
 /// The plane z = 2 + 0.3x − 0.2y over [0, 10]², n × n squares each cut in two.
 void tilted_plane(int n, HeightField::Nodes& nodes, HeightField::Triangles& triangles) {
-  nodes.resize((n + 1) * (n + 1), 3);
+  nodes.resize(Index{n + 1} * (n + 1), 3);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const double x = 10.0 * i / n, y = 10.0 * j / n;
       nodes.row(j * (n + 1) + i) << x, y, 2 + 0.3 * x - 0.2 * y;
     }
-  triangles.resize(2 * n * n, 3);
+  triangles.resize(Index{2} * n * n, 3);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      triangles.row(2 * (j * n + i)) << a, b, d;
-      triangles.row(2 * (j * n + i) + 1) << a, c, d;  // clockwise: any orientation is taken
+      triangles.row(Index{2} * (j * n + i)) << a, b, d;
+      triangles.row(Index{2} * (j * n + i) + 1) << a, c, d;  // clockwise: any orientation is taken
     }
 }
 

@@ -45,7 +45,7 @@ class HeightField {
  private:
   /// The triangle that holds c seen from +z, else the nearest one; and the barycentric
   /// coordinates in it of c, or of its point nearest c.
-  Index locate(const Vector2& c, Vector3& barycentric) const;
+  Index locate(const Vector2& c, Vector3& weights) const;
   /// c's barycentric coordinates in triangle t seen from +z.
   Vector3 barycentric(Index t, const Vector2& c) const;
   Vector2 nearest_on_triangle(Index t, const Vector2& c) const;
