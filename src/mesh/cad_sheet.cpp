@@ -42,7 +42,7 @@ void check_cad_file(const std::string& path, const std::string& file) {
 
 }  // namespace
 
-void import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_tags) {
+double import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_tags) {
   const std::string file = quote_input(sensor.shape.mesh_path, 120);
   check_cad_file(sensor.shape.mesh_path, file);
   // A STEP file from Gmsh (or many CAD tools) writes each face as its own part, its shared edges
@@ -87,8 +87,15 @@ void import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_tags
     for (const auto& end : ends) electrode_end_tags.push_back(end.second);
   }
   std::vector<int> surface_tags;
-  for (const auto& s : surfaces) surface_tags.push_back(s.second);
+  double area_mm2 = 0;
+  for (const auto& s : surfaces) {
+    surface_tags.push_back(s.second);
+    double face_mm2 = 0;
+    gmsh::model::occ::getMass(2, s.second, face_mm2);
+    area_mm2 += face_mm2;
+  }
   gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, surface_tags), "sheet");
+  return area_mm2;
 }
 
 }  // namespace emit::detail

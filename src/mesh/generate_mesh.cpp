@@ -167,18 +167,32 @@ void grade_into_electrode_ends(const std::vector<int>& end_points, const MeshOpt
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
 }
 
+/// Refuse a mesh estimated beyond options.max_triangles, saying how to raise the limit.
+void check_triangle_estimate(const Sensor& sensor, const MeshOptions& options, double estimate) {
+  if (estimate <= options.max_triangles) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "meshing %s: about %.3g triangles at %.3g mm, beyond the limit of %.3g: choose a larger element "
+                "size, or raise the limit (sensor \"mesh\": {\"max_triangles\": N}, or emit mesh --max-triangles N)",
+                sensor.name.empty() ? "the sensor" : sensor.name.c_str(), estimate, options.element_size_mm,
+                options.max_triangles);
+  throw InvalidInput(text);
+}
+
+/// An equilateral triangle's area at edge h: √3/4·h².
+double triangle_area_mm2(double h_mm) { return std::sqrt(3.0) / 4 * h_mm * h_mm; }
+
 }  // namespace
 
 double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options) {
   const Shape& shape = sensor.shape;
-  if (shape.kind == ShapeKind::mesh_file && !shape.surface) return 0;  // CAD not yet read: its meshing is bounded after
+  if (shape.kind == ShapeKind::mesh_file && !shape.surface) return 0;  // a CAD file is checked once read
   // A cap is meshed as its disc at a finer size (mesh/spherical_cap.hpp): the disc's count.
   const double area_mm2 = shape.kind == ShapeKind::spherical_cap
                               ? std::numbers::pi * shape.radius_mm * shape.radius_mm *
                                     std::pow(spherical_cap_stretch(shape.sphere_radius_mm, shape.radius_mm), 2)
                               : surface_area_mm2(shape);
-  const double h = options.element_size_mm;
-  return area_mm2 / (std::sqrt(3.0) / 4 * h * h);
+  return area_mm2 / triangle_area_mm2(options.element_size_mm);
 }
 
 MeshOptions reconstruction_mesh_options(const Sensor& sensor) {
@@ -213,15 +227,7 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
     throw InvalidInput("mesh: element size and edge size factor must be positive");
   if (options.smoothing_steps < 0) throw InvalidInput("mesh: smoothing steps must be 0 or more");
-  if (const double estimate = estimated_triangle_count(sensor, options); estimate > options.max_triangles) {
-    char text[320];
-    std::snprintf(text, sizeof text,
-                  "meshing %s: about %.3g triangles at %.3g mm, beyond the limit of %.3g: choose a larger element "
-                  "size, or raise the limit (sensor \"mesh\": {\"max_triangles\": N}, or emit mesh --max-triangles N)",
-                  sensor.name.empty() ? "the sensor" : sensor.name.c_str(), estimate, options.element_size_mm,
-                  options.max_triangles);
-    throw InvalidInput(text);
-  }
+  check_triangle_estimate(sensor, options, estimated_triangle_count(sensor, options));
   // A cap: its disc, at the size that the wrapping's stretch brings back to the element size.
   const bool cap = sensor.shape.kind == ShapeKind::spherical_cap;
   MeshOptions flat = options;
@@ -241,8 +247,13 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
     // makes seeds give visibly different meshes of the same density.
     gmsh::option::setNumber("Mesh.MeshSizeFactor", 1.0 + 0.01 * (options.seed % 7));
     std::vector<int> electrode_ends;
-    if (cad) detail::import_cad_sheet(sensor, electrode_ends);
-    else build_geometry(sensor, flat, electrode_ends);
+    if (cad) {
+      // A CAD surface's area is known once read: its estimate is checked before meshing.
+      const double area_mm2 = detail::import_cad_sheet(sensor, electrode_ends);
+      check_triangle_estimate(sensor, options, area_mm2 / triangle_area_mm2(options.element_size_mm));
+    } else {
+      build_geometry(sensor, flat, electrode_ends);
+    }
     if (flat.electrode_edge_size_factor < 1) grade_into_electrode_ends(electrode_ends, flat);
     gmsh::model::mesh::generate(2);
   });

@@ -124,6 +124,15 @@ TEST(CadSheet, BadElectrodePointsAndFilesAreRefusedInOneLine) {
   nlohmann::json missing = j;
   missing["shape"]["file"] = dir + "/missing.stp";
   EXPECT_NE(meshed(missing).find("missing.stp\": no such CAD file"), std::string::npos) << meshed(missing);
+  // Its area is known once read (502 mm²): at 1 µm that is 502 / (√3/4 · 1e-6) ≈ 1.16e9 triangles,
+  // refused before meshing.
+  nlohmann::json tiny = j;
+  tiny["mesh"]["element_size_mm"] = 0.001;
+  const Sensor tiny_sensor = parse_sensor(tiny);
+  EXPECT_NE(test::error_of([&] {
+              generate_mesh(tiny_sensor, reconstruction_mesh_options(tiny_sensor));
+            }).find(": about 1.16e+09 triangles at 0.001 mm, beyond the limit of 1e+06"),
+            std::string::npos);
   nlohmann::json no_electrodes = j;
   no_electrodes.erase("electrodes");
   EXPECT_EQ(test::error_of([&] { parse_sensor(no_electrodes); }),
