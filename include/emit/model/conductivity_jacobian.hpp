@@ -14,17 +14,12 @@
 #include "emit/core/types.hpp"
 #include "emit/fem/complete_electrode_model.hpp"
 #include "emit/mesh/mesh.hpp"
+#include "emit/sensor/excitation.hpp"
 
 namespace emit {
 
-/// One reading: the currents of a drive (column `drive` of the drives matrix) and the pair of
-/// electrodes read, U_plus − U_minus.
-struct EitReading {
-  int drive = 0;
-  int plus = 0, minus = 0;
-};
-
-/// J [V/S], #readings × #F, row i for readings[i]; `drives_A` is N × D, one drive per column.
+/// J [V/S], #readings × #F, row i for readings[i] (sensor/excitation.hpp: reading i's drive is
+/// column `drive` of `drives_A`, N × D).
 /// \throw InvalidInput for a reading naming a drive or electrode that does not exist.
 Matrix conductivity_jacobian(const Mesh& mesh, const CompleteElectrodeModel& model, const Matrix& drives_A,
                              const std::vector<EitReading>& readings);
