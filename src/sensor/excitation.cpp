@@ -1,4 +1,5 @@
 #include "emit/sensor/excitation.hpp"
+
 #include "emit/core/errors.hpp"
 
 namespace emit {
