@@ -32,8 +32,8 @@ std::vector<EitDrive> drive_pattern(const std::string& name, int electrode_count
   } else {
     throw InvalidInput("drive pattern \"" + name + "\": must be adjacent, opposite or skip-<s> (e.g. skip-4)");
   }
-  std::vector<EitDrive> drives;
-  for (int k = 0; k < N; ++k) drives.push_back({k, (k + skip + 1) % N});
+  std::vector<EitDrive> drives(static_cast<std::size_t>(N));
+  for (int k = 0; k < N; ++k) drives[static_cast<std::size_t>(k)] = {k, (k + skip + 1) % N};
   return drives;
 }
 
