@@ -30,8 +30,8 @@ Matrix conductivity_jacobian(const Mesh& mesh, const CompleteElectrodeModel& mod
   Matrix J(static_cast<Index>(readings.size()), mesh.triangle_count());
   for (Index t = 0; t < mesh.triangle_count(); ++t) {
     const auto v = mesh.triangles.row(t);
-    const Eigen::Matrix3d G = local_stiffness(mesh.nodes_mm.row(v[0]), mesh.nodes_mm.row(v[1]),
-                                              mesh.nodes_mm.row(v[2]), 1.0);
+    const Eigen::Matrix3d G =
+        local_stiffness(mesh.nodes_mm.row(v[0]), mesh.nodes_mm.row(v[1]), mesh.nodes_mm.row(v[2]), 1.0);
     for (std::size_t i = 0; i < readings.size(); ++i) {
       const EitReading& r = readings[i];
       const Index p = pair_column.at({r.plus, r.minus});
