@@ -17,6 +17,7 @@
 #include "emit/model/jacobian.hpp"
 #include "emit/model/method.hpp"
 #include "emit/model/reconstruction_model.hpp"
+#include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/press_contact.hpp"
@@ -132,10 +133,9 @@ struct CurvedBench {
         reference(twin.frame({})) {
     set_thread_count(1);
     for (const Vector2& c : charts_mm) {
-      const Vector3 p = surface_point_mm(sensor.shape, c);
-      Press press{p.x(), p.y(), press_radius_mm, press_radius_mm * press_radius_mm / 2};  // 0.16 N/mm²
-      press.z_mm = p.z();
-      frames.push_back(twin.frame({press}));
+      // r²/2 N: 0.16 N/mm².
+      frames.push_back(
+          twin.frame({press_at_chart(sensor.shape, c, press_radius_mm, press_radius_mm * press_radius_mm / 2)}));
     }
   }
 };

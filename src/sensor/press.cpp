@@ -59,6 +59,14 @@ Press parse_press(const std::string& text) {
   return Press{values[0], values[1], values[2], values[3]};
 }
 
+Press press_at_chart(const Shape& shape, const Vector2& chart_mm, double radius_mm, double force_N,
+                     PressProfile profile) {
+  const Vector3 point = surface_point_mm(shape, chart_mm);
+  Press press{point.x(), point.y(), radius_mm, force_N, profile};
+  press.z_mm = point.z();
+  return press;
+}
+
 Vector2 press_chart_mm(const Shape& shape, const Press& press) {
   return surface_chart_mm(shape, Vector3(press.x_mm, press.y_mm, press.z_mm));
 }

@@ -43,12 +43,7 @@ class Sampler {
                                                     : uniform(style_.min_force_N, style_.max_force_N);
   }
   /// A press centred on the sheet's point named by chart point p (sensor/surface.hpp).
-  Press press_at(const Vector2& p) {
-    const Vector3 point = surface_point_mm(surface_, p);
-    Press press{point.x(), point.y(), style_.radius_mm, force(), style_.profile};
-    press.z_mm = point.z();
-    return press;
-  }
+  Press press_at(const Vector2& p) { return press_at_chart(surface_, p, style_.radius_mm, force(), style_.profile); }
   bool admissible(const Vector2& p) const { return emit::admissible(surface_, border_, p, style_.margin_mm); }
   Vector2 random_point() {
     for (int attempt = 0; attempt < 100000; ++attempt) {

@@ -8,6 +8,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/sheet_chart.hpp"
+#include "emit/sensor/press.hpp"
 #include "emit/sensor/surface.hpp"
 
 namespace emit {
@@ -30,7 +31,9 @@ double parse_number(const std::string& text, const std::string& spec) {
 }
 
 bool admissible(const Sensor& sensor, const Mesh& mesh, const Vector2& p, double margin_mm) {
-  if (sensor.border) return chart_distance_to_border_mm(sensor.shape, *sensor.border, p) >= margin_mm;
+  // A file's sheet read with its surface has an outline too (sensor/height_field.hpp).
+  if (sensor.border || (sensor.shape.surface && sensor.shape.surface->outline()))
+    return chart_distance_to_border_mm(sensor.shape, sheet_outline(sensor), p) >= margin_mm;
   return mesh.contains_xy(p);
 }
 
@@ -81,10 +84,7 @@ SimSource::SimSource(const Sensor& sensor, const SimScript& script, const Source
 }
 
 Press SimSource::press_at(const Vector2& chart_mm, double force_N) const {
-  const Vector3 point = surface_point_mm(sensor_.shape, chart_mm);
-  Press press{point.x(), point.y(), script_.radius_mm, force_N};
-  press.z_mm = point.z();
-  return press;
+  return press_at_chart(sensor_.shape, chart_mm, script_.radius_mm, force_N);
 }
 
 SimSource::~SimSource() {

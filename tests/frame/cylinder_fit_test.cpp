@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/pipeline/pipeline.hpp"
+#include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/twin.hpp"
@@ -16,12 +17,7 @@ namespace emit {
 namespace {
 
 /// A press of radius 4 mm and 10 N centred on the sheet's point at chart point c.
-Press press_at(const Shape& shape, const Vector2& chart_mm) {
-  const Vector3 p = surface_point_mm(shape, chart_mm);
-  Press press{p.x(), p.y(), 4, 10};
-  press.z_mm = p.z();
-  return press;
-}
+Press press_at(const Shape& shape, const Vector2& chart_mm) { return press_at_chart(shape, chart_mm, 4, 10); }
 
 // The sleeve R = 15 mm, L = 60 mm, 8 electrodes on each rim: presses at the top, the side, the
 // bottom (the chart's seam, v = 0 = 2πR) and just either side of it are found where they are.

@@ -8,6 +8,7 @@
 
 #include "emit/mesh/sheet_file.hpp"
 #include "emit/pipeline/pipeline.hpp"
+#include "emit/sensor/press.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/twin.hpp"
 #include "test_support.hpp"
@@ -29,9 +30,8 @@ TEST(FingertipFit, PressesAreFoundWhereTheyAreOnTheCadSkin) {
   const Twin twin(sensor);
   reconstructor.set_reference(twin.exact_frame({}));
   for (const Vector2& c : {Vector2(0, 0), Vector2(-8, 4), Vector2(5, -3), Vector2(-11, -5), Vector2(3, 4.5)}) {
-    const Vector3 p = surface_point_mm(sensor.shape, c);
-    Press press{p.x(), p.y(), 2.5, 2};
-    press.z_mm = p.z();
+    const Press press = press_at_chart(sensor.shape, c, 2.5, 2);
+    const Vector3 p(press.x_mm, press.y_mm, press.z_mm);
     const auto& contacts = reconstructor.process(twin.exact_frame({press}));
     ASSERT_EQ(contacts.size(), 1u) << c.transpose();
     const Contact& contact = contacts[0];

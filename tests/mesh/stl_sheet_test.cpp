@@ -14,6 +14,7 @@
 #include "emit/mesh/sheet_file.hpp"
 #include "emit/mesh/stl_sheet.hpp"
 #include "emit/pipeline/pipeline.hpp"
+#include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/twin.hpp"
@@ -71,9 +72,8 @@ TEST(StlSheet, TheFingertipAsStlHasItsElectrodesAndFitsAPress) {
   Reconstructor reconstructor = pipeline.reconstructor();
   const Twin twin(sensor);
   reconstructor.set_reference(twin.exact_frame({}));
-  const Vector3 p = surface_point_mm(sensor.shape, {-6, 2});
-  Press press{p.x(), p.y(), 2.5, 2};
-  press.z_mm = p.z();
+  const Press press = press_at_chart(sensor.shape, {-6, 2}, 2.5, 2);
+  const Vector3 p(press.x_mm, press.y_mm, press.z_mm);
   const auto& contacts = reconstructor.process(twin.exact_frame({press}));
   ASSERT_EQ(contacts.size(), 1u);
   const double error_mm = (Vector3(contacts[0].x_mm, contacts[0].y_mm, contacts[0].z_mm) - p).norm();

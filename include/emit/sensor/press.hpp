@@ -38,6 +38,11 @@ using PressSequence = std::vector<std::vector<Press>>;
 /// Parse "x,y,r,F" (mm, mm, mm, N) or "x,y,z,r,F". \throw InvalidInput naming the text.
 Press parse_press(const std::string& text);
 
+/// A press centred on the sheet's point named by chart point c (sensor/surface.hpp): its x, y
+/// and z are that point's.
+Press press_at_chart(const Shape& shape, const Vector2& chart_mm, double radius_mm, double force_N,
+                     PressProfile profile = PressProfile::flat);
+
 /// The chart point (sensor/surface.hpp) of the sheet's point where the press is centred.
 Vector2 press_chart_mm(const Shape& shape, const Press& press);
 
