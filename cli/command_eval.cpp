@@ -12,6 +12,7 @@
 #include "emit/core/quote_input.hpp"
 #include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
+#include "emit/jobs/real_eval_job.hpp"
 #include "emit/pipeline/pipeline.hpp"
 
 namespace emit::cli {
@@ -28,6 +29,9 @@ struct EvalArgs {
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
   RealisticEvalOptions realistic_options;
+  RealEvalJob real;  ///< --real DIR: a real skin's presses
+  long long test_from = -1;
+  std::vector<std::string> curve;  ///< --curve: numbers, or "none"
 };
 
 /// `--realistic`'s SEED: a whole number 0 or larger (not CLI11's unsigned parse, which takes -1).
@@ -134,7 +138,49 @@ void print_mismatches(const SheetEvaluation& e) {
   }
 }
 
+void print_stats(const char* what, const ErrorStats& e) {
+  std::printf("  %-44s %6.2f +/- %5.2f mm (median %.2f, p95 %.2f; %d presses%s)\n", what, e.mean, e.std, e.median,
+              e.p95, e.count, e.missed > 0 ? (", " + std::to_string(e.missed) + " not found").c_str() : "");
+}
+
+/// `emit eval --real DIR --sensor S`: a real skin's presses, calibrated on the first N.
+void run_real(EvalArgs& args) {
+  RealEvalJob& job = args.real;
+  if (job.sensor_path.empty()) throw InvalidInput("--real: give the skin's description with --sensor FILE");
+  job.options.test_from = static_cast<Index>(args.test_from);
+  if (!args.curve.empty()) {
+    job.options.curve.clear();
+    if (args.curve != std::vector<std::string>{"none"})
+      for (std::string n : args.curve) {
+        if (const std::string error = positive_integer()(n); !error.empty())
+          throw InvalidInput("--curve: " + error + " (or none)");
+        job.options.curve.push_back(std::stol(n));
+      }
+  }
+  job.plots_dir = args.plots_dir;
+  const RealEvalReport report = run_real_eval_job(job, stderr_progress(20));
+  const RealEvaluation& e = report.evaluation;
+  std::printf("emit eval --real %s: %s, %ld presses of %ld readings; calibrated on presses 0-%ld, held out %ld-%ld\n",
+              job.folder.c_str(), report.sensor_name.c_str(), static_cast<long>(e.presses),
+              static_cast<long>(e.readings), static_cast<long>(e.calibration_presses - 1),
+              static_cast<long>(e.test_from), static_cast<long>(e.presses - 1));
+  std::printf("  press response: degree %d, shrinkage %.1f (chosen by %d-fold cross-validation: %.2f mm)\n",
+              e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm);
+  print_stats("held-out presses, position error", e.held_out);
+  print_stats("always answering the presses' centre", e.held_out_centre);
+  std::printf("  %.2f ms a frame\n", e.ms_per_frame);
+  std::printf("  against calibration presses (held-out mean; cross-validated; degree):\n");
+  for (const RealCurvePoint& p : e.curve)
+    std::printf("    %4ld presses: %6.2f mm   %6.2f mm   %d\n", static_cast<long>(p.calibration_presses),
+                p.held_out.mean, p.kept.cross_validated_mm, p.kept.degree);
+  if (!job.contacts_path.empty())
+    std::printf("  contacts: %s (presses %ld on)\n", job.contacts_path.c_str(),
+                static_cast<long>(e.calibration_presses));
+  if (!report.plot_path.empty()) std::printf("  plot: %s\n", report.plot_path.c_str());
+}
+
 void run_eval(EvalArgs args) {
+  if (!args.real.folder.empty()) return run_real(args);
   if (args.realistic->count() > 0) return run_realistic(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
@@ -185,6 +231,31 @@ void add_eval_command(CLI::App& app) {
                                  "60 mm sheet unless --sheet says; --methods, --lambda2 and the sweep do not apply")
                      ->expected(0, 1)
                      ->type_name("[SEED]");
+  CLI::Option* real =
+      cmd->add_option("--real", a->real.folder,
+                      "A real skin's presses: a folder of frames.csv, references_per_frame.csv (or reference.csv) and "
+                      "truth.csv (README \"Real skins\"); calibrate on the first presses, locate the rest")
+          ->type_name("DIR");
+  cmd->add_option("--sensor", a->real.sensor_path, "With --real: the skin's description, with its \"excitation\"")
+      ->type_name("FILE")
+      ->needs(real);
+  cmd->add_option("--calibration-presses", a->real.options.calibration_presses,
+                  "With --real: calibrate on this many first presses")
+      ->check(positive_integer())
+      ->capture_default_str()
+      ->needs(real);
+  cmd->add_option("--test-from", a->test_from, "With --real: the held-out presses begin here (default: the last fifth)")
+      ->check(positive_integer())
+      ->needs(real);
+  cmd->add_option("--curve", a->curve,
+                  "With --real: the numbers of calibration presses to measure the error against, or none "
+                  "(default 20,30,50,75,100,150,200,300,440; those past the held-out presses are skipped)")
+      ->delimiter(',')
+      ->needs(real);
+  cmd->add_option("--contacts", a->real.contacts_path,
+                  "With --real: write the located presses as JSON Lines (\"frame\": the row of frames.csv)")
+      ->type_name("FILE")
+      ->needs(real);
   cmd->add_flag("!--no-mismatches", o.mismatches, "Skip the sensor-mismatch runs");
   cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
       ->capture_default_str();

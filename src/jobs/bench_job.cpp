@@ -76,6 +76,7 @@ ChildReport<Result> run_in_child(Work&& work, double& peak_MiB) {
 
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row, const Progress& progress) {
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
+  require_emit_protocol(sensor, job.sensor_path);
   const std::string scratch =
       (std::filesystem::temp_directory_path() / ("emit-bench-" + std::to_string(::getpid()))).string();
   int failures = 0;

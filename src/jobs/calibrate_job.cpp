@@ -48,6 +48,7 @@ ContactLawFit fit_law_from_pairs(const std::string& path, std::size_t& pairs) {
 
 PressCalibrationResult calibrate_presses(const CalibrateJob& job, const Progress& progress) {
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
+  require_emit_protocol(sensor, job.sensor_path);
   const int N = electrode_count_of(sensor);
   const Frame reference = detail::read_reference(job.reference_path, sensor, N, progress);
   const std::vector<Frame> frames = read_frames_csv(job.frames_path, N);

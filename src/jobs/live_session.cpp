@@ -45,6 +45,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
   s.sensor = load_sheet_sensor(job.sensor_path);
+  require_emit_protocol(s.sensor, job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);

@@ -77,6 +77,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                  {"--calibration", job.calibration_path}},
                 {{"--contacts", job.contacts_path}});
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
+  require_emit_protocol(sensor, job.sensor_path);
   std::optional<Calibration> calibration;
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);

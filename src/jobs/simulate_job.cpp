@@ -65,6 +65,7 @@ void write_potential_images(Twin& twin, const PressSequence& sequence, const std
 SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress) {
   SimulateReport report;
   report.sensor = load_sheet_sensor(job.sensor_path);
+  require_emit_protocol(report.sensor, job.sensor_path);
   Sensor& sensor = report.sensor;
   if (job.noise_V >= 0) sensor.adc.noise_V = job.noise_V;
   if (!job.presses.empty() && job.script) throw InvalidInput("give --press or --script, not both");

@@ -1,6 +1,7 @@
 #include "emit/sensor/excitation.hpp"
 
 #include "emit/core/errors.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -48,6 +49,13 @@ std::vector<EitReading> adjacent_readings(const std::vector<EitDrive>& drives, i
       readings.push_back({static_cast<int>(d), plus, minus});
     }
   return readings;
+}
+
+void require_emit_protocol(const Sensor& sensor, const std::string& where) {
+  if (sensor.excitation)
+    throw InvalidInput(where +
+                       ": is a current-injection skin (it has an \"excitation\"); this command models EMIT sheets. "
+                       "Locate its presses with emit eval --real DIR --sensor FILE");
 }
 
 }  // namespace emit

@@ -1,5 +1,6 @@
 #include "emit/sensor/sensor_json.hpp"
 
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -271,6 +272,113 @@ std::vector<double> parse_series_resistance(ObjectReader& r, const Sensor& senso
   return values;
 }
 
+/// An electrode index in a protocol's list: an integer in [0, N).
+int electrode_index(const json& v, int electrode_count, const std::string& where) {
+  if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= electrode_count)
+    ObjectReader::fail(where,
+                       "must be an electrode number 0 to " + std::to_string(electrode_count - 1) + ", got " + shown(v));
+  return static_cast<int>(v.get<long long>());
+}
+
+/// A list of [a, b] electrode pairs (drives: [source, sink]; readings: [+, −]), a ≠ b.
+std::vector<std::array<int, 2>> electrode_pairs(const json& v, int electrode_count, const std::string& where,
+                                                const char* form) {
+  if (!v.is_array() || v.empty()) ObjectReader::fail(where, std::string("must be a list of ") + form);
+  std::vector<std::array<int, 2>> pairs;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    if (!v[i].is_array() || v[i].size() != 2)
+      ObjectReader::fail(at, std::string("must be ") + form + ", got " + shown(v[i]));
+    const int a = electrode_index(v[i][0], electrode_count, at);
+    const int b = electrode_index(v[i][1], electrode_count, at);
+    if (a == b) ObjectReader::fail(at, "names electrode " + std::to_string(a) + " twice");
+    pairs.push_back({a, b});
+  }
+  return pairs;
+}
+
+/// "excitation": a current-injection protocol (sensor/excitation.hpp). The frame's values are the
+/// readings in order: drive by drive, each drive's pairs as "measure" lists them (less those that
+/// touch the drive, if "skip_driving_electrodes"), or exactly "readings" ([drive, +, −] each).
+Excitation parse_excitation(const json& j, int electrode_count) {
+  ObjectReader r(j, "excitation");
+  Excitation e;
+  e.current_A = r.number_or("current_A", e.current_A, Sign::positive);
+  e.frequency_Hz = r.number_or("frequency_Hz", e.frequency_Hz, Sign::non_negative);
+  if (electrode_count < 3) ObjectReader::fail("excitation", "a current-injection skin needs at least 3 electrodes");
+  const json& drive = r.value("drive");
+  if (drive.is_string()) {
+    try {
+      e.drives = drive_pattern(drive.get<std::string>(), electrode_count);
+    } catch (const InvalidInput& error) {
+      ObjectReader::fail("excitation.drive", error.what());
+    }
+  } else {
+    for (const auto& [source, sink] : electrode_pairs(drive, electrode_count, "excitation.drive", "[source, sink]"))
+      e.drives.push_back({source, sink});
+  }
+  const int drives = static_cast<int>(e.drives.size());
+  if (r.has("readings")) {
+    if (r.has("measure") || r.has("skip_driving_electrodes"))
+      ObjectReader::fail("excitation.readings", "lists every reading: give it or \"measure\", not both");
+    const json& v = r.value("readings");
+    if (!v.is_array() || v.empty()) ObjectReader::fail("excitation.readings", "must be a list of [drive, +, -]");
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::string at = "excitation.readings[" + std::to_string(i) + "]";
+      if (!v[i].is_array() || v[i].size() != 3) ObjectReader::fail(at, "must be [drive, +, -], got " + shown(v[i]));
+      if (!v[i][0].is_number_integer() || v[i][0].get<long long>() < 0 || v[i][0].get<long long>() >= drives)
+        ObjectReader::fail(at, "its drive must be 0 to " + std::to_string(drives - 1) + ", got " + shown(v[i][0]));
+      const int plus = electrode_index(v[i][1], electrode_count, at),
+                minus = electrode_index(v[i][2], electrode_count, at);
+      if (plus == minus) ObjectReader::fail(at, "reads electrode " + std::to_string(plus) + " against itself");
+      e.readings.push_back({static_cast<int>(v[i][0].get<long long>()), plus, minus});
+    }
+  } else {
+    bool skip = false;
+    if (r.has("skip_driving_electrodes")) {
+      const json& v = r.value("skip_driving_electrodes");
+      if (!v.is_boolean())
+        ObjectReader::fail("excitation.skip_driving_electrodes", "must be true or false, got " + shown(v));
+      skip = v.get<bool>();
+    }
+    const json& measure = r.has("measure") ? r.value("measure") : json("adjacent");
+    if (measure.is_string()) {
+      if (measure.get<std::string>() != "adjacent")
+        ObjectReader::fail("excitation.measure",
+                           "must be \"adjacent\" or a list of [+, -] pairs, got " + shown(measure));
+      e.readings = adjacent_readings(e.drives, electrode_count, skip);
+    } else {
+      const auto pairs = electrode_pairs(measure, electrode_count, "excitation.measure", "[+, -]");
+      for (int d = 0; d < drives; ++d)
+        for (const auto& [plus, minus] : pairs) {
+          const EitDrive& drive_d = e.drives[static_cast<std::size_t>(d)];
+          const auto driving = [&](int k) { return k == drive_d.source || k == drive_d.sink; };
+          if (!skip || !(driving(plus) || driving(minus))) e.readings.push_back({d, plus, minus});
+        }
+    }
+    if (e.readings.empty()) ObjectReader::fail("excitation.measure", "leaves no reading");
+  }
+  if (r.has("contact_impedance_ohm_mm")) {
+    const json& v = r.value("contact_impedance_ohm_mm");
+    const auto ohm_mm = [&](const json& x) {
+      if (!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0)
+        ObjectReader::fail("excitation.contact_impedance_ohm_mm",
+                           "must be a number of ohm mm, not negative, or a list of one per electrode; got " + shown(x));
+      return x.get<double>();
+    };
+    if (v.is_array()) {
+      for (const json& x : v) e.contact_impedance_ohm_mm.push_back(ohm_mm(x));
+      if (static_cast<int>(e.contact_impedance_ohm_mm.size()) != electrode_count)
+        ObjectReader::fail("excitation.contact_impedance_ohm_mm",
+                           std::to_string(v.size()) + " values for " + std::to_string(electrode_count) + " electrodes");
+    } else {
+      e.contact_impedance_ohm_mm.assign(static_cast<std::size_t>(electrode_count), ohm_mm(v));
+    }
+  }
+  r.finish();
+  return e;
+}
+
 }  // namespace
 
 namespace {
@@ -355,6 +463,16 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
     sensor.adc.vref_V = a.number_or("vref_V", sensor.adc.vref_V, Sign::positive);
     sensor.adc.noise_V = a.number_or("noise_V", sensor.adc.noise_V, Sign::non_negative);
     a.finish();
+  }
+  if (r.has("excitation")) {
+    const Shape& shape = sensor.shape;
+    const bool file_electrodes = shape.kind == ShapeKind::mesh_file;
+    if (file_electrodes && shape.electrode_at_mm.empty())
+      ObjectReader::fail("excitation",
+                         "a .msh sensor's electrodes are counted only when its file is read; "
+                         "give the sheet as CAD or STL with its electrodes listed");
+    const int count = file_electrodes ? static_cast<int>(shape.electrode_at_mm.size()) : sensor.electrode_count();
+    sensor.excitation = parse_excitation(r.value("excitation"), count);
   }
   if (r.has("mesh")) {
     ObjectReader m(r.value("mesh"), "mesh");
@@ -476,6 +594,16 @@ json sensor_to_json(const Sensor& sensor) {
   j["contact_law"] = {{"alpha_ohm_mm2", sensor.contact.alpha_ohm_mm2},
                       {"gamma", sensor.contact.gamma},
                       {"min_pressure_N_per_mm2", sensor.contact.min_pressure_N_per_mm2}};
+  if (const auto& e = sensor.excitation) {
+    json readings = json::array(), drives = json::array();
+    for (const EitDrive& d : e->drives) drives.push_back({d.source, d.sink});
+    for (const EitReading& m : e->readings) readings.push_back({m.drive, m.plus, m.minus});
+    j["excitation"] = {{"current_A", e->current_A},
+                       {"frequency_Hz", e->frequency_Hz},
+                       {"drive", drives},
+                       {"readings", readings}};
+    if (!e->contact_impedance_ohm_mm.empty()) j["excitation"]["contact_impedance_ohm_mm"] = e->contact_impedance_ohm_mm;
+  }
   j["adc"] = {{"bits", sensor.adc.bits}, {"vref_V", sensor.adc.vref_V}, {"noise_V", sensor.adc.noise_V}};
   j["mesh"] = {{"element_size_mm", sensor.mesh.element_size_mm},
                {"twin_refinement", sensor.mesh.twin_refinement},

@@ -1,4 +1,5 @@
 // End to end: the emit CLI run as a user runs it, on good and on bad input.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -833,6 +834,58 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return name;
     });
+
+}  // namespace
+}  // namespace emit
+
+namespace emit {
+namespace {
+
+/// The real hydrogel skin's presses (../shared/real, not in the repository), or "" when absent.
+std::string hydrogel_folder() {
+  const std::string dir = std::string(EMIT_REAL_DATA_DIR) + "/hardman_hydrogel";
+  return std::ifstream(dir + "/frames.csv").good() ? dir : "";
+}
+
+// emit eval --real as a user runs it on the real hydrogel skin (Hardman et al. 2023): calibrated on
+// its first 100 presses, the held-out presses 440–549 are located within issue 16's target of
+// 5 mm mean (4.68 mm measured; the data set's kNN floor is 8.1 mm with 440 presses, the authors'
+// own method 11–14 mm); every later press is written as a contact, and the curve is drawn.
+TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
+  const std::string data = hydrogel_folder();
+  if (data.empty()) GTEST_SKIP() << "no real data at " << EMIT_REAL_DATA_DIR << " (cmake -DEMIT_REAL_DATA_DIR=...)";
+  const std::string d = test::temp_folder("cli_eval_real");
+  const std::string sensor = test::source_path("examples/sensors/hydrogel_hardman.json");
+  const auto r = run_emit("eval --real " + data + " --sensor " + sensor + " --calibration-presses 100 --curve 50 " +
+                          "--contacts " + d + "/contacts.jsonl --plots " + d + "/plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  double mean_mm = -1;
+  ASSERT_EQ(read_row(r.out, "held-out presses, position error", " %lf", &mean_mm), 1) << r.out;
+  EXPECT_LT(mean_mm, 5.0) << r.out;
+  EXPECT_GT(mean_mm, 0.0) << r.out;
+  EXPECT_NE(r.out.find("   50 presses:"), std::string::npos) << r.out;
+  const std::string contacts = test::read_text(d + "/contacts.jsonl");
+  EXPECT_EQ(std::count(contacts.begin(), contacts.end(), '\n'), 450);
+  long frame = -1;
+  const std::vector<Contact> first = parse_contacts_line(contacts.substr(0, contacts.find('\n')), &frame);
+  EXPECT_EQ(frame, 100);
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_LT(std::hypot(first[0].x_mm, first[0].y_mm), 72.0);  // within the presses' reach
+  EXPECT_TRUE(std::ifstream(d + "/plots/real_error_vs_calibration.png").good());
+
+  // A sensor without a protocol, and an EMIT command given the current-injection skin: one line each.
+  const auto emit_sheet = run_emit("eval --real " + data + " --sensor " +
+                                   test::source_path("examples/sensors/circle40.json") + " --curve none --plots ''");
+  EXPECT_EQ(emit_sheet.exit_code, 1);
+  EXPECT_NE(emit_sheet.err.find("circle40.json: has no \"excitation\""), std::string::npos) << emit_sheet.err;
+  const auto simulate = run_emit("simulate --sensor " + sensor + " --press 0,0,3,1 --out " + d + "/f.csv");
+  EXPECT_EQ(simulate.exit_code, 1);
+  EXPECT_NE(simulate.err.find("is a current-injection skin"), std::string::npos) << simulate.err;
+  EXPECT_FALSE(std::ifstream(d + "/f.csv").good());
+  const auto alone = run_emit("eval --contacts " + d + "/c.jsonl");
+  EXPECT_EQ(alone.exit_code, 2);
+  EXPECT_NE(alone.err.find("--contacts requires --real"), std::string::npos) << alone.err;
+}
 
 }  // namespace
 }  // namespace emit

@@ -29,7 +29,7 @@ TEST(Excitation, OppositeDriveAndAdjacentPairsAreTheHydrogelBoardsTable) {
   }
   // Without skipping, every drive reads all 16 pairs (pyEIT's default).
   EXPECT_EQ(adjacent_readings(drives, 16, false).size(), 256u);
-  Excitation excitation{2e-3, 25e3, drives, readings};
+  Excitation excitation{2e-3, 25e3, drives, readings, {}};
   const Matrix I = excitation.drive_currents_A(16);
   EXPECT_EQ(I(0, 0), 2e-3);
   EXPECT_EQ(I(8, 0), -2e-3);

@@ -29,6 +29,9 @@ struct Excitation {
   double frequency_Hz = 0;  ///< documentation only: the model is resistive
   std::vector<EitDrive> drives;
   std::vector<EitReading> readings;  ///< in the frame's order
+  /// Each electrode's contact impedance per length of its edge [Ω·mm] (complete electrode model;
+  /// a contact of Ω·mm² on a sheet t mm thick is that over t); empty or 0: the shunt model.
+  std::vector<double> contact_impedance_ohm_mm;
 
   /// The drives as currents [A], electrode_count × #drives: +current_A at the source, − at the sink.
   Matrix drive_currents_A(int electrode_count) const;

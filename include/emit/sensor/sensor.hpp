@@ -10,6 +10,7 @@
 
 #include "emit/core/types.hpp"
 #include "emit/sensor/border.hpp"
+#include "emit/sensor/excitation.hpp"
 #include "emit/sensor/height_field.hpp"
 
 namespace emit {
@@ -99,9 +100,17 @@ struct Sensor {
   std::vector<double> series_resistance_ohm;
   ContactLaw contact;
   AdcSpec adc;
+  /// A current-injection skin (issue 16): its drives and readings, the frame's order. Empty: the
+  /// EMIT protocol (ground each electrode in turn, read the others).
+  std::optional<Excitation> excitation;
   MeshSpec mesh;
 
   int electrode_count() const { return static_cast<int>(electrodes.size()); }
 };
+
+/// For the commands that model an EMIT sheet (simulate, reconstruct, calibrate, live, bench):
+/// \throw InvalidInput "<where>: is a current-injection skin (its \"excitation\") …" when the
+/// sensor has an excitation, pointing to `emit eval --real`.
+void require_emit_protocol(const Sensor& sensor, const std::string& where);
 
 }  // namespace emit

@@ -13,6 +13,9 @@
 ///   drive_voltage_V, probing_sheet_resistance_ohm_per_sq
 ///   contact_law  {alpha_ohm_mm2, gamma, min_pressure_N_per_mm2}
 ///   adc          {bits, vref_V, noise_V}
+///   excitation   {current_A, frequency_Hz, drive: "adjacent" | "opposite" | "skip-s" | [[source, sink], ...],
+///                 measure: "adjacent" | [[+, -], ...], skip_driving_electrodes, contact_impedance_ohm_mm}
+///              | {..., drive, readings: [[drive, +, -], ...]}  a current-injection skin (sensor/excitation.hpp)
 ///   mesh         {element_size_mm, twin_refinement}
 #include <string>
 

@@ -1,0 +1,46 @@
+#pragma once
+/// \file press_response_fit.hpp
+/// A current-injection skin's press response (model/press_response.hpp) fitted to presses of
+/// known place: for each candidate degree and shrinkage, W by least squares (a ridge of 1e-6 per
+/// press keeps a degree with more terms than presses solvable), Λ from the residuals'
+/// covariance S as ((1 − ρ) S + ρ diag S)⁻¹; the candidate kept is the one whose presses are
+/// located best by k-fold cross-validation (each fold located by a model fitted without it,
+/// frame/press_locator.hpp). Nothing is tuned on presses outside the calibration set.
+#include <vector>
+
+#include "emit/core/progress.hpp"
+#include "emit/core/types.hpp"
+#include "emit/model/press_response.hpp"
+
+namespace emit {
+
+struct PressResponseFitOptions {
+  std::vector<int> degrees{2, 3, 4, 5, 6};
+  std::vector<double> shrinkages{0.1, 0.3, 0.6, 1.0};  ///< ρ, each in [0, 1]
+  int folds = 10;                                      ///< for the cross-validation; at most the number of presses
+  double grid_step_mm = 4;      ///< the cross-validation's location grid (coarser than per frame)
+  double region_margin_mm = 0;  ///< the region reaches this beyond the farthest calibration press
+
+  /// \throw InvalidInput naming the option and the rule it breaks.
+  void validate() const;
+};
+
+struct PressResponseCandidate {
+  int degree = 0;
+  double shrinkage = 0;
+  double cross_validated_mm = 0;  ///< mean position error of the held-out folds
+};
+
+struct PressResponseFit {
+  PressResponse response;
+  PressResponseCandidate kept;                     ///< the one `response` is
+  std::vector<PressResponseCandidate> candidates;  ///< every one tried, the kept one among them
+};
+
+/// changes: one row per press, its change (relative_change's, normalised; the fit itself takes
+/// any scale); positions_mm: its centre. \throw InvalidInput for fewer than 2 × folds presses, or rows and positions
+/// that differ in number.
+PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
+                                    const PressResponseFitOptions& options = {}, const Progress& progress = {});
+
+}  // namespace emit

@@ -1,0 +1,56 @@
+#pragma once
+/// \file press_locator.hpp
+/// Where a current-injection skin was pressed, from a learned press response
+/// (model/press_response.hpp): the centre p that maximises the likelihood with a free amplitude,
+///   score(p) = (dᵀΛm(p))² / (m(p)ᵀΛm(p))  for dᵀΛm(p) > 0,
+/// searched on a grid over the response's region, then refined about the best grid point on
+/// finer and finer grids (the score is smooth in p). Assemble once: the grid's predicted changes
+/// and Λ times them are formed in the constructor; per frame it is one M × M and one G × M
+/// product (G grid points) and a few hundred refinement points, and allocates nothing.
+#include "emit/core/types.hpp"
+#include "emit/model/press_response.hpp"
+
+namespace emit {
+
+struct LocatedPress {
+  bool found = false;  ///< false: the frame did not change, or a value was not positive and finite
+  Vector2 position_mm{0, 0};
+  /// The frame's change from its reference, rms over the readings: ‖log(V / V_ref)‖ / √M (the
+  /// hydrogel's presses change it by 1 – 3 %; model/press_response.hpp).
+  double relative_change_rms = 0;
+  /// How much of the change the model explains, in Λ's metric: (dᵀΛm)² / (mᵀΛm · dᵀΛd), in [0, 1].
+  double explained = 0;
+};
+
+class PressLocator {
+ public:
+  /// grid_step_mm: the first search's spacing (the refinement then halves it five times).
+  /// \throw InvalidInput for a non-positive step or a response with no region.
+  explicit PressLocator(PressResponse response, double grid_step_mm = 2.0);
+
+  /// frame and reference: M values each (model/press_response.hpp). \throw InvalidInput for a
+  /// wrong size (the only check that allocates, on the error path).
+  LocatedPress locate(const Eigen::Ref<const Vector>& frame, const Eigen::Ref<const Vector>& reference);
+
+  /// The same for a change already formed (relative_change: unit norm, M values).
+  LocatedPress locate_change(const Eigen::Ref<const Vector>& change);
+
+  const PressResponse& response() const { return response_; }
+  Index grid_points() const { return grid_mm_.cols(); }
+
+ private:
+  /// The search for change_.
+  LocatedPress locate_normalised();
+  /// The score at p (−1 where dᵀΛm ≤ 0), from weighted_change_; fills predicted_ and weighted_predicted_.
+  double score_at(const Vector2& p_mm);
+
+  PressResponse response_;
+  Eigen::Matrix2Xd grid_mm_;  ///< 2 × G
+  Matrix weighted_grid_;      ///< G × M: row g = (Λ m(p_g))ᵀ
+  Vector grid_norm2_;         ///< G: m(p_g)ᵀ Λ m(p_g)
+  double grid_step_mm_;
+  // Per-frame scratch, sized once.
+  Vector change_, weighted_change_, grid_scores_, basis_, predicted_, weighted_predicted_;
+};
+
+}  // namespace emit

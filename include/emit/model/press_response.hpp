@@ -1,0 +1,45 @@
+#pragma once
+/// \file press_response.hpp
+/// A skin's response to a press, learned from presses of known place (issue 16, touch
+/// localisation on real skins; docs/physics.md, "Touch localisation from calibration presses").
+/// A frame of a current-injection skin is M readings; a press changes them from the unpressed
+/// reference taken just before it. Its relative change, normalised,
+///   d = log(V / V_ref) / ‖log(V / V_ref)‖,
+/// is modelled as a smooth function of the press's centre p plus noise:
+///   d(p) ≈ Wᵀ b(p),   b(p) = the monomials of (p − c)/s up to `degree` (degree 2: 1, u, v, u², uv, v²),
+/// with the noise's precision Λ (the inverse of the residual covariance, shrunk towards its
+/// diagonal). The press is then located by maximum likelihood with a free amplitude a ≥ 0:
+/// min over (p, a) of (d − a m(p))ᵀ Λ (d − a m(p)), m(p) = Wᵀ b(p), i.e. max (dᵀΛm)² / (mᵀΛm)
+/// over dᵀΛm > 0 (frame/press_locator.hpp). The model needs no geometry: the electrodes' places,
+/// the skin's scale and its contact impedances are all in W, which is why a skin whose geometry is
+/// only roughly known is calibrated as well as one drawn exactly.
+///
+/// Fitted by calibrate/press_response_fit.hpp; this file holds the model and its evaluation.
+#include "emit/core/types.hpp"
+
+namespace emit {
+
+struct PressResponse {
+  int degree = 0;               ///< of the monomials in b(p)
+  Vector2 center_mm{0, 0};      ///< c: the calibration presses' centre
+  double scale_mm = 1;          ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
+  double region_radius_mm = 0;  ///< presses are looked for within this of c (the calibration's reach)
+  Matrix coefficients;          ///< W, basis_size(degree) × M
+  Matrix precision;             ///< Λ, M × M, symmetric positive definite
+
+  Index readings() const { return coefficients.cols(); }
+  /// b(p) into `basis` (basis_size(degree) entries). Allocates nothing.
+  void basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) const;
+};
+
+/// The number of monomials in two variables up to `degree`: (degree + 1)(degree + 2)/2.
+Index response_basis_size(int degree);
+
+/// The normalised relative change d of a frame against its reference into `change` (M entries).
+/// Allocates nothing. \return ‖log(V / V_ref)‖, the size of the change before normalising; 0,
+/// leaving `change` unspecified, when a value or a reference is not positive and finite, or when
+/// the frame equals its reference (no change to normalise).
+double relative_change(const Eigen::Ref<const Vector>& frame, const Eigen::Ref<const Vector>& reference,
+                       Eigen::Ref<Vector> change);
+
+}  // namespace emit

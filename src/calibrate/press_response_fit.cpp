@@ -1,0 +1,107 @@
+#include "emit/calibrate/press_response_fit.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include "emit/core/errors.hpp"
+#include "emit/frame/press_locator.hpp"
+
+namespace emit {
+
+void PressResponseFitOptions::validate() const {
+  if (degrees.empty()) throw InvalidInput("press response: degrees: give at least one");
+  for (const int d : degrees)
+    if (d < 0 || d > 12) throw InvalidInput("press response: degrees: each must be 0 to 12, got " + std::to_string(d));
+  if (shrinkages.empty()) throw InvalidInput("press response: shrinkages: give at least one");
+  for (const double rho : shrinkages)
+    if (!(rho >= 0 && rho <= 1))
+      throw InvalidInput("press response: shrinkages: each must be in [0, 1], got " + std::to_string(rho));
+  if (folds < 2) throw InvalidInput("press response: folds must be at least 2, got " + std::to_string(folds));
+  if (!(grid_step_mm > 0)) throw InvalidInput("press response: grid_step_mm must be positive");
+  if (!(region_margin_mm >= 0)) throw InvalidInput("press response: region_margin_mm must not be negative");
+}
+
+namespace {
+
+/// The response of one degree and shrinkage fitted to the presses `rows`, with the region given.
+PressResponse fit_one(const Matrix& changes, const std::vector<Vector2>& positions_mm, const std::vector<Index>& rows,
+                      int degree, double shrinkage, const PressResponse& frame_of_reference) {
+  PressResponse r = frame_of_reference;
+  r.degree = degree;
+  const Index n = static_cast<Index>(rows.size()), B = response_basis_size(degree), M = changes.cols();
+  Matrix basis(B, n), data(n, M);  // column i: press i's b(p)
+  for (Index i = 0; i < n; ++i) {
+    const Index row = rows[static_cast<std::size_t>(i)];
+    r.basis_at(positions_mm[static_cast<std::size_t>(row)], basis.col(i));
+    data.row(i) = changes.row(row);
+  }
+  Matrix normal = basis * basis.transpose();
+  normal.diagonal().array() += 1e-6 * static_cast<double>(n);
+  r.coefficients = normal.ldlt().solve(basis * data);
+  const Matrix residual = data - basis.transpose() * r.coefficients;
+  Matrix covariance = residual.transpose() * residual / static_cast<double>(n);
+  const Vector diagonal = covariance.diagonal();
+  covariance *= 1 - shrinkage;
+  covariance.diagonal() += shrinkage * diagonal;
+  // A floor under the diagonal keeps Λ finite for a reading the model fits exactly.
+  covariance.diagonal().array() += 1e-12 + 1e-9 * diagonal.mean();
+  r.precision = covariance.llt().solve(Matrix::Identity(M, M));
+  return r;
+}
+
+}  // namespace
+
+PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
+                                    const PressResponseFitOptions& options, const Progress& progress) {
+  options.validate();
+  const Index n = changes.rows();
+  if (static_cast<std::size_t>(n) != positions_mm.size())
+    throw InvalidInput("press response: " + std::to_string(n) + " changes for " + std::to_string(positions_mm.size()) +
+                       " positions");
+  if (n < 2 * options.folds)
+    throw InvalidInput("press response: " + std::to_string(n) + " calibration presses; at least " +
+                       std::to_string(2 * options.folds) + " are needed (" + std::to_string(options.folds) +
+                       "-fold cross-validation)");
+  // The chart: centred on the presses, scaled to their reach.
+  PressResponse base;
+  for (const Vector2& p : positions_mm) base.center_mm += p / static_cast<double>(n);
+  double reach = 0;
+  for (const Vector2& p : positions_mm) reach = std::max(reach, (p - base.center_mm).norm());
+  base.scale_mm = reach > 0 ? reach : 1;
+  base.region_radius_mm = reach + options.region_margin_mm;
+
+  PressResponseFit fit;
+  const long total = static_cast<long>(options.degrees.size() * options.shrinkages.size());
+  long done = 0;
+  for (const int degree : options.degrees)
+    for (const double shrinkage : options.shrinkages) {
+      progress.step("cross-validating press response", done++, total);
+      double error = 0;
+      for (int fold = 0; fold < options.folds; ++fold) {
+        std::vector<Index> train, test;
+        for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
+        PressLocator locator(fit_one(changes, positions_mm, train, degree, shrinkage, base), options.grid_step_mm);
+        for (const Index i : test) {
+          const LocatedPress located = locator.locate_change(changes.row(i).transpose());
+          error += located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
+                                 : 2 * base.region_radius_mm;
+        }
+      }
+      error /= static_cast<double>(n);
+      fit.candidates.push_back({degree, shrinkage, error});
+    }
+  progress.step("cross-validating press response", total, total);
+  const auto kept = std::min_element(fit.candidates.begin(), fit.candidates.end(), [](const auto& a, const auto& b) {
+    return a.cross_validated_mm < b.cross_validated_mm;
+  });
+  std::vector<Index> all(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
+  fit.response = fit_one(changes, positions_mm, all, kept->degree, kept->shrinkage, base);
+  fit.kept = *kept;
+  return fit;
+}
+
+}  // namespace emit

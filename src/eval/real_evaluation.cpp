@@ -1,0 +1,108 @@
+#include "emit/eval/real_evaluation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "emit/core/errors.hpp"
+
+namespace emit {
+
+void RealEvalOptions::validate(Index presses) const {
+  const Index held = test_from < 0 ? presses - presses / 5 : test_from;
+  if (held <= 0 || held >= presses)
+    throw InvalidInput("--test-from: must be between 1 and " + std::to_string(presses - 1) + " (the presses), got " +
+                       std::to_string(held));
+  if (calibration_presses < 2 * fit.folds || calibration_presses > held)
+    throw InvalidInput("--calibration-presses: must be between " + std::to_string(2 * fit.folds) + " and " +
+                       std::to_string(held) + " (the presses before the held-out ones), got " +
+                       std::to_string(calibration_presses));
+  fit.validate();
+  if (!(grid_step_mm > 0)) throw InvalidInput("grid step: must be positive");
+}
+
+namespace {
+
+/// The normalised changes of presses [first, last) as rows, and their centres. A frame whose
+/// change cannot be formed (a value not positive) is named.
+void changes_of(const RealDataset& data, Index first, Index last, Matrix& changes, std::vector<Vector2>& positions) {
+  changes.resize(last - first, data.readings());
+  positions.clear();
+  Vector change(data.readings());
+  for (Index i = first; i < last; ++i) {
+    if (!(relative_change(data.frames.row(i).transpose(), data.references.row(i).transpose(), change) > 0))
+      throw InvalidInput(data.folder + ": press " + std::to_string(i) +
+                         ": a value or its reference is not positive, or the frame equals its reference");
+    changes.row(i - first) = change.transpose();
+    positions.push_back(data.contacts[static_cast<std::size_t>(i)].front());
+  }
+}
+
+/// Locate presses from..end with `locator`; the errors of those from test_from on.
+ErrorStats held_out_errors(const RealDataset& data, PressLocator& locator, Index test_from,
+                           std::vector<LocatedPress>* located, Index from) {
+  std::vector<double> errors;
+  int missed = 0;
+  for (Index i = from; i < data.presses(); ++i) {
+    const LocatedPress p = locator.locate(data.frames.row(i).transpose(), data.references.row(i).transpose());
+    if (located) located->push_back(p);
+    if (i < test_from) continue;
+    if (p.found) errors.push_back((p.position_mm - data.contacts[static_cast<std::size_t>(i)].front()).norm());
+    else ++missed;
+  }
+  return summarize_errors(errors, missed);
+}
+
+}  // namespace
+
+RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, const RealEvalOptions& options,
+                             const Progress& progress) {
+  options.validate(data.presses());
+  if (!sensor.excitation)
+    throw InvalidInput("the sensor has no \"excitation\": emit eval --real needs a current-injection skin's protocol");
+  const auto M = static_cast<Index>(sensor.excitation->readings.size());
+  if (data.readings() != M)
+    throw InvalidInput(data.folder + "/frames.csv: " + std::to_string(data.readings()) +
+                       " values a frame, the sensor's " + "excitation reads " + std::to_string(M));
+  for (Index i = 0; i < data.presses(); ++i)
+    if (data.contacts[static_cast<std::size_t>(i)].size() != 1)
+      throw InvalidInput(data.folder + "/truth.csv: frame " + std::to_string(i) + " has " +
+                         std::to_string(data.contacts[static_cast<std::size_t>(i)].size()) +
+                         " presses; emit eval --real takes single presses");
+  RealEvaluation e;
+  e.presses = data.presses();
+  e.readings = M;
+  e.test_from = options.test_from < 0 ? data.presses() - data.presses() / 5 : options.test_from;
+  e.calibration_presses = options.calibration_presses;
+
+  Matrix changes;
+  std::vector<Vector2> positions;
+  // The curve, then the calibration asked for (its contacts written, its time measured).
+  for (const Index n : options.curve) {
+    if (n < 2 * options.fit.folds || n > e.test_from || n == options.calibration_presses) continue;
+    progress.say("the curve: calibrating on the first " + std::to_string(n) + " presses");
+    changes_of(data, 0, n, changes, positions);
+    const PressResponseFit fit = fit_press_response(changes, positions, options.fit);
+    PressLocator locator(fit.response, options.grid_step_mm);
+    e.curve.push_back({n, held_out_errors(data, locator, e.test_from, nullptr, e.test_from), fit.kept});
+  }
+  progress.say("calibrating on the first " + std::to_string(e.calibration_presses) + " presses");
+  changes_of(data, 0, e.calibration_presses, changes, positions);
+  e.fit = fit_press_response(changes, positions, options.fit, progress);
+  PressLocator locator(e.fit.response, options.grid_step_mm);
+  progress.say("locating presses " + std::to_string(e.calibration_presses) + " to " + std::to_string(e.presses - 1));
+  const auto start = std::chrono::steady_clock::now();
+  e.held_out = held_out_errors(data, locator, e.test_from, &e.located, e.calibration_presses);
+  const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+  e.ms_per_frame = elapsed.count() / static_cast<double>(e.presses - e.calibration_presses);
+  e.curve.push_back({e.calibration_presses, e.held_out, e.fit.kept});
+  std::sort(e.curve.begin(), e.curve.end(),
+            [](const auto& a, const auto& b) { return a.calibration_presses < b.calibration_presses; });
+  std::vector<double> centre;
+  for (Index i = e.test_from; i < e.presses; ++i)
+    centre.push_back((data.contacts[static_cast<std::size_t>(i)].front() - e.fit.response.center_mm).norm());
+  e.held_out_centre = summarize_errors(centre, 0);
+  return e;
+}
+
+}  // namespace emit

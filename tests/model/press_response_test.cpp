@@ -1,0 +1,45 @@
+// The press response's basis and a frame's relative change (model/press_response.hpp).
+#include "emit/model/press_response.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace emit {
+namespace {
+
+TEST(PressResponse, BasisIsTheMonomialsDegreeByDegree) {
+  PressResponse r;
+  r.degree = 3;
+  r.center_mm = {10, 20};
+  r.scale_mm = 2;
+  ASSERT_EQ(response_basis_size(3), 10);
+  Vector b(10);
+  r.basis_at({16, 22}, b);  // u = 3, v = 1
+  const double u = 3, v = 1;
+  const Vector expected =
+      (Vector(10) << 1, v, u, v * v, u * v, u * u, v * v * v, u * v * v, u * u * v, u * u * u).finished();
+  EXPECT_EQ((b - expected).norm(), 0);
+  r.basis_at({10, 16}, b);  // u = 0, v = −2
+  EXPECT_EQ(b(6), -8);
+  EXPECT_EQ(b(9), 0);
+}
+
+TEST(PressResponse, RelativeChangeIsTheNormalisedLogRatio) {
+  const Vector reference = (Vector(3) << 100, 200, 50).finished();
+  const Vector frame = (Vector(3) << 101, 198, 50).finished();
+  Vector d(3);
+  const double size = relative_change(frame, reference, d);
+  const Vector log_ratio = (Vector(3) << std::log(1.01), std::log(0.99), 0).finished();
+  EXPECT_NEAR(size, log_ratio.norm(), 1e-15);
+  EXPECT_NEAR((d - log_ratio / log_ratio.norm()).norm(), 0, 1e-15);
+  EXPECT_EQ(relative_change(reference, reference, d), 0);  // no change to normalise
+  Vector bad = frame;
+  bad(1) = 0;
+  EXPECT_EQ(relative_change(bad, reference, d), 0);
+  bad(1) = std::nan("");
+  EXPECT_EQ(relative_change(bad, reference, d), 0);
+}
+
+}  // namespace
+}  // namespace emit
