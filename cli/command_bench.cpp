@@ -36,14 +36,23 @@ std::string ratio_text(double baseline_s, double ours_s) {
   return text;
 }
 
-void print_header(const std::string& sensor_name) {
-  std::printf(
-      "emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
-      "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
-      "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
-      "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
-      "solve per element and grounding, where they finish in reasonable time.\n\n",
-      sensor_name.c_str());
+void print_header(const std::string& sensor_name, bool current_injection) {
+  if (current_injection)
+    std::printf(
+        "emit bench: current-injection EIT difference imaging on %s (its protocol), one case a\n"
+        "process, the job pyEIT's and EIDORS's users run; offline = mesh + complete electrode model +\n"
+        "Jacobian dlog V/dsigma by the adjoint method (factor: the model's assembly and factorisation,\n"
+        "inside jacob) + the NOSER operator at the automatic lambda; per frame: the product R*dV.\n"
+        "Baseline: the K x K normal equations, (J'J + lambda^2 I)^-1 J', against Jacobian + operator.\n\n",
+        sensor_name.c_str());
+  else
+    std::printf(
+        "emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
+        "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
+        "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
+        "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
+        "solve per element and grounding, where they finish in reasonable time.\n\n",
+        sensor_name.c_str());
   const char* format = "%9s %4s %5s | %6s %6s %6s %6s %6s %7s %6s | %7s %6s %7s %7s %6s | %7s | %14s %14s\n";
   std::printf(format, "triangles", "el", "rank", "mesh", "assem", "factor", "jacob", "oper", "offline", "load",
               "product", "eq. 8", "contact", "frame", "read", "peak", "K x K normal", "brute-force J");
@@ -75,7 +84,7 @@ void run_bench(BenchArgs args) {
   const int failures = run_bench_job(
       args.job,
       [&](const BenchRow& row) {
-        if (!header) print_header(row.sensor_name), header = true;
+        if (!header) print_header(row.sensor_name, row.current_injection), header = true;
         print_row(row);
       },
       stderr_progress());

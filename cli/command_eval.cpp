@@ -168,6 +168,10 @@ void run_real(EvalArgs& args) {
               e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm);
   print_stats("held-out presses, position error", e.held_out);
   print_stats("always answering the presses' centre", e.held_out_centre);
+  if (e.held_out_image) {
+    const std::string what = "physics alone (NOSER image, " + std::to_string(e.image_triangles) + " triangles)";
+    print_stats(what.c_str(), *e.held_out_image);
+  }
   std::printf("  %.2f ms a frame\n", e.ms_per_frame);
   std::printf("  against calibration presses (held-out mean; cross-validated; degree):\n");
   for (const RealCurvePoint& p : e.curve)

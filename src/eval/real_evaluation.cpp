@@ -5,6 +5,9 @@
 #include <string>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/generate_mesh.hpp"
+#include "emit/model/conductivity_jacobian.hpp"
+#include "emit/model/reconstruction_operator.hpp"
 
 namespace emit {
 
@@ -51,6 +54,37 @@ ErrorStats held_out_errors(const RealDataset& data, PressLocator& locator, Index
     else ++missed;
   }
   return summarize_errors(errors, missed);
+}
+
+/// The held-out presses located by the difference image alone (RealEvalOptions::image).
+ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index test_from, long& triangles,
+                        const Progress& progress) {
+  progress.say("the physics alone: meshing, the relative conductivity Jacobian, the NOSER operator");
+  const Mesh mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
+  triangles = static_cast<long>(mesh.triangle_count());
+  OperatorOptions noser;
+  noser.prior = Prior::noser;
+  const CompactOperator op = build_compact_operator(relative_conductivity_jacobian(mesh, sensor), mesh, noser);
+  CompactOperatorScratch scratch = op.scratch();
+  Vector change(data.readings()), image(op.rows());
+  std::vector<double> errors;
+  for (Index i = test_from; i < data.presses(); ++i) {
+    change = (data.frames.row(i).array() / data.references.row(i).array()).log().transpose();
+    op.apply(change, image, scratch);
+    Index peak = 0;
+    image.cwiseAbs().maxCoeff(&peak);
+    const double sign = image(peak) > 0 ? 1 : -1, threshold = 0.5 * std::abs(image(peak));
+    Vector2 sum(0, 0);
+    double weight = 0;
+    for (Index t = 0; t < image.size(); ++t)
+      if (sign * image(t) >= threshold) {
+        const double w = mesh.triangle_area_mm2(t) * sign * image(t);
+        sum += w * mesh.triangle_centroid_mm(t).head<2>();
+        weight += w;
+      }
+    errors.push_back((sum / weight - data.contacts[static_cast<std::size_t>(i)].front()).norm());
+  }
+  return summarize_errors(errors, 0);
 }
 
 }  // namespace
@@ -102,6 +136,7 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   for (Index i = e.test_from; i < e.presses; ++i)
     centre.push_back((data.contacts[static_cast<std::size_t>(i)].front() - e.fit.response.center_mm).norm());
   e.held_out_centre = summarize_errors(centre, 0);
+  if (options.image) e.held_out_image = image_errors(data, sensor, e.test_from, e.image_triangles, progress);
   return e;
 }
 

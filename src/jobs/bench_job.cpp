@@ -76,23 +76,28 @@ ChildReport<Result> run_in_child(Work&& work, double& peak_MiB) {
 
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row, const Progress& progress) {
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
-  require_emit_protocol(sensor, job.sensor_path);
+  // A current-injection skin is timed with its own electrodes and protocol.
+  const bool eit = sensor.excitation.has_value();
+  const std::vector<int> electrode_counts = eit ? std::vector<int>{sensor.electrode_count()} : job.electrodes;
   const std::string scratch =
       (std::filesystem::temp_directory_path() / ("emit-bench-" + std::to_string(::getpid()))).string();
   int failures = 0;
-  for (int electrodes : job.electrodes) {
-    const Sensor case_sensor = with_electrodes(sensor, electrodes);
+  for (int electrodes : electrode_counts) {
+    const Sensor case_sensor = eit ? sensor : with_electrodes(sensor, electrodes);
     for (int size : job.triangles) {
       progress.say("timing " + std::to_string(electrodes) + " electrodes, about " + std::to_string(size) +
                    " triangles");
       BenchRow row;
       row.sensor_name = sensor.name;
+      row.current_injection = eit;
       row.electrodes = electrodes;
       row.target_triangles = size;
       PipelineTimingOptions options;
       options.target_triangles = size;
       options.cache_dir = scratch;
-      const auto ours = run_in_child<PipelineTiming>([&] { return time_pipeline(case_sensor, options); }, row.peak_MiB);
+      const auto ours = run_in_child<PipelineTiming>(
+          [&] { return eit ? time_eit_pipeline(case_sensor, options) : time_pipeline(case_sensor, options); },
+          row.peak_MiB);
       row.timing = ours.result;
       row.error = ours.error;
       if (row.error.empty()) {

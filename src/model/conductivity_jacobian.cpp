@@ -1,5 +1,6 @@
 #include "emit/model/conductivity_jacobian.hpp"
 
+#include <chrono>
 #include <map>
 
 #include "emit/core/errors.hpp"
@@ -39,6 +40,28 @@ Matrix conductivity_jacobian(const Mesh& mesh, const CompleteElectrodeModel& mod
       const Eigen::Vector3d um(u_pair(v[0], p), u_pair(v[1], p), u_pair(v[2], p));
       J(static_cast<Index>(i), t) = -um.dot(G * ud);
     }
+  }
+  return J;
+}
+
+Matrix relative_conductivity_jacobian(const Mesh& mesh, const Sensor& sensor, double* model_s) {
+  if (!sensor.excitation) throw InvalidInput("relative conductivity Jacobian: the sensor has no excitation");
+  const Excitation& e = *sensor.excitation;
+  const Vector sigma = Vector::Constant(mesh.triangle_count(), 1.0 / sensor.sheet_resistance_ohm_per_sq);
+  std::vector<double> z = e.contact_impedance_ohm_mm;
+  if (z.empty()) z.assign(static_cast<std::size_t>(mesh.electrode_count()), 0.0);
+  const auto start = std::chrono::steady_clock::now();
+  const CompleteElectrodeModel model(mesh, sigma, z);
+  if (model_s) *model_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Matrix drives = e.drive_currents_A(mesh.electrode_count());
+  const Matrix U = model.electrode_potentials_V(drives);
+  Matrix J = conductivity_jacobian(mesh, model, drives, e.readings);
+  for (std::size_t r = 0; r < e.readings.size(); ++r) {
+    const EitReading& m = e.readings[r];
+    const double v = U(m.plus, m.drive) - U(m.minus, m.drive);
+    if (v == 0)
+      throw SolverError("relative conductivity Jacobian: reading " + std::to_string(r) + " is 0 V on a uniform sheet");
+    J.row(static_cast<Index>(r)) /= v;
   }
   return J;
 }

@@ -536,6 +536,23 @@ TEST(Cli, BenchPrintsARowPerCase) {
   EXPECT_LT(peak_MiB, 300.0);
 }
 
+// `emit bench` on a current-injection skin times its own job (the complete electrode model, the
+// relative Jacobian, NOSER): one row, its 16 electrodes, a rank at most the 120 independent readings.
+TEST(Cli, BenchTimesACurrentInjectionSkin) {
+  const auto r = run_emit("bench --sensor " + test::source_path("examples/sensors/hydrogel_hardman.json") +
+                              " --sizes 2k --no-baselines",
+                          "ASAN_OPTIONS=\"$ASAN_OPTIONS:quarantine_size_mb=16\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("current-injection EIT difference imaging"), std::string::npos) << r.out;
+  long triangles = 0;
+  int electrodes = 0, rank = 0;
+  // NOLINTNEXTLINE(cert-err34-c): emit's own output, the field count checks its shape
+  ASSERT_EQ(std::sscanf(last_line_of(r.out).c_str(), "%ld %d %d", &triangles, &electrodes, &rank), 3) << r.out;
+  EXPECT_EQ(electrodes, 16);
+  EXPECT_GT(rank, 0);
+  EXPECT_LE(rank, 120);
+}
+
 // A sensor whose shape is a mesh file written by `emit mesh` simulates like the original.
 TEST(Cli, MeshFileSensor) {
   const std::string dir = test::temp_folder("cli_mesh_sensor");

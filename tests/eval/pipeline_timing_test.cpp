@@ -36,6 +36,29 @@ TEST(PipelineTiming, TimesEveryStageOfASmallSheet) {
   for (double us : {t.product_us, t.pressure_us, t.contacts_us, t.frame_us, t.operator_read_us}) EXPECT_GT(us, 0.0);
 }
 
+// A current-injection skin (the hydrogel's protocol): every offline stage is timed, the model's
+// inside the Jacobian's; the operator's rank is at most the independent readings (a protocol of N
+// electrodes has at most N(N − 1)/2 = 120); the product is the whole frame.
+TEST(PipelineTiming, TimesACurrentInjectionSkin) {
+  const Sensor sensor = load_sensor(test::source_path("examples/sensors/hydrogel_hardman.json"));
+  PipelineTimingOptions options;
+  options.element_size_mm = 8;
+  options.seconds_per_figure = 0.005;
+  const PipelineTiming t = time_eit_pipeline(sensor, options);
+  EXPECT_EQ(t.electrodes, 16);
+  EXPECT_EQ(t.measurements, 192);
+  EXPECT_GT(t.rank, 0);
+  EXPECT_LE(t.rank, 120);
+  for (double s : {t.mesh_s, t.factorisation_s, t.jacobian_s, t.operator_s}) EXPECT_GT(s, 0.0);
+  EXPECT_LE(t.factorisation_s, t.jacobian_s);
+  EXPECT_GT(t.product_us, 0.0);
+  EXPECT_EQ(t.frame_us, t.product_us);
+  const BaselineTiming baseline = time_baselines(sensor, options, true, true);
+  EXPECT_GT(baseline.normal_equations_s, 0.0);
+  EXPECT_EQ(baseline.brute_force_jacobian_s, -1.0);  // EMIT's only
+  EXPECT_THROW(time_eit_pipeline(default_sensor(), options), InvalidInput);
+}
+
 TEST(PipelineTiming, RefusesASizeOutOfRange) {
   PipelineTimingOptions options;
   options.target_triangles = 99;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "emit/core/errors.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/sensor/sensor_json.hpp"
 
@@ -55,6 +56,36 @@ TEST(ConductivityJacobian, AgreesWithFiniteDifferences) {
                 error);
     EXPECT_LT(error, 1e-6);
   }
+}
+
+}  // namespace
+}  // namespace emit
+
+namespace emit {
+namespace {
+
+// The shunt model's readings scale as 1/σ on a uniform sheet, so log V falls by ε when every σ_e
+// rises by the factor 1 + ε: the relative Jacobian times σ is −1 on every reading (Euler's
+// theorem for a function homogeneous of degree −1), to the solves' rounding.
+TEST(ConductivityJacobian, RelativeJacobianIsHomogeneousOfDegreeMinusOne) {
+  const Sensor sensor = parse_sensor(
+      nlohmann::json{{"shape", {{"type", "circle"}, {"radius_mm", 40}}},
+                     {"electrodes", {{"count", 16}, {"width_mm", 3}}},
+                     {"probing_sheet_resistance_ohm_per_sq", 2000},
+                     {"excitation",
+                      {{"drive", "opposite"}, {"measure", "adjacent"}, {"skip_driving_electrodes", true}}}});
+  MeshOptions options;
+  options.element_size_mm = 5;
+  const Mesh mesh = generate_mesh(sensor, options);
+  double model_s = -1;
+  const Matrix J = relative_conductivity_jacobian(mesh, sensor, &model_s);
+  ASSERT_EQ(J.rows(), 192);
+  EXPECT_GE(model_s, 0);
+  const Vector row_sums = J * Vector::Constant(mesh.triangle_count(), 1.0 / 2000);
+  EXPECT_LT((row_sums + Vector::Ones(192)).cwiseAbs().maxCoeff(), 1e-9);
+  Sensor emit_sheet = sensor;
+  emit_sheet.excitation.reset();
+  EXPECT_THROW(relative_conductivity_jacobian(mesh, emit_sheet), InvalidInput);
 }
 
 }  // namespace

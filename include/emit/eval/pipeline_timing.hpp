@@ -36,11 +36,19 @@ struct PipelineTiming {
 /// and its thresholded region look like a real press's. \throw InvalidInput for a bad size.
 PipelineTiming time_pipeline(const Sensor& sensor, const PipelineTimingOptions& options);
 
+/// The same for a current-injection skin (sensor.excitation; issue 16), the job pyEIT's and
+/// EIDORS's users run: the complete electrode model assembled and factorised on a uniform sheet
+/// (factorisation_s), the relative Jacobian ∂log V/∂σ by the adjoint method (jacobian_s, which
+/// includes the model), the NOSER operator at the automatic λ (operator_s); per frame, the
+/// operator's product (product_us = frame_us). \throw InvalidInput for a sensor without an
+/// excitation or a bad size.
+PipelineTiming time_eit_pipeline(const Sensor& sensor, const PipelineTimingOptions& options);
+
 /// What emit's offline path replaces, on the same mesh (options.element_size_mm as
 /// time_pipeline chose it). A baseline not asked for is -1.
 struct BaselineTiming {
   double normal_equations_s = -1;      ///< R = (JᵀJ + λ²I)⁻¹Jᵀ by a dense K×K Cholesky (EIDORS, pyEIT)
-  double brute_force_jacobian_s = -1;  ///< J by one Dirichlet solve per element and grounding
+  double brute_force_jacobian_s = -1;  ///< J by one Dirichlet solve per element and grounding (EMIT only)
 };
 BaselineTiming time_baselines(const Sensor& sensor, const PipelineTimingOptions& options, bool normal_equations,
                               bool brute_force_jacobian);

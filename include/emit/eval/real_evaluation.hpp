@@ -6,6 +6,7 @@
 /// cross-validation on those N only); every later press is located with it
 /// (frame/press_locator.hpp); the error is reported on the held-out presses from `test_from` on,
 /// and again for other numbers of calibration presses (the curve: what calibration buys).
+#include <optional>
 #include <vector>
 
 #include "emit/calibrate/press_response_fit.hpp"
@@ -24,6 +25,10 @@ struct RealEvalOptions {
   std::vector<Index> curve{20, 30, 50, 75, 100, 150, 200, 300, 440};
   PressResponseFitOptions fit;
   double grid_step_mm = 2;  ///< the per-frame search's first grid (frame/press_locator.hpp)
+  /// Also locate the held-out presses by the physics alone, with no calibration: the difference
+  /// image of log(V/V_ref) (relative conductivity Jacobian on the sensor's mesh, NOSER prior,
+  /// automatic λ), its centroid above half its largest magnitude (the paper's estimator).
+  bool image = true;
 
   /// \throw InvalidInput naming the option, given the data set's number of presses.
   void validate(Index presses) const;
@@ -37,10 +42,12 @@ struct RealCurvePoint {
 
 struct RealEvaluation {
   Index presses = 0, readings = 0, test_from = 0, calibration_presses = 0;
-  PressResponseFit fit;               ///< with calibration_presses
-  ErrorStats held_out;                ///< presses test_from …, located with `fit`
-  ErrorStats held_out_centre;         ///< the same presses, always answering the calibration presses' centre
-  std::vector<LocatedPress> located;  ///< presses calibration_presses …, in order
+  PressResponseFit fit;                      ///< with calibration_presses
+  ErrorStats held_out;                       ///< presses test_from …, located with `fit`
+  ErrorStats held_out_centre;                ///< the same presses, always answering the calibration presses' centre
+  std::optional<ErrorStats> held_out_image;  ///< the same, by the physics alone (RealEvalOptions::image)
+  long image_triangles = 0;                  ///< its mesh's
+  std::vector<LocatedPress> located;         ///< presses calibration_presses …, in order
   std::vector<RealCurvePoint> curve;
   double ms_per_frame = 0;  ///< locating one frame (the held-out presses' mean)
 };

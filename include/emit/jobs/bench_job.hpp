@@ -2,7 +2,9 @@
 /// \file bench_job.hpp
 /// `emit bench`: the paper method's pipeline timed stage by stage (eval/pipeline_timing.hpp) at
 /// several mesh sizes and electrode counts, with the naive baselines where they finish in
-/// reasonable time. Each case runs in a child process of its own, so the peak memory measured
+/// reasonable time. A current-injection skin (its sensor has an "excitation") is timed as pyEIT's
+/// and EIDORS's users run it (eval/pipeline_timing.hpp time_eit_pipeline), with its own
+/// electrodes: `electrodes` does not apply. Each case runs in a child process of its own, so the peak memory measured
 /// is its own.
 #include <functional>
 #include <string>
@@ -23,6 +25,7 @@ struct BenchJob {
 
 struct BenchRow {
   std::string sensor_name;
+  bool current_injection = false;  ///< timed by time_eit_pipeline
   int electrodes = 0, target_triangles = 0;
   PipelineTiming timing;
   BaselineTiming baselines;

@@ -15,6 +15,7 @@
 #include "emit/fem/complete_electrode_model.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/sensor/excitation.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -23,5 +24,12 @@ namespace emit {
 /// \throw InvalidInput for a reading naming a drive or electrode that does not exist.
 Matrix conductivity_jacobian(const Mesh& mesh, const CompleteElectrodeModel& model, const Matrix& drives_A,
                              const std::vector<EitReading>& readings);
+
+/// A current-injection skin's relative Jacobian ∂log V/∂σ on a uniform sheet (σ = 1/R□), the
+/// one difference imaging of log(V/V_ref) uses: its complete electrode model (the excitation's
+/// contact impedances; none: the shunt model), ∂V/∂σ as above, each row divided by its reading.
+/// `model_s`, if given, receives the seconds the model's assembly and factorisation took.
+/// \throw InvalidInput for a sensor without an excitation, SolverError for a reading of 0 V.
+Matrix relative_conductivity_jacobian(const Mesh& mesh, const Sensor& sensor, double* model_s = nullptr);
 
 }  // namespace emit
