@@ -37,22 +37,27 @@ std::string ratio_text(double baseline_s, double ours_s) {
 }
 
 void print_header(const std::string& sensor_name, bool current_injection) {
-  if (current_injection)
+  if (current_injection) {
     std::printf(
         "emit bench: current-injection EIT difference imaging on %s (its protocol), one case a\n"
-        "process, the job pyEIT's and EIDORS's users run; offline = mesh + complete electrode model +\n"
-        "Jacobian dlog V/dsigma by the adjoint method (factor: the model's assembly and factorisation,\n"
-        "inside jacob) + the NOSER operator at the automatic lambda; per frame: the product R*dV.\n"
-        "Baseline: the K x K normal equations, (J'J + lambda^2 I)^-1 J', against Jacobian + operator.\n\n",
+        "process, the job pyEIT's and EIDORS's users run; offline = mesh + Jacobian dlog V/dsigma by the\n"
+        "adjoint method (model: the complete electrode model's assembly and factorisation, inside it) +\n"
+        "the NOSER operator at the automatic lambda; per frame: the compact operator's product R*dV, and\n"
+        "the dense R's (what they apply). Baseline: the K x K normal equations against Jacobian + operator.\n\n",
         sensor_name.c_str());
-  else
-    std::printf(
-        "emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
-        "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
-        "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
-        "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
-        "solve per element and grounding, where they finish in reasonable time.\n\n",
-        sensor_name.c_str());
+    const char* format = "%9s %4s %5s | %6s %6s %6s %6s %7s | %7s %9s | %7s | %14s\n";
+    std::printf(format, "triangles", "el", "rank", "mesh", "model", "jacob", "oper", "offline", "product", "dense R",
+                "peak", "K x K normal");
+    std::printf(format, "", "", "", "s", "s", "s", "s", "s", "us", "us", "MiB", "eq. (ratio)");
+    return;
+  }
+  std::printf(
+      "emit bench: the paper method's pipeline on %s, one case a process; offline = mesh + Jacobian +\n"
+      "operator; per frame: product R*dV, eq. 8, contacts, and the whole frame (dV to contacts); read:\n"
+      "streaming the operator's bytes once at full memory speed, the floor under the product.\n"
+      "Baselines: the K x K normal equations (against Jacobian + operator) and the Jacobian by one\n"
+      "solve per element and grounding, where they finish in reasonable time.\n\n",
+      sensor_name.c_str());
   const char* format = "%9s %4s %5s | %6s %6s %6s %6s %6s %7s %6s | %7s %6s %7s %7s %6s | %7s | %14s %14s\n";
   std::printf(format, "triangles", "el", "rank", "mesh", "assem", "factor", "jacob", "oper", "offline", "load",
               "product", "eq. 8", "contact", "frame", "read", "peak", "K x K normal", "brute-force J");
@@ -67,6 +72,14 @@ void print_row(const BenchRow& row) {
     return;
   }
   const PipelineTiming& t = row.timing;
+  if (row.current_injection) {
+    std::printf("%9ld %4d %5d | %6.3f %6.3f %6.3f %6.3f %7.3f | %7.1f %9.1f | %7.0f | %14s\n", t.triangles,
+                t.electrodes, t.rank, t.mesh_s, t.factorisation_s, t.jacobian_s, t.operator_s, t.offline_s(),
+                t.product_us, t.dense_product_us, row.peak_MiB,
+                ratio_text(row.baselines.normal_equations_s, t.operator_s + t.jacobian_s).c_str());
+    std::fflush(stdout);
+    return;
+  }
   std::printf(
       "%9ld %4d %5d | %6.3f %6.3f %6.3f %6.3f %6.3f %7.3f %6.1f | %7.1f %6.1f %7.1f %7.1f %6.1f | %7.0f | %14s %14s\n",
       t.triangles, t.electrodes, t.rank, t.mesh_s, t.assembly_s, t.factorisation_s, t.jacobian_s, t.operator_s,

@@ -1,6 +1,7 @@
 #include "emit/calibrate/press_response_fit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -20,8 +21,7 @@ void PressResponseFitOptions::validate() const {
     if (!(rho >= 0 && rho <= 1))
       throw InvalidInput("press response: shrinkages: each must be in [0, 1], got " + std::to_string(rho));
   if (folds < 2) throw InvalidInput("press response: folds must be at least 2, got " + std::to_string(folds));
-  if (!(grid_step_mm > 0)) throw InvalidInput("press response: grid_step_mm must be positive");
-  if (!(region_margin_mm >= 0)) throw InvalidInput("press response: region_margin_mm must not be negative");
+  if (grid_divisions < 2) throw InvalidInput("press response: grid_divisions must be at least 2");
 }
 
 namespace {
@@ -52,6 +52,30 @@ PressResponse fit_one(const Matrix& changes, const std::vector<Vector2>& positio
   return r;
 }
 
+/// The calibration presses' hull grown by half their typical spacing, √(area / n) / 2: presses
+/// sample the skin's pressed area that finely, so it reaches about that far past their hull. Each
+/// edge moves out by the margin m, so each corner moves by m (n₁ + n₂)/(1 + n₁·n₂), n₁ and n₂ the
+/// outward normals of its edges (the offset of a convex polygon with mitred corners).
+std::vector<Vector2> grown_region(const std::vector<Vector2>& hull, double presses) {
+  double twice_area = 0;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Vector2& a = hull[i];
+    const Vector2& b = hull[(i + 1) % hull.size()];
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  const double margin = 0.5 * std::sqrt(0.5 * twice_area / presses);
+  const auto outward = [&](std::size_t i) {  // of edge i → i + 1, counter-clockwise
+    const Vector2 edge = (hull[(i + 1) % hull.size()] - hull[i]).normalized();
+    return Vector2(edge.y(), -edge.x());
+  };
+  std::vector<Vector2> grown(hull.size());
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Vector2 before = outward((i + hull.size() - 1) % hull.size()), after = outward(i);
+    grown[i] = hull[i] + margin * (before + after) / (1 + before.dot(after));
+  }
+  return grown;
+}
+
 }  // namespace
 
 PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
@@ -71,7 +95,9 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   double reach = 0;
   for (const Vector2& p : positions_mm) reach = std::max(reach, (p - base.center_mm).norm());
   base.scale_mm = reach > 0 ? reach : 1;
-  base.region_radius_mm = reach + options.region_margin_mm;
+  base.region_mm = convex_hull(positions_mm);
+  if (base.region_mm.size() < 3) throw InvalidInput("press response: the calibration presses lie on a line");
+  base.region_mm = grown_region(base.region_mm, static_cast<double>(n));
 
   PressResponseFit fit;
   const long total = static_cast<long>(options.degrees.size() * options.shrinkages.size());
@@ -83,11 +109,11 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
       for (int fold = 0; fold < options.folds; ++fold) {
         std::vector<Index> train, test;
         for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
-        PressLocator locator(fit_one(changes, positions_mm, train, degree, shrinkage, base), options.grid_step_mm);
+        PressLocator locator(fit_one(changes, positions_mm, train, degree, shrinkage, base), options.grid_divisions);
         for (const Index i : test) {
           const LocatedPress located = locator.locate_change(changes.row(i).transpose());
           error += located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                 : 2 * base.region_radius_mm;
+                                 : 2 * base.scale_mm;
         }
       }
       error /= static_cast<double>(n);

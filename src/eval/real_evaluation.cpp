@@ -21,7 +21,7 @@ void RealEvalOptions::validate(Index presses) const {
                        std::to_string(held) + " (the presses before the held-out ones), got " +
                        std::to_string(calibration_presses));
   fit.validate();
-  if (!(grid_step_mm > 0)) throw InvalidInput("grid step: must be positive");
+  if (grid_divisions < 2) throw InvalidInput("grid divisions: must be at least 2");
 }
 
 namespace {
@@ -117,13 +117,13 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
     progress.say("the curve: calibrating on the first " + std::to_string(n) + " presses");
     changes_of(data, 0, n, changes, positions);
     const PressResponseFit fit = fit_press_response(changes, positions, options.fit);
-    PressLocator locator(fit.response, options.grid_step_mm);
+    PressLocator locator(fit.response, options.grid_divisions);
     e.curve.push_back({n, held_out_errors(data, locator, e.test_from, nullptr, e.test_from), fit.kept});
   }
   progress.say("calibrating on the first " + std::to_string(e.calibration_presses) + " presses");
   changes_of(data, 0, e.calibration_presses, changes, positions);
   e.fit = fit_press_response(changes, positions, options.fit, progress);
-  PressLocator locator(e.fit.response, options.grid_step_mm);
+  PressLocator locator(e.fit.response, options.grid_divisions);
   progress.say("locating presses " + std::to_string(e.calibration_presses) + " to " + std::to_string(e.presses - 1));
   const auto start = std::chrono::steady_clock::now();
   e.held_out = held_out_errors(data, locator, e.test_from, &e.located, e.calibration_presses);

@@ -8,18 +8,17 @@
 
 namespace emit {
 
-PressLocator::PressLocator(PressResponse response, double grid_step_mm)
-    : response_(std::move(response)), grid_step_mm_(grid_step_mm) {
-  if (!(grid_step_mm > 0)) throw InvalidInput("press locator: the grid step must be positive");
-  const double r = response_.region_radius_mm;
-  if (!(r > 0)) throw InvalidInput("press locator: the press response has no region to search");
+PressLocator::PressLocator(PressResponse response, int grid_divisions) : response_(std::move(response)) {
+  if (grid_divisions < 2) throw InvalidInput("press locator: the grid needs at least 2 divisions");
+  if (response_.region_mm.size() < 3) throw InvalidInput("press locator: the press response has no region to search");
+  Vector2 low = response_.region_mm.front(), high = low;
+  for (const Vector2& p : response_.region_mm) low = low.cwiseMin(p), high = high.cwiseMax(p);
+  grid_step_mm_ = (high - low).maxCoeff() / grid_divisions;
+  if (!(grid_step_mm_ > 0)) throw InvalidInput("press locator: the press response's region has no extent");
   std::vector<Vector2> points;
-  const int n = static_cast<int>(std::floor(r / grid_step_mm));
-  for (int i = -n; i <= n; ++i)
-    for (int j = -n; j <= n; ++j) {
-      const Vector2 offset(i * grid_step_mm, j * grid_step_mm);
-      if (offset.norm() <= r) points.push_back(response_.center_mm + offset);
-    }
+  for (double x = low.x(); x <= high.x() + 1e-9; x += grid_step_mm_)
+    for (double y = low.y(); y <= high.y() + 1e-9; y += grid_step_mm_)
+      if (response_.in_region({x, y})) points.emplace_back(x, y);
   const Index M = response_.readings(), G = static_cast<Index>(points.size());
   const Index B = response_basis_size(response_.degree);
   grid_mm_.resize(2, G);
@@ -91,7 +90,7 @@ LocatedPress PressLocator::locate_normalised() {
     for (int i = -2; i <= 2; ++i)
       for (int j = -2; j <= 2; ++j) {
         const Vector2 q = centre + Vector2(i * step, j * step);
-        if ((i == 0 && j == 0) || (q - response_.center_mm).norm() > response_.region_radius_mm) continue;
+        if ((i == 0 && j == 0) || !response_.in_region(q)) continue;
         if (const double s = score_at(q); s > best_score) best_score = s, p = q;
       }
   }

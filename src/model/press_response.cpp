@@ -1,5 +1,6 @@
 #include "emit/model/press_response.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace emit {
@@ -16,6 +17,41 @@ void PressResponse::basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) cons
     for (int i = 0; i < d; ++i) basis(k++) = basis(previous + i) * v;  // u^i v^(d−i)
     basis(k++) = basis(previous + d - 1) * u;                          // u^d
   }
+}
+
+bool PressResponse::in_region(const Vector2& p_mm) const {
+  if (region_mm.size() < 3) return false;
+  for (std::size_t i = 0; i < region_mm.size(); ++i) {
+    const Vector2& a = region_mm[i];
+    const Vector2& b = region_mm[(i + 1) % region_mm.size()];
+    const Vector2 edge = b - a, to_p = p_mm - a;
+    // Left of every counter-clockwise edge, to 1e-9 mm.
+    if (edge.x() * to_p.y() - edge.y() * to_p.x() < -1e-9 * edge.norm()) return false;
+  }
+  return true;
+}
+
+std::vector<Vector2> convex_hull(std::vector<Vector2> points) {
+  std::sort(points.begin(), points.end(),
+            [](const Vector2& a, const Vector2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  const auto cross = [](const Vector2& o, const Vector2& a, const Vector2& b) {
+    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+  };
+  std::vector<Vector2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const Vector2& p : points) {  // the lower chain, left to right
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0) --k;
+    hull[k++] = p;
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = points.size() - 1; i-- > 0;) {  // the upper chain, right to left
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);  // its last point is the first
+  return hull;
 }
 
 double relative_change(const Eigen::Ref<const Vector>& frame, const Eigen::Ref<const Vector>& reference,

@@ -53,6 +53,7 @@ TEST(PipelineTiming, TimesACurrentInjectionSkin) {
   EXPECT_LE(t.factorisation_s, t.jacobian_s);
   EXPECT_GT(t.product_us, 0.0);
   EXPECT_EQ(t.frame_us, t.product_us);
+  EXPECT_GT(t.dense_product_us, 0.0);
   const BaselineTiming baseline = time_baselines(sensor, options, true, true);
   EXPECT_GT(baseline.normal_equations_s, 0.0);
   EXPECT_EQ(baseline.brute_force_jacobian_s, -1.0);  // EMIT's only

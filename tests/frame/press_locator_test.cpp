@@ -3,6 +3,7 @@
 // allocates nothing per frame.
 #include "emit/frame/press_locator.hpp"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -13,13 +14,14 @@
 namespace emit {
 namespace {
 
-/// A degree-3 response of 24 readings over a 30 mm region, with Λ = I.
+/// A degree-3 response of 24 readings over the disc of 30 mm about its centre (a 64-gon), Λ = I.
 PressResponse known_response() {
   PressResponse r;
   r.degree = 3;
   r.center_mm = {5, -3};
   r.scale_mm = 30;
-  r.region_radius_mm = 30;
+  for (int k = 0; k < 64; ++k)
+    r.region_mm.push_back(r.center_mm + 30 * Vector2(std::cos(k * 6.283185307 / 64), std::sin(k * 6.283185307 / 64)));
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
   r.coefficients = Matrix(response_basis_size(3), 24);
@@ -30,9 +32,9 @@ PressResponse known_response() {
 
 TEST(PressLocator, FindsTheCentreThatMadeTheFrame) {
   const PressResponse response = known_response();
-  PressLocator locator(response, 2.0);
+  PressLocator locator(response, 30);  // 2 mm steps
   std::mt19937 random(3);
-  std::uniform_real_distribution<double> angle(0, 6.283), radius(0, 28);
+  std::uniform_real_distribution<double> angle(0, 6.283), radius(0, 29);  // inside the 64-gon
   Vector basis(response_basis_size(3));
   const Vector reference = Vector::Constant(24, 1000);
   for (int k = 0; k < 20; ++k) {
@@ -54,7 +56,7 @@ TEST(PressLocator, FindsTheCentreThatMadeTheFrame) {
 }
 
 TEST(PressLocator, AllocatesNothingPerFrameAndRefusesWhatItCannotRead) {
-  PressLocator locator(known_response(), 2.0);
+  PressLocator locator(known_response(), 30);
   const Vector reference = Vector::Constant(24, 1000);
   Vector frame = reference;
   frame(3) *= 1.02;
@@ -71,7 +73,7 @@ TEST(PressLocator, AllocatesNothingPerFrameAndRefusesWhatItCannotRead) {
   EXPECT_EQ(test::error_of([&] { locator.locate(Vector::Ones(5), reference); }),
             "press locator: a frame of 5 values and a reference of 24 for a response of 24 readings");
   PressResponse none = known_response();
-  none.region_radius_mm = 0;
+  none.region_mm.clear();
   EXPECT_EQ(test::error_of([&] { PressLocator{none}; }), "press locator: the press response has no region to search");
 }
 

@@ -25,6 +25,24 @@ TEST(PressResponse, BasisIsTheMonomialsDegreeByDegree) {
   EXPECT_EQ(b(9), 0);
 }
 
+TEST(PressResponse, RegionIsTheConvexHull) {
+  // A square's corners, a point inside and one on an edge: the hull is the corners,
+  // counter-clockwise from the lowest-leftmost.
+  const std::vector<Vector2> hull = convex_hull({{1, 1}, {0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 0}, {0, 0}});
+  ASSERT_EQ(hull.size(), 4u);
+  EXPECT_EQ(hull[0], Vector2(0, 0));
+  EXPECT_EQ(hull[1], Vector2(2, 0));
+  EXPECT_EQ(hull[2], Vector2(2, 2));
+  EXPECT_EQ(hull[3], Vector2(0, 2));
+  PressResponse r;
+  r.region_mm = hull;
+  EXPECT_TRUE(r.in_region({1, 1}));
+  EXPECT_TRUE(r.in_region({2, 1}));  // on the border
+  EXPECT_FALSE(r.in_region({2.001, 1}));
+  EXPECT_FALSE(r.in_region({-0.001, 1}));
+  EXPECT_EQ(convex_hull({{0, 0}, {1, 1}, {2, 2}}).size(), 2u);  // collinear: its ends
+}
+
 TEST(PressResponse, RelativeChangeIsTheNormalisedLogRatio) {
   const Vector reference = (Vector(3) << 100, 200, 50).finished();
   const Vector frame = (Vector(3) << 101, 198, 50).finished();

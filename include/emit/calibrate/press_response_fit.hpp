@@ -5,7 +5,8 @@
 /// press keeps a degree with more terms than presses solvable), Λ from the residuals'
 /// covariance S as ((1 − ρ) S + ρ diag S)⁻¹; the candidate kept is the one whose presses are
 /// located best by k-fold cross-validation (each fold located by a model fitted without it,
-/// frame/press_locator.hpp). Nothing is tuned on presses outside the calibration set.
+/// frame/press_locator.hpp). The region searched is the calibration presses' convex hull. Nothing is tuned on presses
+/// outside the calibration set.
 #include <vector>
 
 #include "emit/core/progress.hpp"
@@ -18,8 +19,7 @@ struct PressResponseFitOptions {
   std::vector<int> degrees{2, 3, 4, 5, 6};
   std::vector<double> shrinkages{0.1, 0.3, 0.6, 1.0};  ///< ρ, each in [0, 1]
   int folds = 10;                                      ///< for the cross-validation; at most the number of presses
-  double grid_step_mm = 4;      ///< the cross-validation's location grid (coarser than per frame)
-  double region_margin_mm = 0;  ///< the region reaches this beyond the farthest calibration press
+  int grid_divisions = 35;  ///< the cross-validation's location grid (coarser than per frame's 70)
 
   /// \throw InvalidInput naming the option and the rule it breaks.
   void validate() const;

@@ -28,6 +28,9 @@ struct PipelineTiming {
   /// Reading the operator's bytes once (BLAS sasum over them, at the memory's full speed): the
   /// floor under product_us, which must stream the whole operator every frame.
   double operator_read_us = 0;
+  /// Current-injection only: the product by the whole operator R as a dense double matrix, #F × M
+  /// (what pyEIT's and EIDORS's users apply per frame), timed like product_us; −1 otherwise.
+  double dense_product_us = -1;
   double offline_s() const { return mesh_s + jacobian_s + operator_s; }  ///< mesh to operator
 };
 
@@ -40,8 +43,8 @@ PipelineTiming time_pipeline(const Sensor& sensor, const PipelineTimingOptions& 
 /// EIDORS's users run: the complete electrode model assembled and factorised on a uniform sheet
 /// (factorisation_s), the relative Jacobian ∂log V/∂σ by the adjoint method (jacobian_s, which
 /// includes the model), the NOSER operator at the automatic λ (operator_s); per frame, the
-/// operator's product (product_us = frame_us). \throw InvalidInput for a sensor without an
-/// excitation or a bad size.
+/// operator's product (product_us = frame_us), and the dense R's (dense_product_us). \throw InvalidInput for a sensor
+/// without an excitation or a bad size.
 PipelineTiming time_eit_pipeline(const Sensor& sensor, const PipelineTimingOptions& options);
 
 /// What emit's offline path replaces, on the same mesh (options.element_size_mm as

@@ -24,9 +24,10 @@ struct LocatedPress {
 
 class PressLocator {
  public:
-  /// grid_step_mm: the first search's spacing (the refinement then halves it five times).
-  /// \throw InvalidInput for a non-positive step or a response with no region.
-  explicit PressLocator(PressResponse response, double grid_step_mm = 2.0);
+  /// The first search's grid spaces `grid_divisions` steps across the region's larger extent
+  /// (70: 2 mm on the hydrogel's 140 mm); the refinement then halves the step five times.
+  /// \throw InvalidInput for fewer than 2 divisions or a response with no region.
+  explicit PressLocator(PressResponse response, int grid_divisions = 70);
 
   /// frame and reference: M values each (model/press_response.hpp). \throw InvalidInput for a
   /// wrong size (the only check that allocates, on the error path).
@@ -48,7 +49,7 @@ class PressLocator {
   Eigen::Matrix2Xd grid_mm_;  ///< 2 × G
   Matrix weighted_grid_;      ///< G × M: row g = (Λ m(p_g))ᵀ
   Vector grid_norm2_;         ///< G: m(p_g)ᵀ Λ m(p_g)
-  double grid_step_mm_;
+  double grid_step_mm_ = 0;
   // Per-frame scratch, sized once.
   Vector change_, weighted_change_, grid_scores_, basis_, predicted_, weighted_predicted_;
 };

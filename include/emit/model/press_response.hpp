@@ -15,22 +15,32 @@
 /// only roughly known is calibrated as well as one drawn exactly.
 ///
 /// Fitted by calibrate/press_response_fit.hpp; this file holds the model and its evaluation.
+#include <vector>
+
 #include "emit/core/types.hpp"
 
 namespace emit {
 
 struct PressResponse {
-  int degree = 0;               ///< of the monomials in b(p)
-  Vector2 center_mm{0, 0};      ///< c: the calibration presses' centre
-  double scale_mm = 1;          ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
-  double region_radius_mm = 0;  ///< presses are looked for within this of c (the calibration's reach)
-  Matrix coefficients;          ///< W, basis_size(degree) × M
-  Matrix precision;             ///< Λ, M × M, symmetric positive definite
+  int degree = 0;           ///< of the monomials in b(p)
+  Vector2 center_mm{0, 0};  ///< c: the calibration presses' centre
+  double scale_mm = 1;      ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
+  /// Where presses are looked for: the calibration presses' convex hull, counter-clockwise (a
+  /// polynomial is trusted where it was fitted, not beyond).
+  std::vector<Vector2> region_mm;
+  Matrix coefficients;  ///< W, basis_size(degree) × M
+  Matrix precision;     ///< Λ, M × M, symmetric positive definite
 
   Index readings() const { return coefficients.cols(); }
   /// b(p) into `basis` (basis_size(degree) entries). Allocates nothing.
   void basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) const;
+  /// Whether p is in the region (on its border counts). Allocates nothing.
+  bool in_region(const Vector2& p_mm) const;
 };
+
+/// The convex hull of points, counter-clockwise, without collinear points (Andrew's monotone
+/// chain); fewer than 3 distinct points give what there is.
+std::vector<Vector2> convex_hull(std::vector<Vector2> points);
 
 /// The number of monomials in two variables up to `degree`: (degree + 1)(degree + 2)/2.
 Index response_basis_size(int degree);
