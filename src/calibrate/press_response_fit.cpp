@@ -85,7 +85,7 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   if (static_cast<std::size_t>(n) != positions_mm.size())
     throw InvalidInput("press response: " + std::to_string(n) + " changes for " + std::to_string(positions_mm.size()) +
                        " positions");
-  if (n < 2 * options.folds)
+  if (n < 2 * static_cast<Index>(options.folds))
     throw InvalidInput("press response: " + std::to_string(n) + " calibration presses; at least " +
                        std::to_string(2 * options.folds) + " are needed (" + std::to_string(options.folds) +
                        "-fold cross-validation)");

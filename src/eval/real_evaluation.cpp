@@ -16,7 +16,7 @@ void RealEvalOptions::validate(Index presses) const {
   if (held <= 0 || held >= presses)
     throw InvalidInput("--test-from: must be between 1 and " + std::to_string(presses - 1) + " (the presses), got " +
                        std::to_string(held));
-  if (calibration_presses < 2 * fit.folds || calibration_presses > held)
+  if (calibration_presses < 2 * static_cast<Index>(fit.folds) || calibration_presses > held)
     throw InvalidInput("--calibration-presses: must be between " + std::to_string(2 * fit.folds) + " and " +
                        std::to_string(held) + " (the presses before the held-out ones), got " +
                        std::to_string(calibration_presses));
@@ -113,7 +113,7 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   std::vector<Vector2> positions;
   // The curve, then the calibration asked for (its contacts written, its time measured).
   for (const Index n : options.curve) {
-    if (n < 2 * options.fit.folds || n > e.test_from || n == options.calibration_presses) continue;
+    if (n < 2 * static_cast<Index>(options.fit.folds) || n > e.test_from || n == options.calibration_presses) continue;
     progress.say("the curve: calibrating on the first " + std::to_string(n) + " presses");
     changes_of(data, 0, n, changes, positions);
     const PressResponseFit fit = fit_press_response(changes, positions, options.fit);

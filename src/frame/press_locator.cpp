@@ -16,9 +16,10 @@ PressLocator::PressLocator(PressResponse response, int grid_divisions) : respons
   grid_step_mm_ = (high - low).maxCoeff() / grid_divisions;
   if (!(grid_step_mm_ > 0)) throw InvalidInput("press locator: the press response's region has no extent");
   std::vector<Vector2> points;
-  for (double x = low.x(); x <= high.x() + 1e-9; x += grid_step_mm_)
-    for (double y = low.y(); y <= high.y() + 1e-9; y += grid_step_mm_)
-      if (response_.in_region({x, y})) points.emplace_back(x, y);
+  const Eigen::Array2i steps = ((high - low) / grid_step_mm_).array().floor().cast<int>();
+  for (int i = 0; i <= steps.x(); ++i)
+    for (int j = 0; j <= steps.y(); ++j)
+      if (const Vector2 p = low + grid_step_mm_ * Vector2(i, j); response_.in_region(p)) points.push_back(p);
   const Index M = response_.readings(), G = static_cast<Index>(points.size());
   const Index B = response_basis_size(response_.degree);
   grid_mm_.resize(2, G);
@@ -27,23 +28,23 @@ PressLocator::PressLocator(PressResponse response, int grid_divisions) : respons
     grid_mm_.col(g) = points[static_cast<std::size_t>(g)];
     response_.basis_at(points[static_cast<std::size_t>(g)], basis.col(g));
   }
-  const Matrix predicted = basis.transpose() * response_.coefficients;  // G × M
-  weighted_grid_ = predicted * response_.precision;                     // Λ symmetric
-  grid_norm2_ = (weighted_grid_.array() * predicted.array()).rowwise().sum();
+  // In the basis' coordinates: m(p)ᵀΛm(p) = b(p)ᵀ (WΛWᵀ) b(p) and dᵀΛm(p) = (WΛd)ᵀ b(p).
+  gram_ = response_.coefficients * response_.precision * response_.coefficients.transpose();
+  grid_basis_ = basis.transpose();
+  grid_norm2_ = ((grid_basis_ * gram_).array() * grid_basis_.array()).rowwise().sum();
   change_.resize(M);
   weighted_change_.resize(M);
+  projected_change_.resize(B);
   grid_scores_.resize(G);
   basis_.resize(B);
-  predicted_.resize(M);
-  weighted_predicted_.resize(M);
+  gram_basis_.resize(B);
 }
 
 double PressLocator::score_at(const Vector2& p_mm) {
   response_.basis_at(p_mm, basis_);
-  predicted_.noalias() = response_.coefficients.transpose() * basis_;
-  weighted_predicted_.noalias() = response_.precision * predicted_;
-  const double dm = predicted_.dot(weighted_change_);  // dᵀΛm
-  const double mm = predicted_.dot(weighted_predicted_);
+  gram_basis_.noalias() = gram_ * basis_;
+  const double dm = basis_.dot(projected_change_);  // dᵀΛm
+  const double mm = basis_.dot(gram_basis_);        // mᵀΛm
   return mm > 0 && dm > 0 ? dm * dm / mm : -1;
 }
 
@@ -70,7 +71,8 @@ LocatedPress PressLocator::locate_change(const Eigen::Ref<const Vector>& change)
 LocatedPress PressLocator::locate_normalised() {
   LocatedPress located;
   weighted_change_.noalias() = response_.precision * change_;
-  grid_scores_.noalias() = weighted_grid_ * change_;
+  projected_change_.noalias() = response_.coefficients * weighted_change_;
+  grid_scores_.noalias() = grid_basis_ * projected_change_;
   Index best = -1;
   double best_score = 0;
   for (Index g = 0; g < grid_scores_.size(); ++g) {

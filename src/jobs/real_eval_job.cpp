@@ -47,7 +47,7 @@ std::string write_curve_plot(const RealEvalReport& report, const std::string& fo
   options.y_label = "mean error, mm";
   options.log_x = true;
   options.log_y = true;
-  const std::string path = (std::filesystem::path(folder) / "real_error_vs_calibration.png").string();
+  std::string path = (std::filesystem::path(folder) / "real_error_vs_calibration.png").string();
   write_png(render_line_plot({held_out, validated, centre}, options), path);
   return path;
 }

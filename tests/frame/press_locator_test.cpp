@@ -21,7 +21,8 @@ PressResponse known_response() {
   r.center_mm = {5, -3};
   r.scale_mm = 30;
   for (int k = 0; k < 64; ++k)
-    r.region_mm.push_back(r.center_mm + 30 * Vector2(std::cos(k * 6.283185307 / 64), std::sin(k * 6.283185307 / 64)));
+    r.region_mm.emplace_back(r.center_mm +
+                             30 * Vector2(std::cos(k * 6.283185307 / 64), std::sin(k * 6.283185307 / 64)));
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
   r.coefficients = Matrix(response_basis_size(3), 24);

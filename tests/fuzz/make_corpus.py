@@ -52,7 +52,7 @@ def text(value):
 def sensor_json_seeds():
     """The example sensors, each shape and electrode form, and broken ones."""
     seeds = {}
-    for name in sorted(os.listdir(EXAMPLES)):
+    for name in sorted(n for n in os.listdir(EXAMPLES) if n.endswith(".json")):
         with open(os.path.join(EXAMPLES, name), "rb") as f:
             seeds["example_" + name] = f.read()
     electrodes = [{"x_mm": x, "y_mm": y, "width_mm": 2} for x, y in
@@ -67,6 +67,17 @@ def sensor_json_seeds():
         "triangle.json": text({"shape": {"type": "polygon", "points_mm": [[0, 0], [40, 0], [20, 30]]},
                                "electrodes": {"count": 6, "width_mm": 2},
                                "contact_law": {"gamma": -1.5, "min_pressure_N_per_mm2": 0}}),
+        "excitation_lists.json": text({"shape": {"type": "circle", "radius_mm": 40},
+                                       "electrodes": {"count": 8, "width_mm": 2},
+                                       "excitation": {"drive": [[0, 4], [2, 6]], "measure": [[1, 0], [3, 2]],
+                                                      "skip_driving_electrodes": True,
+                                                      "contact_impedance_ohm_mm": [1, 2, 3, 4, 5, 6, 7, 8]}}),
+        "excitation_readings.json": text({"shape": {"type": "circle", "radius_mm": 40},
+                                          "electrodes": {"count": 8, "width_mm": 2},
+                                          "excitation": {"drive": "skip-2", "readings": [[7, 3, 2], [0, 5, 1]]}}),
+        "broken_excitation.json": text({"shape": {"type": "circle", "radius_mm": 40},
+                                        "electrodes": {"count": 8, "width_mm": 2},
+                                        "excitation": {"drive": [[0, 9]], "measure": "diagonal"}}),
         "broken_truncated.json": b'{"shape": {"type": "rectangle", "width_mm": 60, "height_mm"',
         "broken_unknown_key.json": text({"shape": {"type": "rectangle", "width_mm": 60, "height_mm": 60},
                                          "electrodes": {"count": 16, "width_mm": 3}, "colour": "red"}),

@@ -15,7 +15,7 @@ void write(const std::string& path, const std::string& text) { std::ofstream(pat
 
 std::string folder_with(const std::string& name, const std::string& frames, const std::string& references,
                         const std::string& truth) {
-  const std::string dir = test::temp_folder(name);
+  std::string dir = test::temp_folder(name);
   write(dir + "/frames.csv", frames);
   if (!references.empty()) write(dir + "/references_per_frame.csv", references);
   write(dir + "/truth.csv", truth);

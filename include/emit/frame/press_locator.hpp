@@ -4,9 +4,10 @@
 /// (model/press_response.hpp): the centre p that maximises the likelihood with a free amplitude,
 ///   score(p) = (dᵀΛm(p))² / (m(p)ᵀΛm(p))  for dᵀΛm(p) > 0,
 /// searched on a grid over the response's region, then refined about the best grid point on
-/// finer and finer grids (the score is smooth in p). Assemble once: the grid's predicted changes
-/// and Λ times them are formed in the constructor; per frame it is one M × M and one G × M
-/// product (G grid points) and a few hundred refinement points, and allocates nothing.
+/// finer and finer grids (the score is smooth in p). Both terms are quadratic forms in the
+/// basis b(p) (B monomials): dᵀΛm = (WΛd)ᵀb and mᵀΛm = bᵀ(WΛWᵀ)b, so with WΛWᵀ and the grid's
+/// b formed once, a frame costs one M × M and one B × M product, one G × B (G grid points) and
+/// B² per refinement point, and allocates nothing.
 #include "emit/core/types.hpp"
 #include "emit/model/press_response.hpp"
 
@@ -42,16 +43,17 @@ class PressLocator {
  private:
   /// The search for change_.
   LocatedPress locate_normalised();
-  /// The score at p (−1 where dᵀΛm ≤ 0), from weighted_change_; fills predicted_ and weighted_predicted_.
+  /// The score at p (−1 where dᵀΛm ≤ 0), from projected_change_; fills basis_ and gram_basis_.
   double score_at(const Vector2& p_mm);
 
   PressResponse response_;
   Eigen::Matrix2Xd grid_mm_;  ///< 2 × G
-  Matrix weighted_grid_;      ///< G × M: row g = (Λ m(p_g))ᵀ
+  Matrix gram_;               ///< WΛWᵀ, B × B
+  Matrix grid_basis_;         ///< G × B: row g = b(p_g)ᵀ
   Vector grid_norm2_;         ///< G: m(p_g)ᵀ Λ m(p_g)
   double grid_step_mm_ = 0;
   // Per-frame scratch, sized once.
-  Vector change_, weighted_change_, grid_scores_, basis_, predicted_, weighted_predicted_;
+  Vector change_, weighted_change_, projected_change_, grid_scores_, basis_, gram_basis_;
 };
 
 }  // namespace emit
