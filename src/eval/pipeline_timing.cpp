@@ -85,6 +85,28 @@ Vector disc_frame(const Mesh& mesh, const Matrix& J, const Vector2& centre_mm) {
   return J * dphi;
 }
 
+/// The frames the per-frame figures are timed on: discs at three places of the sheet.
+std::vector<Vector> three_disc_frames(const Mesh& mesh, const Matrix& J) {
+  std::vector<Vector> frames;
+  const Vector2 low = mesh.nodes_mm.colwise().minCoeff().head<2>().transpose();
+  const Vector2 high = mesh.nodes_mm.colwise().maxCoeff().head<2>().transpose();
+  for (const Vector2& fraction : {Vector2(0.3, 0.4), Vector2(0.5, 0.5), Vector2(0.75, 0.2)})
+    frames.push_back(disc_frame(mesh, J, low + fraction.cwiseProduct(high - low)));
+  return frames;
+}
+
+/// The case's mesh, its size checked, timed and recorded in `timing`.
+Mesh timed_mesh(Sensor& sensor, const PipelineTimingOptions& options, PipelineTiming& timing) {
+  if (options.target_triangles < 100 || options.target_triangles > 2'000'000)
+    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " +
+                       std::to_string(options.target_triangles));
+  Mesh mesh = mesh_of_size(sensor, options, timing.mesh_s);
+  timing.element_size_mm = sensor.mesh.element_size_mm;
+  timing.triangles = static_cast<long>(mesh.triangle_count());
+  timing.electrodes = mesh.electrode_count();
+  return mesh;
+}
+
 Frame as_frame(const MeasurementSet& measurements, const Vector& dV) {
   Frame frame = Frame::Zero(measurements.electrode_count, measurements.electrode_count);
   for (int i = 0; i < measurements.size(); ++i) frame.data()[measurements.frame_index[i]] = dV[i];
@@ -143,15 +165,9 @@ double normal_equations_seconds(const Matrix& J, double lambda2) {
 }  // namespace
 
 PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
-  if (options.target_triangles < 100 || options.target_triangles > 2'000'000)
-    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " +
-                       std::to_string(options.target_triangles));
   Sensor sensor = sensor_in;
   PipelineTiming timing;
-  const Mesh mesh = mesh_of_size(sensor, options, timing.mesh_s);
-  timing.element_size_mm = sensor.mesh.element_size_mm;
-  timing.triangles = static_cast<long>(mesh.triangle_count());
-  timing.electrodes = mesh.electrode_count();
+  const Mesh mesh = timed_mesh(sensor, options, timing);
   const MeasurementSet measurements = make_measurement_set(mesh.electrode_count());
   timing.measurements = measurements.size();
 
@@ -168,11 +184,7 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
   timing.jacobian_s = seconds([&] { J = compute_jacobian(mesh, measurements); });
   const OperatorOptions paper = operator_options(Method::paper);
 
-  std::vector<Vector> frames;
-  const Vector2 low = mesh.nodes_mm.colwise().minCoeff().head<2>().transpose();
-  const Vector2 high = mesh.nodes_mm.colwise().maxCoeff().head<2>().transpose();
-  for (const Vector2& fraction : {Vector2(0.3, 0.4), Vector2(0.5, 0.5), Vector2(0.75, 0.2)})
-    frames.push_back(disc_frame(mesh, J, low + fraction.cwiseProduct(high - low)));
+  const std::vector<Vector> frames = three_disc_frames(mesh, J);
 
   ReconstructionModel model;
   model.mesh = mesh;
@@ -193,24 +205,14 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
 
 PipelineTiming time_eit_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
   if (!sensor_in.excitation) throw InvalidInput("bench: a current-injection case needs a sensor with an excitation");
-  if (options.target_triangles < 100 || options.target_triangles > 2'000'000)
-    throw InvalidInput("bench size must be 100 to 2,000,000 triangles, got " +
-                       std::to_string(options.target_triangles));
   Sensor sensor = sensor_in;
   PipelineTiming timing;
-  const Mesh mesh = mesh_of_size(sensor, options, timing.mesh_s);
-  timing.element_size_mm = sensor.mesh.element_size_mm;
-  timing.triangles = static_cast<long>(mesh.triangle_count());
-  timing.electrodes = mesh.electrode_count();
+  const Mesh mesh = timed_mesh(sensor, options, timing);
   timing.measurements = static_cast<int>(sensor.excitation->readings.size());
   Matrix J;
   timing.jacobian_s = seconds([&] { J = relative_conductivity_jacobian(mesh, sensor, &timing.factorisation_s); });
 
-  std::vector<Vector> frames;
-  const Vector2 low = mesh.nodes_mm.colwise().minCoeff().head<2>().transpose();
-  const Vector2 high = mesh.nodes_mm.colwise().maxCoeff().head<2>().transpose();
-  for (const Vector2& fraction : {Vector2(0.3, 0.4), Vector2(0.5, 0.5), Vector2(0.75, 0.2)})
-    frames.push_back(disc_frame(mesh, J, low + fraction.cwiseProduct(high - low)));
+  const std::vector<Vector> frames = three_disc_frames(mesh, J);
   OperatorOptions noser;
   noser.prior = Prior::noser;
   // The dense R first (untimed), for the baseline product below.
