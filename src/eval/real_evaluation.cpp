@@ -68,8 +68,13 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
   CompactOperatorScratch scratch = op.scratch();
   Vector change(data.readings()), image(op.rows());
   std::vector<double> errors;
+  int missed = 0;
   for (Index i = test_from; i < data.presses(); ++i) {
     change = (data.frames.row(i).array() / data.references.row(i).array()).log().transpose();
+    if (!change.allFinite()) {  // a value or its reference not positive: not located, as by the response
+      ++missed;
+      continue;
+    }
     op.apply(change, image, scratch);
     Index peak = 0;
     image.cwiseAbs().maxCoeff(&peak);
@@ -82,9 +87,10 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
         sum += w * mesh.triangle_centroid_mm(t).head<2>();
         weight += w;
       }
-    errors.push_back((sum / weight - data.contacts[static_cast<std::size_t>(i)].front()).norm());
+    if (weight > 0) errors.push_back((sum / weight - data.contacts[static_cast<std::size_t>(i)].front()).norm());
+    else ++missed;  // an image of zeros: the change lies in the operator's kernel
   }
-  return summarize_errors(errors, 0);
+  return summarize_errors(errors, missed);
 }
 
 }  // namespace
