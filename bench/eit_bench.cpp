@@ -27,8 +27,9 @@ struct EitBench {
     o.prior = Prior::noser;
     return o;
   }();
-  Matrix dense = build_reconstruction_operator(J, mesh, noser);
-  CompactOperator compact = build_compact_operator(J, mesh, noser);
+  OperatorFamily family{J, mesh, noser.prior, noser.noser_exponent};
+  CompactOperator compact = family.compact_operator_for(family.lambda2_for(noser), noser.rank_cutoff);
+  Matrix dense = family.operator_for(compact.lambda2());
   /// A press's change: the Jacobian's prediction for a 10 mm disc of conductance 10 % down.
   Vector change = [this] {
     Vector d_sigma = Vector::Zero(mesh.triangle_count());

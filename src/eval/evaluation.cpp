@@ -19,18 +19,20 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
 }
 
 Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction) {
-  const Vector& dphi = reconstructor.image();
+  return thresholded_centroid(reconstructor.mesh(), reconstructor.surface(), reconstructor.image(), threshold_fraction);
+}
+
+Vector3 thresholded_centroid(const Mesh& mesh, const Shape& surface, const Vector& dphi, double threshold_fraction) {
   const double threshold = threshold_fraction * dphi.maxCoeff();
   Vector3 sum = Vector3::Zero();
   double weight = 0;
   for (Index k = 0; k < dphi.size(); ++k)
     if (dphi[k] > 0 && dphi[k] >= threshold) {
-      const double w = reconstructor.mesh().triangle_area_mm2(k) * dphi[k];
-      sum += w * reconstructor.mesh().triangle_centroid_mm(k);
+      const double w = mesh.triangle_area_mm2(k) * dphi[k];
+      sum += w * mesh.triangle_centroid_mm(k);
       weight += w;
     }
   if (!(weight > 0)) return Vector3::Constant(std::nan(""));
-  const Shape& surface = reconstructor.surface();
   return surface_point_mm(surface, surface_chart_mm(surface, sum / weight));
 }
 

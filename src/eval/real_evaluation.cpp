@@ -5,6 +5,7 @@
 #include <string>
 
 #include "emit/core/errors.hpp"
+#include "emit/eval/evaluation.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/model/conductivity_jacobian.hpp"
 #include "emit/model/reconstruction_operator.hpp"
@@ -76,19 +77,13 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
       continue;
     }
     op.apply(change, image, scratch);
-    Index peak = 0;
-    image.cwiseAbs().maxCoeff(&peak);
-    const double sign = image(peak) > 0 ? 1 : -1, threshold = 0.5 * std::abs(image(peak));
-    Vector2 sum(0, 0);
-    double weight = 0;
-    for (Index t = 0; t < image.size(); ++t)
-      if (sign * image(t) >= threshold) {
-        const double w = mesh.triangle_area_mm2(t) * sign * image(t);
-        sum += w * mesh.triangle_centroid_mm(t).head<2>();
-        weight += w;
-      }
-    if (weight > 0) errors.push_back((sum / weight - data.contacts[static_cast<std::size_t>(i)].front()).norm());
-    else ++missed;  // an image of zeros: the change lies in the operator's kernel
+    // A press may raise or lower the conductance: the paper's estimator on the image's stronger sign.
+    if (image.maxCoeff() < -image.minCoeff()) image = -image;
+    const Vector3 centre = thresholded_centroid(mesh, sensor.shape, image, 0.5);
+    if (centre.allFinite())
+      errors.push_back((centre.head<2>() - data.contacts[static_cast<std::size_t>(i)].front()).norm());
+    else
+      ++missed;  // an image of zeros: the change lies in the operator's kernel
   }
   return summarize_errors(errors, missed);
 }

@@ -25,6 +25,8 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
 /// threshold, weighted by area × δφ, seen from +z, and the sheet's point above it (NaN when no
 /// element is). Call after Reconstructor::process().
 Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshold_fraction);
+/// The same for any image on `mesh` (#F values), e.g. a current-injection skin's.
+Vector3 thresholded_centroid(const Mesh& mesh, const Shape& surface, const Vector& image, double threshold_fraction);
 
 struct LocalisationResult {
   ErrorStats image_centroid;     ///< the paper's estimate (thresholded_centroid)
