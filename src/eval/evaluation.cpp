@@ -22,13 +22,13 @@ Vector3 thresholded_centroid(const Reconstructor& reconstructor, double threshol
   return thresholded_centroid(reconstructor.mesh(), reconstructor.surface(), reconstructor.image(), threshold_fraction);
 }
 
-Vector3 thresholded_centroid(const Mesh& mesh, const Shape& surface, const Vector& dphi, double threshold_fraction) {
-  const double threshold = threshold_fraction * dphi.maxCoeff();
+Vector3 thresholded_centroid(const Mesh& mesh, const Shape& surface, const Vector& image, double threshold_fraction) {
+  const double threshold = threshold_fraction * image.maxCoeff();
   Vector3 sum = Vector3::Zero();
   double weight = 0;
-  for (Index k = 0; k < dphi.size(); ++k)
-    if (dphi[k] > 0 && dphi[k] >= threshold) {
-      const double w = mesh.triangle_area_mm2(k) * dphi[k];
+  for (Index k = 0; k < image.size(); ++k)
+    if (image[k] > 0 && image[k] >= threshold) {
+      const double w = mesh.triangle_area_mm2(k) * image[k];
       sum += w * mesh.triangle_centroid_mm(k);
       weight += w;
     }

@@ -82,8 +82,7 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
     const Vector3 centre = thresholded_centroid(mesh, sensor.shape, image, 0.5);
     if (centre.allFinite())
       errors.push_back((centre.head<2>() - data.contacts[static_cast<std::size_t>(i)].front()).norm());
-    else
-      ++missed;  // an image of zeros: the change lies in the operator's kernel
+    else ++missed;  // an image of zeros: the change lies in the operator's kernel
   }
   return summarize_errors(errors, missed);
 }

@@ -10,7 +10,7 @@
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
-#include "emit/core/quote_input.hpp"
+#include "emit/io/csv_numbers.hpp"
 
 namespace emit {
 
@@ -39,32 +39,13 @@ bool FramesCsvReader::next(Frame& frame) {
     if (!lines_.next(line_)) return false;
   } while (line_.find_first_not_of(" \t") == std::string::npos);
   const Index values_per_frame = static_cast<Index>(electrode_count_) * electrode_count_;
-  frame.resize(electrode_count_, electrode_count_);
-  Index count = 0;
-  const char* p = line_.c_str();
-  const char* const line_end = p + line_.size();
-  while (true) {
-    char* end = nullptr;
-    const double value = std::strtod(p, &end);
-    const char* stop = end;
-    while (*stop == ' ' || *stop == '\t') ++stop;
-    if (end == p || (*stop != ',' && stop != line_end)) {
-      const char* field_end = std::find(p, line_end, ',');
-      throw InvalidInput(where() + ": value " + std::to_string(count + 1) + " " +
-                         quote_input(std::string_view(p, static_cast<std::size_t>(field_end - p))) +
-                         " is not a number");
-    }
-    if (!std::isfinite(value))
-      throw InvalidInput(where() + ": value " + std::to_string(count + 1) + " is " +
-                         std::string(p, static_cast<std::size_t>(end - p)));
-    if (count < values_per_frame) frame.data()[count] = value;
-    ++count;
-    if (stop == line_end) break;
-    p = stop + 1;
-  }
+  parse_csv_numbers(line_, lines_, values_);
+  const auto count = static_cast<Index>(values_.size());
   if (count != values_per_frame)
     throw InvalidInput(where() + ": " + std::to_string(count) + " values, expected " +
                        std::to_string(values_per_frame) + " (" + std::to_string(electrode_count_) + " electrodes)");
+  frame.resize(electrode_count_, electrode_count_);
+  std::copy(values_.begin(), values_.end(), frame.data());
   ++frames_read_;
   return true;
 }

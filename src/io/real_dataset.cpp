@@ -1,48 +1,27 @@
 #include "emit/io/real_dataset.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/io/csv_numbers.hpp"
 #include "emit/io/line_reader.hpp"
 
 namespace emit {
 
 namespace {
 
-/// The comma-separated numbers of one line; \throw InvalidInput naming the value that is not one.
-std::vector<double> numbers_of(const std::string& line, const LineReader& lines) {
-  std::vector<double> values;
-  std::size_t begin = 0;
-  while (begin <= line.size()) {
-    const std::size_t end = std::min(line.find(',', begin), line.size());
-    const std::string field = line.substr(begin, end - begin);
-    char* stop = nullptr;
-    errno = 0;
-    const double x = std::strtod(field.c_str(), &stop);
-    const bool blank_after = stop && std::string(stop).find_first_not_of(" \t") == std::string::npos;
-    if (field.find_first_not_of(" \t") == std::string::npos || !blank_after || errno == ERANGE || !std::isfinite(x))
-      throw InvalidInput(lines.where() + ": value " + std::to_string(values.size() + 1) + ", " + quote_input(field) +
-                         ", is not a finite number");
-    values.push_back(x);
-    begin = end + 1;
-  }
-  return values;
-}
-
 /// Every line of a file of frames (blank lines skipped), each `width` values (the first line's
 /// when width is 0).
 Matrix read_rows(const std::string& path, const std::string& what, Index width, std::size_t max_values) {
   if (!std::filesystem::exists(path)) throw IoError(path + ": missing (" + what + ")");
   LineReader lines(path, what);
-  std::vector<double> values;
+  std::vector<double> values, row;
   Index rows = 0;
   for (std::string line; lines.next(line);) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    const std::vector<double> row = numbers_of(line, lines);
+    parse_csv_numbers(line, lines, row);
     if (width == 0) width = static_cast<Index>(row.size());
     if (static_cast<Index>(row.size()) != width)
       throw InvalidInput(lines.where() + ": " + std::to_string(row.size()) + " values, the frames have " +
@@ -66,9 +45,10 @@ std::vector<std::vector<Vector2>> read_truth(const std::string& path, Index pres
   if (!lines.next(line) || line.rfind("frame,contact,x_mm,y_mm", 0) != 0)
     throw InvalidInput(path + ":1: expected the header \"frame,contact,x_mm,y_mm[,...]\", got " + quote_input(line));
   std::vector<std::vector<Vector2>> contacts(static_cast<std::size_t>(presses));
+  std::vector<double> v;
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    const std::vector<double> v = numbers_of(line, lines);
+    parse_csv_numbers(line, lines, v);
     if (v.size() < 4)
       throw InvalidInput(lines.where() + ": expected frame,contact,x_mm,y_mm, got " + quote_input(line));
     if (v[0] < 0 || v[0] >= static_cast<double>(presses) || v[0] != std::floor(v[0]))

@@ -29,6 +29,7 @@ class FramesCsvReader {
   LineReader lines_;
   int electrode_count_;
   std::string line_;
+  std::vector<double> values_;  ///< the line's numbers, kept between lines
   long frames_read_ = 0;
 };
 
