@@ -238,7 +238,8 @@ void add_eval_command(CLI::App& app) {
   CLI::Option* real =
       cmd->add_option("--real", a->real.folder,
                       "A real skin's presses: a folder of frames.csv, references_per_frame.csv (or reference.csv) and "
-                      "truth.csv (README \"Real skins\"); calibrate on the first presses, locate the rest")
+                      "truth.csv (README \"Current-injection skins on real data\"); calibrate on the first presses, "
+                      "locate the rest")
           ->type_name("DIR");
   cmd->add_option("--sensor", a->real.sensor_path, "With --real: the skin's description, with its \"excitation\"")
       ->type_name("FILE")

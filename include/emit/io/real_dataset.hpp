@@ -1,6 +1,7 @@
 #pragma once
 /// \file real_dataset.hpp
-/// A real skin's measured presses, in a folder laid out as README "Real skins" says:
+/// A real skin's measured presses, in a folder laid out as README "Current-injection skins
+/// on real data" says:
 ///   frames.csv                  one pressed frame per line, M values (comma-separated, no header)
 ///   references_per_frame.csv    line i: the unpressed frame measured just before press i
 ///   (or reference.csv)          one unpressed frame for them all, when there is no per-frame one
