@@ -23,4 +23,11 @@ int thread_count() { return current_count; }
 SingleThreadedBlas::SingleThreadedBlas() { openblas_set_num_threads(1); }
 SingleThreadedBlas::~SingleThreadedBlas() { openblas_set_num_threads(current_count); }
 
+EmitBlasThreads::EmitBlasThreads() : host_count_(openblas_get_num_threads()) {
+  if (host_count_ != current_count) openblas_set_num_threads(current_count);
+}
+EmitBlasThreads::~EmitBlasThreads() {
+  if (host_count_ != current_count) openblas_set_num_threads(host_count_);
+}
+
 }  // namespace emit

@@ -9,21 +9,24 @@
 
 namespace emit {
 
-std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
-                                                    const LinearCalibration& calibration, const FrameOptions& options,
-                                                    const Frame& reference, const std::vector<Frame>& frames,
-                                                    int threads) {
+namespace {
+
+/// The batch over `count` frames, `frame(f)` giving frame f (a Frame or a FrameView).
+template <typename FrameAt>
+std::vector<std::vector<Contact>> batch(const ReconstructionModel& model, const LinearCalibration& calibration,
+                                        const FrameOptions& options, const Frame& reference, std::size_t count,
+                                        int threads, const FrameAt& frame) {
   if (threads < 1) throw InvalidInput("batch needs at least 1 thread, got " + std::to_string(threads));
-  std::vector<std::vector<Contact>> contacts(frames.size());
+  std::vector<std::vector<Contact>> contacts(count);
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
   // Contiguous slices: each worker's frames sit together in memory, and its results too.
   const auto work = [&](int worker) {
     try {
       Reconstructor reconstructor(model, calibration, options);
       reconstructor.set_reference(reference);
-      const std::size_t begin = frames.size() * static_cast<std::size_t>(worker) / static_cast<std::size_t>(threads);
-      const std::size_t end = frames.size() * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(threads);
-      for (std::size_t f = begin; f < end; ++f) contacts[f] = reconstructor.process(frames[f]);
+      const std::size_t begin = count * static_cast<std::size_t>(worker) / static_cast<std::size_t>(threads);
+      const std::size_t end = count * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(threads);
+      for (std::size_t f = begin; f < end; ++f) contacts[f] = reconstructor.process(frame(f));
     } catch (...) {
       errors[static_cast<std::size_t>(worker)] = std::current_exception();
     }
@@ -36,6 +39,29 @@ std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& m
   for (const std::exception_ptr& error : errors)
     if (error) std::rethrow_exception(error);
   return contacts;
+}
+
+}  // namespace
+
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
+                                                    const LinearCalibration& calibration, const FrameOptions& options,
+                                                    const Frame& reference, const std::vector<Frame>& frames,
+                                                    int threads) {
+  return batch(model, calibration, options, reference, frames.size(), threads,
+               [&](std::size_t f) -> const Frame& { return frames[f]; });
+}
+
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
+                                                    const LinearCalibration& calibration, const FrameOptions& options,
+                                                    const Frame& reference, std::span<const double> frames_volts,
+                                                    int threads) {
+  const Index N = model.measurements.electrode_count;
+  const std::size_t per_frame = static_cast<std::size_t>(N * N);
+  if (frames_volts.size() % per_frame != 0)
+    throw InvalidInput("frames: " + std::to_string(frames_volts.size()) + " values are not a whole number of " +
+                       std::to_string(N) + " × " + std::to_string(N) + " frames");
+  return batch(model, calibration, options, reference, frames_volts.size() / per_frame, threads,
+               [&](std::size_t f) { return FrameView(frames_volts.data() + f * per_frame, N, N); });
 }
 
 }  // namespace emit

@@ -59,7 +59,7 @@ void Reconstructor::set_reference(const Frame& reference, int frames_averaged) {
     floor_ = difference_noise_V(model_.reading_noise_V, frames_averaged) * noise_per_volt_;
 }
 
-const std::vector<Contact>& Reconstructor::process(const Frame& frame) {
+const std::vector<Contact>& Reconstructor::process(const FrameView& frame) {
   const int N = model_.measurements.electrode_count;
   if (frame.rows() != N || frame.cols() != N)
     throw InvalidInput("frame has " + std::to_string(frame.size()) + " values, expected " + std::to_string(N * N));

@@ -38,15 +38,19 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
   };
   while (!stop && !source_.finished() && !out_of_time() &&
          (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
-    if (recapture_requested_.exchange(false)) baseline_.recapture();
-    if (source_.next(frame_, options_.poll)) handle(frame_);
+    step();
   }
   stats_.seconds = stats_.frames > 1 ? seconds_between(first_, last_) : 0;
   stats_.frames_per_s = stats_.seconds > 0 ? static_cast<double>(stats_.frames - 1) / stats_.seconds : 0;
   return stats_;
 }
 
-void LiveLoop::handle(const SourceFrame& frame) {
+const std::vector<Contact>* LiveLoop::step() {
+  if (recapture_requested_.exchange(false)) baseline_.recapture();
+  return source_.next(frame_, options_.poll) ? handle(frame_) : nullptr;
+}
+
+const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   if (handled_ > 0 && frame.sequence > last_sequence_) stats_.frames_missed += frame.sequence - last_sequence_ - 1;
   last_sequence_ = frame.sequence;
   LiveFrame out;
@@ -60,7 +64,7 @@ void LiveLoop::handle(const SourceFrame& frame) {
     out.contacts = &no_contacts_;
     out.pressure_N_per_mm2 = &no_pressure_;
     publish(out);
-    return;
+    return nullptr;
   }
   const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
   if (baseline_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(baseline_.reference());
@@ -82,6 +86,7 @@ void LiveLoop::handle(const SourceFrame& frame) {
   if (stats_.frames == 0) first_ = now;
   last_ = now;
   ++stats_.frames;
+  return &contacts;
 }
 
 void LiveLoop::publish(LiveFrame& frame) {

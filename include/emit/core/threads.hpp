@@ -21,4 +21,18 @@ class SingleThreadedBlas {
   SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
 };
 
+/// While alive, BLAS uses thread_count() threads a call, and the BLAS's own count from before
+/// comes back after: for emit called from a host that shares the BLAS and sets its own count
+/// (numpy, in the Python module), so that emit's figures are the CLI's and the host's are its own.
+class EmitBlasThreads {
+ public:
+  EmitBlasThreads();
+  ~EmitBlasThreads();
+  EmitBlasThreads(const EmitBlasThreads&) = delete;
+  EmitBlasThreads& operator=(const EmitBlasThreads&) = delete;
+
+ private:
+  int host_count_;
+};
+
 }  // namespace emit

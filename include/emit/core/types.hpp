@@ -17,5 +17,8 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 /// One frame: N×N volts, row l = grounded electrode, column m = sensed electrode. Row-major, so
 /// data() is the ground-major order l·N + m of the frame files (README, "Files").
 using Frame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+/// A frame held elsewhere (a numpy array, a block of frames), read in place: N×N ground-major
+/// values, contiguous.
+using FrameView = Eigen::Map<const Frame>;
 
 }  // namespace emit

@@ -2,6 +2,7 @@
 /// \file batch.hpp
 /// A recorded file's frames at full speed: the linear methods treat each frame on its own, so a
 /// batch is split across threads, each with its own Reconstructor on the shared model.
+#include <span>
 #include <vector>
 
 #include "emit/frame/reconstructor.hpp"
@@ -14,6 +15,14 @@ namespace emit {
 std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
                                                     const LinearCalibration& calibration, const FrameOptions& options,
                                                     const Frame& reference, const std::vector<Frame>& frames,
+                                                    int threads);
+
+/// The same for frames held as one block: `frames_volts` holds frame after frame, each N×N
+/// ground-major (a C-ordered (frames, N, N) array), read in place. \throw InvalidInput also when
+/// its length is not a whole number of frames.
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
+                                                    const LinearCalibration& calibration, const FrameOptions& options,
+                                                    const Frame& reference, std::span<const double> frames_volts,
                                                     int threads);
 
 }  // namespace emit

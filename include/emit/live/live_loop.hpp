@@ -88,8 +88,20 @@ class LiveLoop {
   /// recording's end); a source's failure (IoError) propagates. Returns what it measured.
   LiveStats run(const std::atomic<bool>& stop);
 
+  /// One turn of run()'s loop, for a caller that pulls frames (the Python iterator): applies a
+  /// pending command, waits up to the poll for the source's next frame and handles it.
+  /// \return the frame's contacts when it was reconstructed (valid until the next step); null
+  /// when no frame came or it went to the baseline's capture. \throw IoError as run() does.
+  const std::vector<Contact>* step();
+  /// The last frame the source gave, and the reconstructor (its pressure and image are the last
+  /// reconstructed frame's).
+  const SourceFrame& last_frame() const { return frame_; }
+  const Reconstructor& reconstructor() const { return reconstructor_; }
+  const LiveStats& stats() const { return stats_; }
+
  private:
-  void handle(const SourceFrame& frame);
+  /// \return the contacts of a reconstructed frame; null for a capture frame.
+  const std::vector<Contact>* handle(const SourceFrame& frame);
   void publish(LiveFrame& frame);
 
   FrameSource& source_;

@@ -1,0 +1,69 @@
+"""emit.LiveStream: live sources as Python iterators of (frame, contacts)."""
+
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import emit
+from conftest import distance_mm
+
+
+def test_a_held_press_from_the_twin(sensor):
+    stream = emit.LiveStream("sim:fixed:20,40,10", sensor, method="paper", frames_per_s=0, max_frames=10)
+    frames = list(stream)
+    # max_frames reconstructed frames after the baseline's capture of 10; the twin's first 15
+    # frames are untouched, so 5 untouched frames come first, then 5 of the press.
+    assert len(frames) == 10
+    for frame, contacts in frames[:5]:
+        assert frame.shape == (16, 16)
+        assert contacts == []  # a frame without a press reports nothing (README, 1 % false alarms)
+    for frame, contacts in frames[5:]:
+        assert len(contacts) >= 1
+        # The README's p95 of the paper method's position error on this sheet is 8.05 mm.
+        assert distance_mm(contacts[0], 20, 40) < 8.05
+    assert stream.sequence == 19
+    assert stream.pressure.shape == (stream.mesh.triangle_count,)
+    assert stream.frames_missed == 0
+
+
+def test_a_recording_ends_the_iteration(cli, sensor, out):
+    subprocess.run([cli, "live", "--source", "sim:fixed:30,30,10", "--fps", "0", "--frames", "20",
+                    "--record", out / "rec.emitrec", "--method", "paper", "--cache", out / "cache"],
+                   check=True, capture_output=True)
+    stream = emit.LiveStream(f"file:{out / 'rec.emitrec'}", sensor, method="paper", frames_per_s=0)
+    frames = list(stream)
+    # The recording holds all 30 frames the CLI handled (its baseline's 10 included): the stream
+    # captures its own 10 and reconstructs the other 20, and ends there. The twin's first 15 are
+    # untouched; the last 15 show the press near (30, 30).
+    assert len(frames) == 20
+    assert all(contacts == [] for _, contacts in frames[:5])
+    assert all(contacts and distance_mm(contacts[0], 30, 30) < 8.05 for _, contacts in frames[5:])
+
+
+def test_waiting_for_frames_releases_the_gil(sensor):
+    # A paced source (10 frames/s) keeps the iterator waiting; a Python thread must run meanwhile.
+    stream = emit.LiveStream("sim:fixed:30,30,10", sensor, method="paper", frames_per_s=10, max_frames=3,
+                             capture_frames=2)
+    counter = [0]
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            counter[0] += 1
+
+    thread = threading.Thread(target=count)
+    thread.start()
+    start = time.monotonic()
+    frames = list(stream)
+    elapsed = time.monotonic() - start
+    stop.set()
+    thread.join()
+    assert len(frames) == 3
+    # 5 frames at 10 frames/s: about half a second of waiting, during which a Python loop counts
+    # to many thousands; were the GIL held it would barely start (the interpreter hands the GIL
+    # over every 5 ms only between Python bytecodes).
+    assert elapsed > 0.3
+    assert counter[0] > 10000
