@@ -22,6 +22,8 @@ packages=(
   gcovr                                 # line coverage (scripts/coverage.sh)
   libboost-dev                          # the serial port and the live viewer's server (Boost.Asio, Beast)
   chromium                              # the live viewer's browser test (headless)
+  pybind11-dev python3-dev python3-numpy  # the Python module (python/), against Debian's python3
+  python3-pytest python3-matplotlib     # its tests, and examples/python/quickstart.py's picture
 )
 # node and npm drive the browser test (playwright-core); any install of them will do.
 command -v node >/dev/null || packages+=(nodejs)

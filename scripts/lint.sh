@@ -28,7 +28,7 @@ failed=0
 # (firmware/ keeps its own style: it is also compiled freestanding for the board).
 if [ "$what" != tidy ]; then
   mapfile -t format_files < <(git ls-files -- 'include/*.hpp' 'include/*.cpp' 'src/*.hpp' 'src/*.cpp' 'cli/*.hpp' \
-    'cli/*.cpp' 'bench/*.hpp' 'bench/*.cpp' 'tests/*.hpp' 'tests/*.cpp')
+    'cli/*.cpp' 'bench/*.hpp' 'bench/*.cpp' 'tests/*.hpp' 'tests/*.cpp' 'python/*.hpp' 'python/*.cpp')
   unformatted=()
   for file in "${format_files[@]}"; do
     "$clang_format" --dry-run -Werror "$file" >/dev/null 2>&1 || unformatted+=("$file")
@@ -47,8 +47,8 @@ if [ "$what" != tidy ]; then
   fi
 fi
 
-# clang-tidy: every translation unit in the compilation database under src/, cli/, bench/, tests/
-# and the build's generated sources. The fuzz targets (tests/fuzz/, compiled by clang++ outside
+# clang-tidy: every translation unit in the compilation database under src/, cli/, bench/, tests/,
+# python/ and the build's generated sources. The fuzz targets (tests/fuzz/, compiled by clang++ outside
 # CMake's targets, so not in the database) are left to their own -Wall -Wextra -Werror build.
 if [ "$what" != format ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DEMIT_SANITIZE=OFF -DEMIT_BUILD_TESTS=ON -DEMIT_BUILD_BENCH=ON \
@@ -64,7 +64,7 @@ import json, os, sys
 database, root, build = sys.argv[1:]
 for entry in json.load(open(database)):
     path = os.path.normpath(os.path.join(entry["directory"], entry["file"]))
-    if path.startswith(build + "/generated/") or any(path.startswith(f"{root}/{d}/") for d in ("src", "cli", "bench", "tests")):
+    if path.startswith(build + "/generated/") or any(path.startswith(f"{root}/{d}/") for d in ("src", "cli", "bench", "tests", "python")):
         print(path)
 EOF
   )

@@ -29,9 +29,10 @@ FrameStack frame_stack(const py::handle& frames, Index electrodes, const std::st
   const char kind = given.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u')
     throw InvalidInput(what + ": expected numbers (float64), got dtype " + py::str(given.dtype()).cast<std::string>());
-  FrameStack stack{DoubleArray::ensure(given), single, single ? 1 : static_cast<std::size_t>(given.shape(0)), electrodes};
+  FrameStack stack{DoubleArray::ensure(given), single, single ? 1 : static_cast<std::size_t>(given.shape(0)),
+                   electrodes};
   if (!stack.array) throw InvalidInput(what + ": could not be read as float64");
-  const std::size_t per_frame = static_cast<std::size_t>(n * n);
+  const auto per_frame = static_cast<std::size_t>(n * n);
   const double* values = stack.array.data();
   for (std::size_t i = 0; i < stack.count * per_frame; ++i)
     if (!std::isfinite(values[i])) {

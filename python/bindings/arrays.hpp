@@ -27,7 +27,9 @@ struct FrameStack {
   bool single = true;  ///< given as one (N, N) frame
   std::size_t count = 0;
   Index electrodes = 0;
-  const double* frame(std::size_t f) const { return array.data() + f * static_cast<std::size_t>(electrodes * electrodes); }
+  const double* frame(std::size_t f) const {
+    return array.data() + f * static_cast<std::size_t>(electrodes * electrodes);
+  }
   FrameView view(std::size_t f) const { return {frame(f), electrodes, electrodes}; }
 };
 

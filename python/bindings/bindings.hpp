@@ -19,11 +19,11 @@ struct EmitCall {
   EmitBlasThreads blas;
 };
 
-void bind_errors(py::module_& m);          ///< errors.cpp
-void bind_sensor(py::module_& m);          ///< sensor.cpp: Sensor, Mesh, Press, load_frames, methods
-void bind_twin(py::module_& m);            ///< twin.cpp: Twin, simulate
-void bind_calibration(py::module_& m);     ///< calibration.cpp: Calibration, calibrate
-void bind_reconstructor(py::module_& m);   ///< reconstructor.cpp: Contact, CONTACT_DTYPE, Reconstructor
-void bind_live(py::module_& m);            ///< live.cpp: LiveStream
+void bind_errors(py::module_& m);         ///< errors.cpp
+void bind_sensor(py::module_& m);         ///< sensor.cpp: Sensor, Mesh, Press, load_frames, methods
+void bind_twin(py::module_& m);           ///< twin.cpp: Twin, simulate
+void bind_calibration(py::module_& m);    ///< calibration.cpp: Calibration, calibrate
+void bind_reconstructor(py::module_& m);  ///< reconstructor.cpp: Contact, CONTACT_DTYPE, Reconstructor
+void bind_live(py::module_& m);           ///< live.cpp: LiveStream
 
 }  // namespace emit::python

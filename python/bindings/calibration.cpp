@@ -28,10 +28,15 @@ std::vector<Frame> frames_of(const FrameStack& stack) {
 }  // namespace
 
 void bind_calibration(py::module_& m) {
-  py::class_<PythonCalibration>(m, "Calibration", R"(A method's calibration: eq. 8's a1, a2, a3 for the linear methods, or
+  py::class_<PythonCalibration>(m, "Calibration",
+                                R"(A method's calibration: eq. 8's a1, a2, a3 for the linear methods, or
 the contact law and sheet as contact fitting sees them. Made by emit.calibrate or Calibration.load.)")
       .def_static(
-          "load", [](const std::string& path) { return PythonCalibration{load_calibration(path), 0, std::nullopt, std::nullopt}; }, py::arg("path"),
+          "load",
+          [](const std::string& path) {
+            return PythonCalibration{load_calibration(path), 0, std::nullopt, std::nullopt};
+          },
+          py::arg("path"),
           "Reads a calibration file (as `emit calibrate` writes). Raises InvalidInput naming the key, IoError.")
       .def(
           "save",

@@ -11,8 +11,8 @@ namespace emit::python {
 
 struct PythonCalibration {
   Calibration calibration;
-  std::size_t presses = 0;                   ///< single presses it was fitted on (0: read from a file)
-  std::optional<double> rms_N_per_mm2;       ///< the calibrated pressure's error over them
+  std::size_t presses = 0;              ///< single presses it was fitted on (0: read from a file)
+  std::optional<double> rms_N_per_mm2;  ///< the calibrated pressure's error over them
   std::optional<double> max_abs_N_per_mm2;
 };
 

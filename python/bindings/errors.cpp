@@ -31,7 +31,8 @@ void bind_errors(py::module_& m) {
   static PyObject* solver_error = new_exception(m, "SolverError", "A numerical step that failed (a singular system).",
                                                 py::make_tuple(py::handle(error), py::handle(PyExc_RuntimeError)));
   static PyObject* any_error = error;
-  py::register_exception_translator([](std::exception_ptr thrown) {
+  // pybind11's translator type takes the exception_ptr by value.
+  py::register_exception_translator([](std::exception_ptr thrown) {  // NOLINT(performance-unnecessary-value-param)
     try {
       if (thrown) std::rethrow_exception(thrown);
     } catch (const InvalidInput& e) {

@@ -31,10 +31,22 @@ struct ContactRow {
 };
 
 ContactRow row_of(std::int64_t frame, const Contact& c) {
-  return {frame,         c.x_mm,     c.y_mm,      c.z_mm,     c.nx,
-          c.ny,          c.nz,       c.area_mm2,  c.pressure_N_per_mm2,
-          c.peak_pressure_N_per_mm2, c.force_N,   c.x_std_mm, c.y_std_mm,
-          c.pressure_std_N_per_mm2,  c.force_std_N, c.element_count};
+  return {frame,
+          c.x_mm,
+          c.y_mm,
+          c.z_mm,
+          c.nx,
+          c.ny,
+          c.nz,
+          c.area_mm2,
+          c.pressure_N_per_mm2,
+          c.peak_pressure_N_per_mm2,
+          c.force_N,
+          c.x_std_mm,
+          c.y_std_mm,
+          c.pressure_std_N_per_mm2,
+          c.force_std_N,
+          c.element_count};
 }
 
 py::array_t<ContactRow> contact_rows(const std::vector<std::vector<Contact>>& per_frame) {
@@ -84,15 +96,14 @@ class PythonReconstructor {
     if (is_linear(pipeline_->method()) && !pressure)
       return reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_,
                                std::span<const double>(stack.frame(0), stack.count * static_cast<std::size_t>(
-                                                                                        electrodes_ * electrodes_)),
+                                                                                         electrodes_ * electrodes_)),
                                threads);
     std::vector<std::vector<Contact>> contacts(stack.count);
     const Index triangles = reconstructor_->pressure().size();
     for (std::size_t f = 0; f < stack.count; ++f) {
       contacts[f] = reconstructor_->process(stack.view(f));
       if (pressure)
-        Eigen::Map<Vector>(pressure + f * static_cast<std::size_t>(triangles), triangles) =
-            reconstructor_->pressure();
+        Eigen::Map<Vector>(pressure + f * static_cast<std::size_t>(triangles), triangles) = reconstructor_->pressure();
     }
     return contacts;
   }
@@ -106,15 +117,17 @@ class PythonReconstructor {
     for (int r = 0; r < repeats; ++r) {
       if (batch) {
         if (!is_linear(pipeline_->method())) throw InvalidInput("batch: for the linear methods only");
-        contacts += reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_,
-                                      frames, threads)
+        contacts += reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_, frames,
+                                      threads)
                         .size();
       } else {
         for (const Frame& frame : frames) contacts += reconstructor_->process(frame).size();
       }
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return contacts == std::size_t(-1) ? 0 : seconds / static_cast<double>(frames.size() * static_cast<std::size_t>(repeats));
+    return contacts == std::size_t(-1)
+               ? 0
+               : seconds / static_cast<double>(frames.size() * static_cast<std::size_t>(repeats));
   }
 
  private:
@@ -178,8 +191,9 @@ not estimated). Read-only.)")
           "Its fields as a dict (the names of CONTACT_DTYPE but 'frame').")
       .def("__repr__", [](const Contact& c) {
         char text[160];
-        std::snprintf(text, sizeof text, "Contact(x_mm=%.2f, y_mm=%.2f, force_N=%.3f, pressure_N_per_mm2=%.4f, area_mm2=%.1f)",
-                      c.x_mm, c.y_mm, c.force_N, c.pressure_N_per_mm2, c.area_mm2);
+        std::snprintf(text, sizeof text,
+                      "Contact(x_mm=%.2f, y_mm=%.2f, force_N=%.3f, pressure_N_per_mm2=%.4f, area_mm2=%.1f)", c.x_mm,
+                      c.y_mm, c.force_N, c.pressure_N_per_mm2, c.area_mm2);
         return std::string(text);
       });
 
@@ -188,9 +202,9 @@ not estimated). Read-only.)")
 Building it builds the method's models (mesh, Jacobian, operator; for 'fit' the contact fitter):
 seconds, once; with cache_dir the linear operator is kept on disk for the next time. Then
 set_reference(untouched frames), and reconstruct(frames) per frame or per stack.)")
-      .def(py::init([](const Sensor& sensor, const std::string& method, const std::optional<PythonCalibration>& calibration,
-                       const std::string& cache_dir, double lambda2, double threshold_fraction,
-                       double min_contact_area_mm2, bool track_contacts) {
+      .def(py::init([](const Sensor& sensor, const std::string& method,
+                       const std::optional<PythonCalibration>& calibration, const std::string& cache_dir,
+                       double lambda2, double threshold_fraction, double min_contact_area_mm2, bool track_contacts) {
              PipelineOptions pipeline;
              pipeline.method = parse_method(method);
              pipeline.lambda2 = lambda2;

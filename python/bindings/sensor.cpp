@@ -28,9 +28,7 @@ nlohmann::json json_of(const py::handle& object) {
   return nlohmann::json::parse(json.attr("dumps")(object).cast<std::string>());
 }
 
-py::object python_of(const nlohmann::json& value) {
-  return py::module_::import("json").attr("loads")(value.dump());
-}
+py::object python_of(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
 
 }  // namespace
 
@@ -57,11 +55,12 @@ same keys as a dict) or Sensor.default() (the paper's 60 x 60 mm sheet, 16 elect
           "A sensor from a dict with a sensor file's keys; a mesh or CAD file is found relative to base_dir.\n"
           "Raises InvalidInput naming an unknown or wrong key.")
       .def_static("default", &default_sensor, "The built-in sensor: the paper's 60 x 60 mm sheet, 16 electrodes.")
-      .def("to_dict", [](const Sensor& sensor) { return python_of(sensor_to_json(sensor)); },
-           "The sensor as a dict of a sensor file's keys (electrodes listed explicitly).")
+      .def(
+          "to_dict", [](const Sensor& sensor) { return python_of(sensor_to_json(sensor)); },
+          "The sensor as a dict of a sensor file's keys (electrodes listed explicitly).")
       .def_property_readonly("name", [](const Sensor& sensor) { return sensor.name; })
-      .def_property_readonly("electrode_count", [](const Sensor& sensor) { return electrode_count_of(sensor); },
-                             "N: frames are N x N.")
+      .def_property_readonly(
+          "electrode_count", [](const Sensor& sensor) { return electrode_count_of(sensor); }, "N: frames are N x N.")
       .def_property_readonly("drive_voltage_V", [](const Sensor& sensor) { return sensor.drive_voltage_V; })
       .def(
           "mesh",
@@ -116,10 +115,10 @@ same keys as a dict) or Sensor.default() (the paper's 60 x 60 mm sheet, 16 elect
       });
 
   py::class_<Press>(m, "Press", "A press: a circular indenter at (x, y) [mm] with a force [N] (README, \"Files\").")
-      .def(py::init([](double x_mm, double y_mm, double force_N, double radius_mm, const std::string& profile,
-                       double z_mm) {
-             return Press{x_mm, y_mm, radius_mm, force_N, parse_press_profile(profile), z_mm};
-           }),
+      .def(py::init(
+               [](double x_mm, double y_mm, double force_N, double radius_mm, const std::string& profile, double z_mm) {
+                 return Press{x_mm, y_mm, radius_mm, force_N, parse_press_profile(profile), z_mm};
+               }),
            py::arg("x_mm"), py::arg("y_mm"), py::arg("force_N") = 10.0, py::arg("radius_mm") = 5.0,
            py::arg("profile") = "flat", py::arg("z_mm") = 0.0)
       .def_readwrite("x_mm", &Press::x_mm)

@@ -45,8 +45,7 @@ applies the sensor's ADC (quantisation, noise, clipping) unless adc=False.)")
              const EmitCall call;
              return std::make_unique<Twin>(sensor, twin_options(mesh_seed, noise_seed, adc));
            }),
-           py::arg("sensor"), py::kw_only(), py::arg("mesh_seed") = 1, py::arg("noise_seed") = 1,
-           py::arg("adc") = true)
+           py::arg("sensor"), py::kw_only(), py::arg("mesh_seed") = 1, py::arg("noise_seed") = 1, py::arg("adc") = true)
       .def(
           "frame",
           [](Twin& twin, const std::vector<Press>& presses) {

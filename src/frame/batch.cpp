@@ -56,7 +56,7 @@ std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& m
                                                     const Frame& reference, std::span<const double> frames_volts,
                                                     int threads) {
   const Index N = model.measurements.electrode_count;
-  const std::size_t per_frame = static_cast<std::size_t>(N * N);
+  const auto per_frame = static_cast<std::size_t>(N * N);
   if (frames_volts.size() % per_frame != 0)
     throw InvalidInput("frames: " + std::to_string(frames_volts.size()) + " values are not a whole number of " +
                        std::to_string(N) + " × " + std::to_string(N) + " frames");
