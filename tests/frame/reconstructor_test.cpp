@@ -140,6 +140,28 @@ TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
     }
   }
   EXPECT_THROW(reconstruct_batch(s.model, calibration, {}, reference, frames, 0), InvalidInput);
+
+  // The same frames as one block (a C-ordered (frames, N, N) array, read in place): the same contacts.
+  std::vector<double> block;
+  for (const Frame& frame : frames) block.insert(block.end(), frame.data(), frame.data() + frame.size());
+  const auto from_block = reconstruct_batch(s.model, calibration, {}, reference, std::span<const double>(block), 2);
+  ASSERT_EQ(from_block.size(), frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    ASSERT_EQ(from_block[f].size(), batch[f].size()) << "frame " << f;
+    for (std::size_t c = 0; c < batch[f].size(); ++c) EXPECT_EQ(from_block[f][c].x_mm, batch[f][c].x_mm);
+  }
+  // A block that is not a whole number of frames says so.
+  block.pop_back();
+  EXPECT_THROW(
+      {
+        try {
+          reconstruct_batch(s.model, calibration, {}, reference, std::span<const double>(block), 1);
+        } catch (const InvalidInput& e) {
+          EXPECT_NE(std::string(e.what()).find("not a whole number of"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InvalidInput);
 }
 
 }  // namespace

@@ -116,6 +116,32 @@ TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
   EXPECT_EQ(expected_frame, BaselineOptions{}.capture_frames + 40);
 }
 
+// Pulled a frame at a time (step(), as the Python iterator pulls), the loop gives what run()
+// gives: no contacts during the baseline's capture, then each frame's contacts where the finger is.
+TEST(LiveLoop, SteppingGivesEachReconstructedFramesContacts) {
+  LiveBench& b = bench();
+  SimSource source(b.sensor, parse_sim_script("sim"), unpaced());
+  LiveLoop loop(source, b.pipeline);
+  const int capture = BaselineOptions{}.capture_frames;
+  for (int f = 0; f < capture; ++f) {
+    const std::vector<Contact>* contacts = nullptr;
+    while (loop.stats().capture_frames == static_cast<std::uint64_t>(f)) contacts = loop.step();
+    EXPECT_EQ(contacts, nullptr) << "capture frame " << f;
+  }
+  int pressed = 0;
+  while (loop.stats().frames < 20) {
+    const std::vector<Contact>* contacts = loop.step();
+    if (!contacts) continue;
+    const std::vector<Press> presses = source.presses_of(loop.last_frame().sequence);
+    ASSERT_EQ(contacts->size(), presses.size()) << "frame " << loop.last_frame().sequence;
+    if (presses.empty()) continue;
+    ++pressed;
+    EXPECT_LT(std::hypot((*contacts)[0].x_mm - presses[0].x_mm, (*contacts)[0].y_mm - presses[0].y_mm),
+              live_fit_tolerance_mm);
+  }
+  EXPECT_EQ(pressed, 20 - (unpaced().untouched_frames - capture));
+}
+
 /// Hands out one frame's volts under the sequence numbers it is given, then ends.
 class NumberedSource : public FrameSource {
  public:
