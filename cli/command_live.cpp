@@ -65,6 +65,7 @@ void run_live(const LiveJob& job) {
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
                1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
                static_cast<unsigned long long>(stats.frames_missed));
+  if (!job.mcap_path.empty()) std::fprintf(say, "recorded the reconstructed frames to %s (MCAP)\n", job.mcap_path.c_str());
   if (!job.record_path.empty())
     std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
                  static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(),
@@ -87,6 +88,8 @@ void add_live_command(CLI::App& app) {
                   "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
       ->capture_default_str();
   cmd->add_option("--record", job.record_path, "Record every frame the source gives to this file (replay with file:)");
+  cmd->add_option("--mcap", job.mcap_path,
+                  "Record each reconstructed frame, its contacts and pressure image as ROS 2 messages in an MCAP file");
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--contacts", job.contacts_path, "Contacts out as JSON Lines: a file, or - for stdout");
   cmd->add_option("--method", a->method,

@@ -28,6 +28,8 @@ void run_reconstruct(ReconstructArgs args) {
   std::printf("reconstructed %zu frames (%.0f frames/s%s) with the %s method%s; contacts in %s\n", r.frames,
               r.frames_per_s, job.images_dir.empty() ? "" : ", with images", args.method.c_str(), lambda,
               job.contacts_path.c_str());
+  if (!job.mcap_path.empty())
+    std::printf("recorded frames, contacts and pressure images to %s (MCAP, ROS 2 messages)\n", job.mcap_path.c_str());
   if (!r.calibrated) std::printf("note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }
 
@@ -60,6 +62,8 @@ void add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--min-area-mm2", job.min_contact_area_mm2, "Drop contacts smaller than this")
       ->check(non_negative_number());
   cmd->add_option("--images", job.images_dir, "Write a pressure map per frame (PNG) into this folder");
+  cmd->add_option("--mcap", job.mcap_path,
+                  "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
   cmd->callback([a] { run_reconstruct(*a); });

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "emit/acquire/recorder.hpp"
+#include "emit/live/mcap_publisher.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
@@ -33,6 +34,7 @@ struct LiveSession::Impl {
   std::optional<LiveLoop> loop;
   std::optional<LiveServer> server;
   std::optional<Recorder> recorder;
+  std::optional<McapPublisher> mcap;
   std::ofstream contacts_file;
 };
 
@@ -40,7 +42,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
   check_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
-                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path}, {"--record", job.record_path}});
+                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path}, {"--record", job.record_path},
+                 {"--mcap", job.mcap_path}});
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
@@ -74,6 +77,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
     s.loop->write_contacts_to(&s.contacts_file);
   }
   if (!job.record_path.empty()) s.loop->record_to(&s.recorder.emplace(job.record_path, s.sensor));
+  if (!job.mcap_path.empty())
+    s.loop->add_publisher(&s.mcap.emplace(job.mcap_path, s.sensor.name, s.pipeline->model().mesh));
 }
 
 LiveSession::~LiveSession() = default;
@@ -86,6 +91,7 @@ std::uint64_t LiveSession::recorded_frames() const { return impl_->recorder ? im
 LiveStats LiveSession::run(const std::atomic<bool>& stop) {
   LiveStats stats = impl_->loop->run(stop);  // not const: returned by move
   if (impl_->recorder) impl_->recorder->close();
+  if (impl_->mcap) impl_->mcap->close();
   return stats;
 }
 

@@ -14,6 +14,7 @@
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
+#include "emit/io/tactile_mcap.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -68,6 +69,9 @@ FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N)
 /// across threads, and memory stays bounded (256 × 16² doubles = 0.5 MB).
 constexpr std::size_t chunk_frames = 256;
 
+/// Frames in an MCAP recording of a file are this far apart: the board's 50 frames/s.
+constexpr std::uint64_t mcap_frame_interval_ns = 20'000'000;
+
 }  // namespace
 
 ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress) {
@@ -75,7 +79,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                  {"--reference", job.reference_path},
                  {"--frames", job.frames_path},
                  {"--calibration", job.calibration_path}},
-                {{"--contacts", job.contacts_path}});
+                {{"--contacts", job.contacts_path}, {"--mcap", job.mcap_path}});
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
   std::optional<Calibration> calibration;
@@ -113,12 +117,17 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   FrameOptions frame_options;
   frame_options.threshold_fraction = job.threshold_fraction;
   frame_options.min_contact_area_mm2 = job.min_contact_area_mm2;
-  const bool batch = is_linear(job.method) && job.images_dir.empty();  // frames independent: split across threads
+  // Frames independent: split across threads (unless each frame's image is wanted).
+  const bool batch = is_linear(job.method) && job.images_dir.empty() && job.mcap_path.empty();
   std::optional<Reconstructor> reconstructor;
   if (!batch) {
     reconstructor.emplace(pipeline.reconstructor(frame_options));
     reconstructor->set_reference(reference);
   }
+  // A file of frames has no times: the recording puts them at the board's 50 frames/s from now.
+  const std::uint64_t start_ns = unix_time_ns();
+  std::optional<TactileMcap> mcap;
+  if (!job.mcap_path.empty()) mcap.emplace(job.mcap_path, sensor.name, model.mesh, start_ns);
   const auto online_start = std::chrono::steady_clock::now();
   FramesCsvReader reader(job.frames_path, N);
   std::vector<Frame> chunk;
@@ -140,12 +149,16 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
         write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts,
                             fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
         if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
+        if (mcap)
+          mcap->write(first + f, start_ns + (first + f) * mcap_frame_interval_ns, frame_view(chunk[f]), contacts,
+                      reconstructor->pressure());
         progress.step("reconstructing frame", static_cast<long>(first + f + 1), survey.frames);
       }
     }
     if (batch) progress.step("reconstructing frame", static_cast<long>(first + count), survey.frames);
   }
   contacts_file.commit();
+  if (mcap) mcap->close();
   report.frames_per_s = static_cast<double>(report.frames) / std::max(seconds_since(online_start), 1e-9);
   return report;
 }

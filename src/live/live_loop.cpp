@@ -56,6 +56,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   LiveFrame out;
   out.index = handled_++;
   out.sequence = frame.sequence;
+  out.volts = &frame.volts;
   if (recorder_) recorder_->record(frame.raw);
   if (baseline_.capturing()) {
     if (baseline_.capture(frame.volts)) reconstructor_.set_reference(baseline_.reference());

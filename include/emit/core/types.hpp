@@ -20,5 +20,6 @@ using Frame = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMa
 /// A frame held elsewhere (a numpy array, a block of frames), read in place: N×N ground-major
 /// values, contiguous.
 using FrameView = Eigen::Map<const Frame>;
+inline FrameView frame_view(const Frame& frame) { return {frame.data(), frame.rows(), frame.cols()}; }
 
 }  // namespace emit

@@ -57,9 +57,7 @@ class Reconstructor {
   /// One frame → contacts (valid until the next call). \throw InvalidInput if the frame is not
   /// N×N; the frame's values are not checked here (the readers check them).
   const std::vector<Contact>& process(const FrameView& frame);
-  const std::vector<Contact>& process(const Frame& frame) {
-    return process(FrameView(frame.data(), frame.rows(), frame.cols()));
-  }
+  const std::vector<Contact>& process(const Frame& frame) { return process(frame_view(frame)); }
 
   const Vector& image() const { return dphi_; }         ///< δφ per element [V] (0 while tracking holds)
   const Vector& pressure() const { return pressure_; }  ///< per element [N/mm²], 0 below threshold

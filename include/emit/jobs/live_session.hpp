@@ -27,6 +27,7 @@ struct LiveJob {
   std::string serve;             ///< HOST:PORT for the viewer; empty: none
   std::string contacts_path;     ///< JSON Lines; "-": standard output; empty: none
   std::string record_path;       ///< empty: no recording
+  std::string mcap_path;         ///< empty: no MCAP recording (live/mcap_publisher.hpp)
   std::string sensor_path;       ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated
   std::string cache_dir;         ///< the operator cache; empty: none

@@ -19,6 +19,7 @@ struct ReconstructJob {
   std::string contacts_path;     ///< contacts out (JSON Lines)
   std::string calibration_path;  ///< empty: uncalibrated
   std::string images_dir;        ///< empty: no pictures
+  std::string mcap_path;         ///< empty: no MCAP recording (io/tactile_mcap.hpp)
   Method method = Method::fit;
   double lambda2 = 0;  ///< 0: the method's
   double threshold_fraction = 0.5, min_contact_area_mm2 = 0;

@@ -26,6 +26,7 @@ struct LiveFrame {
   std::uint64_t sequence = 0;       ///< the source's number
   bool capturing_baseline = false;  ///< no reference yet, or a re-capture under way: no contacts
   std::uint64_t baseline_captures = 0;
+  const Frame* volts = nullptr;  ///< the frame as the source gave it
   const std::vector<Contact>* contacts = nullptr;
   const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
   double frames_per_s = 0;                     ///< recent rate (over about the last second)

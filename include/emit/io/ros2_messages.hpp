@@ -1,0 +1,61 @@
+#pragma once
+/// \file ros2_messages.hpp
+/// emit's frames, contacts, pressure images and mesh as ROS 2 messages: their definitions (the
+/// `.msg` text, with every type they use, as ROS 2 bags and MCAP's "ros2msg" schemas carry them)
+/// and their serialisation (CDR, little-endian, XCDR1 with its 4-byte encapsulation header: what
+/// ROS 2's DDS layers put on the wire and in bags).
+///
+/// The messages are modelled on tactile_msgs (`TactileState`: a header and each sensor's name and
+/// values; `TactileContact`: name, position, normal, wrench), in ROS's SI units (REP 103): metres,
+/// newtons, pascals. emit's contacts are in mm and N/mm², so positions are × 1e-3, areas × 1e-6
+/// and pressures × 1e6 here.
+///
+///   emit_msgs/msg/TactileState     a raw frame: sensors[0] = {sensor name, N·N volts ground-major}
+///   emit_msgs/msg/TactileContacts  a frame's contacts, strongest first (none: an empty list)
+///   emit_msgs/msg/PressureImage    the pressure per triangle of the mesh [Pa]
+///   shape_msgs/msg/Mesh            the reconstruction's mesh [m], once
+///
+/// Encoding reuses the caller's buffer: once it has grown to the largest message, it allocates
+/// nothing (the per-frame path).
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "emit/core/types.hpp"
+#include "emit/frame/contacts.hpp"
+#include "emit/mesh/mesh.hpp"
+
+namespace emit {
+
+/// A message's time: ROS's builtin_interfaces/Time, from nanoseconds since the Unix epoch.
+struct Ros2Stamp {
+  std::int32_t sec = 0;
+  std::uint32_t nanosec = 0;
+  static Ros2Stamp from_ns(std::uint64_t ns) {
+    return {static_cast<std::int32_t>(ns / 1'000'000'000u), static_cast<std::uint32_t>(ns % 1'000'000'000u)};
+  }
+};
+
+/// A message type: its ROS name ("emit_msgs/msg/TactileState") and its definition with every
+/// type it uses, separated as ROS 2 bags do ("=====…\nMSG: pkg/Type\n").
+struct Ros2MessageType {
+  std::string name;
+  std::string definition;
+};
+
+const Ros2MessageType& tactile_state_message();
+const Ros2MessageType& tactile_contacts_message();
+const Ros2MessageType& pressure_image_message();
+const Ros2MessageType& mesh_message();
+
+/// Each fills `out` (cleared first) with the CDR bytes of one message.
+void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                          std::string_view sensor_name, const FrameView& volts);
+void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                             std::uint64_t frame, const std::vector<Contact>& contacts);
+void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                           std::uint64_t frame, const Vector& pressure_N_per_mm2);
+void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh);
+
+}  // namespace emit

@@ -1,0 +1,55 @@
+#pragma once
+/// \file tactile_mcap.hpp
+/// A run recorded as an MCAP file with ROS 2's conventions (`emit reconstruct --mcap`, `emit live
+/// --mcap`): per frame, its raw readings, its contacts and its pressure image, each on its own
+/// topic as a ROS 2 message (io/ros2_messages.hpp), and the mesh the images are drawn on once at
+/// the start. Profile "ros2", schemas "ros2msg", messages "cdr": `ros2 bag play` and Foxglove read
+/// it as a bag.
+///
+///   <prefix>/frames    emit_msgs/msg/TactileState
+///   <prefix>/contacts  emit_msgs/msg/TactileContacts
+///   <prefix>/pressure  emit_msgs/msg/PressureImage
+///   <prefix>/mesh      shape_msgs/msg/Mesh
+///
+/// Written through PATH.partial, renamed on close() (io/mcap_writer.hpp).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "emit/core/types.hpp"
+#include "emit/frame/contacts.hpp"
+#include "emit/io/mcap_writer.hpp"
+#include "emit/mesh/mesh.hpp"
+
+namespace emit {
+
+class TactileMcap {
+ public:
+  /// `frame_id`: the messages' header frame (the sheet's coordinate frame in a ROS graph);
+  /// `prefix`: the topics' ("/emit"). The mesh is written at `start_time_ns`.
+  /// \throw IoError naming the file (a missing folder: before anything is written).
+  TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns,
+              std::string prefix = "/emit", std::string frame_id = "emit_sheet");
+
+  /// One frame's three messages, at `time_ns` (ns since the Unix epoch). Allocates nothing once
+  /// warm. \throw IoError.
+  void write(std::uint64_t frame, std::uint64_t time_ns, const FrameView& volts, const std::vector<Contact>& contacts,
+             const Vector& pressure_N_per_mm2);
+  /// \throw IoError. Without it, PATH.partial stays and PATH is untouched.
+  void close() { mcap_.close(); }
+
+  const std::string& path() const { return mcap_.path(); }
+  std::uint64_t frames() const { return frames_; }
+
+ private:
+  McapWriter mcap_;
+  std::string sensor_name_, frame_id_;
+  std::uint16_t frames_channel_ = 0, contacts_channel_ = 0, pressure_channel_ = 0;
+  std::vector<std::uint8_t> message_;
+  std::uint64_t frames_ = 0;
+};
+
+/// Nanoseconds since the Unix epoch, now (the host's clock: a bag's receive time).
+std::uint64_t unix_time_ns();
+
+}  // namespace emit

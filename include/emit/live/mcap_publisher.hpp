@@ -1,0 +1,27 @@
+#pragma once
+/// \file mcap_publisher.hpp
+/// `emit live --mcap FILE`: every reconstructed frame (its readings, contacts and pressure image)
+/// into an MCAP recording with ROS 2's messages (io/tactile_mcap.hpp), stamped with the host's
+/// clock as it is published. The baseline's capture frames are left out (they have no contacts;
+/// `--record` keeps every frame as the board sent it).
+#include <string>
+
+#include "emit/io/tactile_mcap.hpp"
+#include "emit/live/live_loop.hpp"
+
+namespace emit {
+
+class McapPublisher : public FramePublisher {
+ public:
+  /// \throw IoError naming the file.
+  McapPublisher(std::string path, const std::string& sensor_name, const Mesh& mesh);
+  void publish(const LiveFrame& frame) override;
+  /// Renames PATH.partial to PATH (io/mcap_writer.hpp). \throw IoError.
+  void close() { mcap_.close(); }
+  std::uint64_t frames() const { return mcap_.frames(); }
+
+ private:
+  TactileMcap mcap_;
+};
+
+}  // namespace emit

@@ -1,0 +1,206 @@
+#include "emit/io/ros2_messages.hpp"
+
+#include <cstdio>
+#include <bit>
+#include <cstring>
+#include <type_traits>
+
+namespace emit {
+
+namespace {
+
+// The definitions ROS 2 bags carry: the message's own fields, then each type it uses once.
+constexpr std::string_view separator =
+    "================================================================================\n";
+
+constexpr std::string_view header_types =
+    "MSG: std_msgs/Header\n"
+    "# Standard metadata for higher-level stamped data types.\n"
+    "builtin_interfaces/Time stamp\n"
+    "string frame_id\n"
+    "================================================================================\n"
+    "MSG: builtin_interfaces/Time\n"
+    "int32 sec\n"
+    "uint32 nanosec\n";
+
+constexpr std::string_view tactile_state_fields =
+    "# One frame of a tactile skin's raw readings (modelled on tactile_msgs/TactileState).\n"
+    "std_msgs/Header header\n"
+    "emit_msgs/TactileSensor[] sensors\n"
+    "================================================================================\n"
+    "MSG: emit_msgs/TactileSensor\n"
+    "# A sensor's readings: for an EMIT sheet of N electrodes, N*N volts, row l (electrode l\n"
+    "# grounded) after row, column m the electrode read.\n"
+    "string name\n"
+    "float64[] values\n";
+
+constexpr std::string_view tactile_contacts_fields =
+    "# A frame's contacts, strongest first; an empty list when nothing touches.\n"
+    "std_msgs/Header header\n"
+    "uint64 frame  # the source's frame number\n"
+    "emit_msgs/TactileContact[] contacts\n"
+    "================================================================================\n"
+    "MSG: emit_msgs/TactileContact\n"
+    "# A contact (modelled on tactile_msgs/TactileContact), in SI units.\n"
+    "string name\n"
+    "geometry_msgs/Vector3 position  # m, a point of the sheet\n"
+    "geometry_msgs/Vector3 normal    # the sheet's unit outward normal there\n"
+    "geometry_msgs/Wrench wrench     # N: the press on the sheet, force = -force_N * normal\n"
+    "float64 area                    # m^2\n"
+    "float64 pressure                # Pa, mean over the area\n"
+    "float64 peak_pressure           # Pa\n"
+    "float64 position_std_x          # m, 1 sigma along the chart's first axis (0: not estimated)\n"
+    "float64 position_std_y          # m, along its second\n"
+    "float64 pressure_std            # Pa, 1 sigma\n"
+    "float64 force_std               # N, 1 sigma\n"
+    "================================================================================\n"
+    "MSG: geometry_msgs/Wrench\n"
+    "Vector3 force\n"
+    "Vector3 torque\n"
+    "================================================================================\n"
+    "MSG: geometry_msgs/Vector3\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z\n";
+
+constexpr std::string_view pressure_image_fields =
+    "# The pressure per triangle of the mesh published once on the mesh topic (shape_msgs/Mesh).\n"
+    "std_msgs/Header header\n"
+    "uint64 frame        # the source's frame number\n"
+    "float32[] pressure  # Pa, 0 where nothing presses\n";
+
+constexpr std::string_view mesh_fields =
+    "# Definition of a mesh.\n"
+    "MeshTriangle[] triangles\n"
+    "geometry_msgs/Point[] vertices\n"
+    "================================================================================\n"
+    "MSG: shape_msgs/MeshTriangle\n"
+    "uint32[3] vertex_indices\n"
+    "================================================================================\n"
+    "MSG: geometry_msgs/Point\n"
+    "float64 x\n"
+    "float64 y\n"
+    "float64 z\n";
+
+/// A stamped message's definition: its fields, then the header's types.
+std::string with_header(std::string_view fields) {
+  return std::string(fields) + std::string(separator) + std::string(header_types);
+}
+
+/// CDR (XCDR1, little-endian): each primitive aligned to its size, counted from after the
+/// 4-byte encapsulation header; strings with their length (NUL included) and a NUL; sequences
+/// with their count.
+class CdrWriter {
+ public:
+  explicit CdrWriter(std::vector<std::uint8_t>& out) : out_(out) {
+    out_.clear();
+    out_.assign({0x00, 0x01, 0x00, 0x00});  // the encapsulation: CDR_LE, no options
+  }
+  template <typename T>
+  void put(T value) {
+    static_assert(std::is_arithmetic_v<T>);
+    align(sizeof(T));
+    const std::size_t at = out_.size();
+    out_.resize(at + sizeof(T));
+    std::memcpy(out_.data() + at, &value, sizeof(T));  // little-endian hosts (x86-64, ARM): as is
+  }
+  void string(std::string_view text) {
+    put(static_cast<std::uint32_t>(text.size() + 1));
+    out_.insert(out_.end(), text.begin(), text.end());
+    out_.push_back(0);
+  }
+  void count(std::size_t n) { put(static_cast<std::uint32_t>(n)); }
+  void header(Ros2Stamp stamp, std::string_view frame_id) {
+    put(stamp.sec);
+    put(stamp.nanosec);
+    string(frame_id);
+  }
+  void vector3(double x, double y, double z) {
+    put(x);
+    put(y);
+    put(z);
+  }
+
+ private:
+  void align(std::size_t size) {
+    while ((out_.size() - 4) % size != 0) out_.push_back(0);
+  }
+  std::vector<std::uint8_t>& out_;
+};
+
+static_assert(std::endian::native == std::endian::little, "CDR_LE is written as the host's bytes");
+
+}  // namespace
+
+const Ros2MessageType& tactile_state_message() {
+  static const Ros2MessageType type{"emit_msgs/msg/TactileState", with_header(tactile_state_fields)};
+  return type;
+}
+const Ros2MessageType& tactile_contacts_message() {
+  static const Ros2MessageType type{"emit_msgs/msg/TactileContacts", with_header(tactile_contacts_fields)};
+  return type;
+}
+const Ros2MessageType& pressure_image_message() {
+  static const Ros2MessageType type{"emit_msgs/msg/PressureImage", with_header(pressure_image_fields)};
+  return type;
+}
+const Ros2MessageType& mesh_message() {
+  static const Ros2MessageType type{"shape_msgs/msg/Mesh", std::string(mesh_fields)};
+  return type;
+}
+
+void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                          std::string_view sensor_name, const FrameView& volts) {
+  CdrWriter cdr(out);
+  cdr.header(stamp, frame_id);
+  cdr.count(1);
+  cdr.string(sensor_name);
+  cdr.count(static_cast<std::size_t>(volts.size()));
+  for (Index i = 0; i < volts.size(); ++i) cdr.put(volts.data()[i]);
+}
+
+void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                             std::uint64_t frame, const std::vector<Contact>& contacts) {
+  CdrWriter cdr(out);
+  cdr.header(stamp, frame_id);
+  cdr.put(frame);
+  cdr.count(contacts.size());
+  char name[32];  // "contact_" and up to 20 digits
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    std::snprintf(name, sizeof name, "contact_%zu", i);
+    cdr.string(name);
+    cdr.vector3(1e-3 * c.x_mm, 1e-3 * c.y_mm, 1e-3 * c.z_mm);
+    cdr.vector3(c.nx, c.ny, c.nz);
+    cdr.vector3(-c.force_N * c.nx, -c.force_N * c.ny, -c.force_N * c.nz);  // wrench: force
+    cdr.vector3(0, 0, 0);                                                // and torque
+    cdr.put(1e-6 * c.area_mm2);
+    cdr.put(1e6 * c.pressure_N_per_mm2);
+    cdr.put(1e6 * c.peak_pressure_N_per_mm2);
+    cdr.put(1e-3 * c.x_std_mm);
+    cdr.put(1e-3 * c.y_std_mm);
+    cdr.put(1e6 * c.pressure_std_N_per_mm2);
+    cdr.put(c.force_std_N);
+  }
+}
+
+void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                           std::uint64_t frame, const Vector& pressure_N_per_mm2) {
+  CdrWriter cdr(out);
+  cdr.header(stamp, frame_id);
+  cdr.put(frame);
+  cdr.count(static_cast<std::size_t>(pressure_N_per_mm2.size()));
+  for (Index k = 0; k < pressure_N_per_mm2.size(); ++k) cdr.put(static_cast<float>(1e6 * pressure_N_per_mm2[k]));
+}
+
+void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh) {
+  CdrWriter cdr(out);
+  cdr.count(static_cast<std::size_t>(mesh.triangle_count()));
+  for (Index t = 0; t < mesh.triangle_count(); ++t)
+    for (int corner = 0; corner < 3; ++corner) cdr.put(static_cast<std::uint32_t>(mesh.triangles(t, corner)));
+  cdr.count(static_cast<std::size_t>(mesh.node_count()));
+  for (Index v = 0; v < mesh.node_count(); ++v)
+    cdr.vector3(1e-3 * mesh.nodes_mm(v, 0), 1e-3 * mesh.nodes_mm(v, 1), 1e-3 * mesh.nodes_mm(v, 2));
+}
+
+}  // namespace emit

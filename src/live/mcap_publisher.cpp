@@ -1,0 +1,13 @@
+#include "emit/live/mcap_publisher.hpp"
+
+namespace emit {
+
+McapPublisher::McapPublisher(std::string path, const std::string& sensor_name, const Mesh& mesh)
+    : mcap_(std::move(path), sensor_name, mesh, unix_time_ns()) {}
+
+void McapPublisher::publish(const LiveFrame& frame) {
+  if (frame.capturing_baseline || frame.volts == nullptr) return;
+  mcap_.write(frame.sequence, unix_time_ns(), frame_view(*frame.volts), *frame.contacts, *frame.pressure_N_per_mm2);
+}
+
+}  // namespace emit

@@ -1,0 +1,174 @@
+// emit's MCAP recordings read back by the format's own reader, @mcap/core (CRCs checked), and
+// every ROS 2 message decoded by @foxglove/rosmsg2-serialization from the schema the file carries;
+// compared with what emit wrote beside them (the frames file, the contacts' JSON Lines). Then the
+// same file cut short at many places: the reader must say it is incomplete, never misread it.
+//
+//   node read_back_test.mjs <emit> <work folder>
+import { McapStreamReader } from "@mcap/core";
+import { parse } from "@foxglove/rosmsg";
+import { MessageReader } from "@foxglove/rosmsg2-serialization";
+import { execFileSync, spawnSync } from "node:child_process";
+import { existsSync, mkdirSync, readFileSync, rmSync } from "node:fs";
+import { join } from "node:path";
+import { crc32 } from "node:zlib";
+
+const [emit, work] = process.argv.slice(2);
+rmSync(work, { recursive: true, force: true });
+mkdirSync(work, { recursive: true });
+const at = (name) => join(work, name);
+const run = (...args) => execFileSync(emit, args, { stdio: ["ignore", "pipe", "pipe"] });
+const cache = ["--cache", at("cache")];
+let failures = 0;
+const check = (ok, what) => {
+  if (!ok) {
+    failures++;
+    console.error(`FAIL: ${what}`);
+  }
+};
+const close = (a, b, rel) => Math.abs(a - b) <= rel * Math.max(Math.abs(a), Math.abs(b)) + 1e-12;
+
+/** Every record of an MCAP file's bytes; `complete`: the reader reached the closing magic. */
+function readRecords(bytes) {
+  const reader = new McapStreamReader({ validateCrcs: true });
+  reader.append(bytes);
+  const records = [];
+  let error = null;
+  try {
+    for (let record; (record = reader.nextRecord()); ) records.push(record);
+  } catch (e) {
+    error = e;
+  }
+  return { records, complete: reader.done() && error === null, error };
+}
+
+/** The messages of each topic, decoded from the schemas the file carries. */
+function decode(records) {
+  const schemas = new Map(), channels = new Map(), topics = {};
+  for (const r of records) {
+    if (r.type === "Schema") schemas.set(r.id, r);
+    if (r.type === "Channel") {
+      const schema = schemas.get(r.schemaId);
+      const reader = new MessageReader(parse(new TextDecoder().decode(schema.data), { ros2: true }));
+      channels.set(r.id, { topic: r.topic, reader, schema, channel: r });
+      topics[r.topic] = [];
+    }
+    if (r.type === "Message") {
+      const c = channels.get(r.channelId);
+      topics[c.topic].push({ ...c.reader.readMessage(r.data), logTime: r.logTime, sequence: r.sequence });
+    }
+  }
+  return { schemas, channels, topics };
+}
+
+// A recorded reconstruction: two fingers over six frames, contact fitting.
+run("simulate", "--script", "none", "--frames", "10", "--out", at("ref.csv"));
+run("simulate", "--script", "two-finger", "--frames", "6", "--out", at("two.csv"));
+run("reconstruct", "--method", "fit", "--reference", at("ref.csv"), "--frames", at("two.csv"), "--contacts",
+    at("contacts.jsonl"), "--mcap", at("run.mcap"), ...cache);
+check(!existsSync(at("run.mcap.partial")), "the .partial file is renamed on close");
+const bytes = new Uint8Array(readFileSync(at("run.mcap")));
+const whole = readRecords(bytes);
+check(whole.complete, `the file reads to its end, CRCs valid (${whole.error})`);
+// The data section's CRC-32 (which the stream reader does not check): every byte before the Data
+// End record (13 bytes, before the 29-byte footer and the 8-byte magic), as @mcap/core's writer counts.
+const dataEnd = whole.records.find((r) => r.type === "DataEnd");
+const dataEndAt = bytes.length - 8 - 29 - 13;
+check(bytes[dataEndAt] === 0x0f && dataEnd.dataSectionCrc === crc32(bytes.subarray(0, dataEndAt)),
+      `data section CRC ${dataEnd.dataSectionCrc} against ${crc32(bytes.subarray(0, dataEndAt))}`);
+const header = whole.records.find((r) => r.type === "Header");
+check(header && header.profile === "ros2" && header.library.startsWith("emit "), "profile ros2, library emit");
+const { channels, topics } = decode(whole.records);
+const names = [...channels.values()].map((c) => `${c.topic} ${c.schema.name} ${c.schema.encoding} ${c.channel.messageEncoding}`);
+check(JSON.stringify(names.sort()) === JSON.stringify([
+  "/emit/contacts emit_msgs/msg/TactileContacts ros2msg cdr", "/emit/frames emit_msgs/msg/TactileState ros2msg cdr",
+  "/emit/mesh shape_msgs/msg/Mesh ros2msg cdr", "/emit/pressure emit_msgs/msg/PressureImage ros2msg cdr"]),
+  `topics and types: ${names}`);
+
+// The mesh: the 60 x 60 mm sheet's triangles cover 3.6e-3 m^2.
+const [mesh] = topics["/emit/mesh"];
+let area = 0;
+for (const t of mesh.triangles) {
+  const [a, b, c] = [...t.vertex_indices].map((i) => mesh.vertices[i]);
+  area += Math.abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)) / 2;
+}
+check(topics["/emit/mesh"].length === 1 && close(area, 3.6e-3, 1e-9), `mesh area ${area} m^2 (3.6e-3)`);
+
+// Frames: the frames file's numbers exactly (the same text parsed to the same doubles).
+const rows = readFileSync(at("two.csv"), "utf8").trim().split("\n").map((l) => l.split(",").map(Number));
+const states = topics["/emit/frames"];
+check(states.length === rows.length, `${states.length} frames of ${rows.length}`);
+states.forEach((s, f) => {
+  const values = [...s.sensors[0].values];
+  check(s.sensors.length === 1 && s.sensors[0].name === "default 60 mm", `frame ${f}: the sensor's name`);
+  check(values.length === 256 && values.every((v, i) => v === rows[f][i]), `frame ${f}: values as in two.csv`);
+  check(s.header.frame_id === "emit_sheet", `frame ${f}: frame_id`);
+  if (f > 0) {
+    const dt = (s.header.stamp.sec - states[f - 1].header.stamp.sec) * 1e9 + s.header.stamp.nanosec - states[f - 1].header.stamp.nanosec;
+    check(dt === 20e6 && s.logTime - states[f - 1].logTime === 20000000n, `frame ${f}: 20 ms after the last (${dt} ns)`);
+  }
+});
+
+// Contacts: as the JSON Lines say (6 significant digits there), in SI units.
+const lines = readFileSync(at("contacts.jsonl"), "utf8").trim().split("\n").map((l) => JSON.parse(l));
+const contacts = topics["/emit/contacts"];
+check(contacts.length === lines.length, `${contacts.length} contact messages for ${lines.length} lines`);
+let compared = 0;
+contacts.forEach((m, f) => {
+  check(Number(m.frame) === lines[f].frame, `contacts ${f}: frame number`);
+  check(m.contacts.length === lines[f].contacts.length, `contacts ${f}: count`);
+  m.contacts.forEach((c, i) => {
+    const j = lines[f].contacts[i];
+    const pairs = [[c.position.x, 1e-3 * j.x_mm], [c.position.y, 1e-3 * j.y_mm], [c.area, 1e-6 * j.area_mm2],
+      [c.pressure, 1e6 * j.pressure_N_per_mm2], [c.peak_pressure, 1e6 * j.peak_pressure_N_per_mm2],
+      [-c.wrench.force.z, j.force_N], [c.position_std_x, 1e-3 * (j.x_std_mm ?? 0)]];
+    pairs.forEach(([a, b], k) => check(close(a, b, 1e-5), `contacts ${f}.${i} field ${k}: ${a} against ${b}`));
+    check(c.normal.z === 1 && c.position.z === 0 && c.name === `contact_${i}`, `contacts ${f}.${i}: flat sheet, name`);
+    compared++;
+  });
+});
+check(compared >= 2 * lines.length - 1, `two contacts a frame (${compared} in ${lines.length} frames)`);
+
+// Pressure images: one float per triangle; their largest is the strongest contact's peak.
+topics["/emit/pressure"].forEach((p, f) => {
+  check(p.pressure.length === mesh.triangles.length, `pressure ${f}: one value per triangle`);
+  const peak = Math.max(...p.pressure), expected = Math.max(...contacts[f].contacts.map((c) => c.peak_pressure));
+  check(close(peak, expected, 1e-6), `pressure ${f}: peak ${peak} Pa against the contacts' ${expected}`);
+});
+
+// Cut short anywhere, the file is reported incomplete, and what was read is what was written.
+const full = whole.records.filter((r) => r.type === "Message");
+let cuts = 0;
+for (let cut = 8; cut < bytes.length; cut += Math.max(1, Math.floor(bytes.length / 97))) {
+  const part = readRecords(bytes.subarray(0, cut));
+  check(!part.complete, `cut at ${cut} of ${bytes.length}: reported incomplete`);
+  const messages = part.records.filter((r) => r.type === "Message");
+  check(messages.every((m, i) => Buffer.compare(Buffer.from(m.data), Buffer.from(full[i].data)) === 0),
+        `cut at ${cut}: the messages read are the file's`);
+  cuts++;
+}
+check(!readRecords(bytes.subarray(0, bytes.length - 1)).complete, "one byte short: incomplete");
+
+// A folder that does not exist: one line, exit non-zero, nothing written.
+const missing = spawnSync(emit, ["reconstruct", "--method", "paper", "--reference", at("ref.csv"), "--frames",
+  at("two.csv"), "--contacts", at("c2.jsonl"), "--mcap", at("no/such/run.mcap"), ...cache], { encoding: "utf8" });
+check(missing.status !== 0 && /no\/such.*does not exist/.test(missing.stderr) && missing.stderr.trim().split("\n").length === 1,
+      `missing folder: ${missing.stderr}`);
+check(!existsSync(at("no")) && !existsSync(at("c2.jsonl")), "nothing written for a missing folder");
+
+// Live: 20 reconstructed frames of the twin's held press, their source's numbers, the press found.
+run("live", "--source", "sim:fixed:30,30,10", "--fps", "0", "--frames", "20", "--method", "paper", "--mcap", at("live.mcap"), ...cache);
+const live = readRecords(new Uint8Array(readFileSync(at("live.mcap"))));
+check(live.complete, "the live recording reads to its end");
+const liveTopics = decode(live.records).topics;
+const liveContacts = liveTopics["/emit/contacts"];
+check(liveContacts.length === 20 && liveTopics["/emit/frames"].length === 20 && liveTopics["/emit/pressure"].length === 20,
+      `20 live frames on each topic (${liveContacts.length})`);
+check(liveContacts.every((m, i) => Number(m.frame) === 10 + i), "live frames numbered 10..29 (after the baseline's 10)");
+// The twin's first 15 frames are untouched; the press is found within the README's p95, 8.05 mm.
+const pressed = liveContacts.filter((m) => Number(m.frame) >= 15);
+check(pressed.length === 15 && pressed.every((m) => m.contacts.length >= 1 &&
+      Math.hypot(m.contacts[0].position.x - 0.03, m.contacts[0].position.y - 0.03) < 8.05e-3), "live press found at (30, 30) mm");
+
+console.log(`mcap: ${whole.records.length} records, ${full.length} messages read back and compared; ${cuts} cuts ` +
+            `reported incomplete; live ${liveContacts.length} frames; ${failures} failures`);
+process.exit(failures === 0 ? 0 : 1);
