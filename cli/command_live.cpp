@@ -65,7 +65,8 @@ void run_live(const LiveJob& job) {
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
                1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
                static_cast<unsigned long long>(stats.frames_missed));
-  if (!job.mcap_path.empty()) std::fprintf(say, "recorded the reconstructed frames to %s (MCAP)\n", job.mcap_path.c_str());
+  if (!job.mcap_path.empty())
+    std::fprintf(say, "recorded the reconstructed frames to %s (MCAP)\n", job.mcap_path.c_str());
   if (!job.record_path.empty())
     std::fprintf(say, "recorded %llu frames to %s (replay: emit live --source file:%s)\n",
                  static_cast<unsigned long long>(session.recorded_frames()), job.record_path.c_str(),

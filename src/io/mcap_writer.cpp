@@ -14,8 +14,14 @@ namespace emit {
 namespace {
 
 constexpr std::uint8_t magic[8] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
-enum Opcode : std::uint8_t { header_op = 0x01, footer_op = 0x02, schema_op = 0x03, channel_op = 0x04,
-                             message_op = 0x05, data_end_op = 0x0F };
+enum Opcode : std::uint8_t {
+  header_op = 0x01,
+  footer_op = 0x02,
+  schema_op = 0x03,
+  channel_op = 0x04,
+  message_op = 0x05,
+  data_end_op = 0x0F
+};
 
 /// Little-endian fields and length-prefixed strings, as the format's records hold them.
 class Fields {
@@ -41,7 +47,9 @@ class Fields {
 }  // namespace
 
 McapWriter::McapWriter(std::string path, std::string_view profile)
-    : path_(std::move(path)), partial_path_(path_ + ".partial"), crc_(static_cast<std::uint32_t>(crc32(0, nullptr, 0))) {
+    : path_(std::move(path)),
+      partial_path_(path_ + ".partial"),
+      crc_(static_cast<std::uint32_t>(crc32(0, nullptr, 0))) {
   const std::filesystem::path folder = std::filesystem::path(path_).parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder))
     throw IoError(path_ + ": cannot write: folder " + folder.string() + " does not exist");

@@ -1,7 +1,7 @@
 #include "emit/io/ros2_messages.hpp"
 
-#include <cstdio>
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <type_traits>
 
@@ -173,7 +173,7 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
     cdr.vector3(1e-3 * c.x_mm, 1e-3 * c.y_mm, 1e-3 * c.z_mm);
     cdr.vector3(c.nx, c.ny, c.nz);
     cdr.vector3(-c.force_N * c.nx, -c.force_N * c.ny, -c.force_N * c.nz);  // wrench: force
-    cdr.vector3(0, 0, 0);                                                // and torque
+    cdr.vector3(0, 0, 0);                                                  // and torque
     cdr.put(1e-6 * c.area_mm2);
     cdr.put(1e6 * c.pressure_N_per_mm2);
     cdr.put(1e6 * c.peak_pressure_N_per_mm2);

@@ -6,11 +6,11 @@
 #include <optional>
 
 #include "emit/acquire/recorder.hpp"
-#include "emit/live/mcap_publisher.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/live/live_server.hpp"
+#include "emit/live/mcap_publisher.hpp"
 #include "emit/live/open_source.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -42,7 +42,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
   check_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
-                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path}, {"--record", job.record_path},
+                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path},
+                 {"--record", job.record_path},
                  {"--mcap", job.mcap_path}});
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +

@@ -1,0 +1,89 @@
+// ROS 2 messages in CDR (io/ros2_messages.hpp): the bytes of a message laid out by hand from the
+// format's rules (XCDR1: 4-byte encapsulation, each primitive aligned to its size after it,
+// strings with their length and NUL, sequences with their count), and encoding that allocates
+// nothing once the buffer has grown. @foxglove/rosmsg2-serialization decodes whole files in
+// tests/mcap/read_back_test.mjs.
+#include "emit/io/ros2_messages.hpp"
+
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "allocation_counter.hpp"
+#include "test_support.hpp"
+
+namespace emit {
+namespace {
+
+template <typename T>
+T read_at(const std::vector<std::uint8_t>& bytes, std::size_t offset) {
+  T value;
+  std::memcpy(&value, bytes.data() + offset, sizeof(T));
+  return value;
+}
+
+TEST(Ros2Messages, APressureImageIsLaidOutAsCdr) {
+  std::vector<std::uint8_t> out;
+  Vector pressure(2);
+  pressure << 1e-6, 0.25;  // N/mm², written in Pa as float32: 1 and 250000
+  encode_pressure_image(out, Ros2Stamp::from_ns(3'000'000'005), "f", 7, pressure);
+  // Offsets after the 4-byte encapsulation: sec 0, nanosec 4, frame_id's length 8 and "f\0" at
+  // 12, padding to 16 for the uint64 frame, its count at 24, the floats at 28 and 32.
+  ASSERT_EQ(out.size(), 4u + 36u);
+  EXPECT_EQ(out[0], 0x00);
+  EXPECT_EQ(out[1], 0x01);  // CDR_LE
+  EXPECT_EQ(read_at<std::int32_t>(out, 4 + 0), 3);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 4), 5u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 8), 2u);
+  EXPECT_EQ(out[4 + 12], 'f');
+  EXPECT_EQ(out[4 + 13], 0);
+  EXPECT_EQ(read_at<std::uint64_t>(out, 4 + 16), 7u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 24), 2u);
+  EXPECT_EQ(read_at<float>(out, 4 + 28), 1.0f);
+  EXPECT_EQ(read_at<float>(out, 4 + 32), 250000.0f);
+}
+
+TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
+  Contact c;
+  c.x_mm = 12, c.y_mm = 34, c.force_N = 2.5, c.area_mm2 = 20, c.pressure_N_per_mm2 = 0.125;
+  std::vector<std::uint8_t> out;
+  encode_tactile_contacts(out, {}, "", 9, {c});
+  // header (sec, nanosec, "" = length 1 and NUL) ends at 9; frame at 16; count at 24; the name
+  // "contact_0" (length 10) at 28..41; the position's doubles from 48.
+  EXPECT_EQ(read_at<std::uint64_t>(out, 4 + 16), 9u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 24), 1u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 28), 10u);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(out.data() + 4 + 32)), "contact_0");
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 48), 0.012);     // x [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 56), 0.034);     // y [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 88), 1.0);       // normal z
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 112), -2.5);     // wrench force z [N]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 144), 20e-6);    // area [m²]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 152), 0.125e6);  // pressure [Pa]
+  // Every definition names the types it uses once each, as ROS 2 bags carry them.
+  for (const Ros2MessageType* type :
+       {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(), &mesh_message()}) {
+    EXPECT_NE(type->name.find("/msg/"), std::string::npos);
+    if (type != &mesh_message()) {
+      EXPECT_NE(type->definition.find("MSG: std_msgs/Header"), std::string::npos) << type->name;
+      EXPECT_NE(type->definition.find("MSG: builtin_interfaces/Time"), std::string::npos) << type->name;
+    }
+  }
+}
+
+TEST(Ros2Messages, EncodingAFrameAllocatesNothingOnceWarm) {
+  Frame volts = Frame::Constant(16, 16, 0.5);
+  std::vector<Contact> contacts(3);
+  const Vector pressure = Vector::Constant(5000, 0.01);
+  std::vector<std::uint8_t> out;
+  encode_tactile_state(out, {}, "emit_sheet", "default 60 mm", frame_view(volts));
+  encode_pressure_image(out, {}, "emit_sheet", 1, pressure);  // the largest: the buffer grows to it
+  const test::AllocationCounter counter;
+  encode_tactile_state(out, {}, "emit_sheet", "default 60 mm", frame_view(volts));
+  encode_tactile_contacts(out, {}, "emit_sheet", 1, contacts);
+  encode_pressure_image(out, {}, "emit_sheet", 1, pressure);
+  EXPECT_EQ(counter.count(), 0);
+}
+
+}  // namespace
+}  // namespace emit
