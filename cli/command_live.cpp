@@ -48,6 +48,9 @@ void run_live(const LiveJob& job) {
   LiveSession session(job, stderr_progress());
   std::fprintf(say, "source: %s\n", session.source_description().c_str());
   if (!job.serve.empty()) std::fprintf(say, "viewer: %s\n", session.viewer_url().c_str());
+  if (!job.dds_prefix.empty())
+    std::fprintf(say, "dds: publishing rt/%s/{contacts,frames,pressure,mesh} in domain %d\n",
+                 job.dds_prefix.c_str() + (job.dds_prefix[0] == '/' ? 1 : 0), job.dds_domain);
   const std::string stopping = job.frames         ? "stopping after " + std::to_string(job.frames) + " frames"
                                : job.seconds != 0 ? "stopping after " + std::to_string(static_cast<int>(job.seconds)) +
                                                         " s (Ctrl-C stops sooner)"
@@ -91,6 +94,10 @@ void add_live_command(CLI::App& app) {
   cmd->add_option("--record", job.record_path, "Record every frame the source gives to this file (replay with file:)");
   cmd->add_option("--mcap", job.mcap_path,
                   "Record each reconstructed frame, its contacts and pressure image as ROS 2 messages in an MCAP file");
+  cmd->add_option("--dds", job.dds_prefix,
+                  "Publish on DDS as ROS 2 does: topics rt/PREFIX/contacts, /frames, /pressure, /mesh (a ROS 2 node "
+                  "with the Cyclone DDS RMW subscribes to /PREFIX/contacts)");
+  cmd->add_option("--dds-domain", job.dds_domain, "The DDS domain (ROS_DOMAIN_ID), 0 to 232")->capture_default_str();
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--contacts", job.contacts_path, "Contacts out as JSON Lines: a file, or - for stdout");
   cmd->add_option("--method", a->method,

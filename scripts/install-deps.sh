@@ -22,6 +22,7 @@ packages=(
   gcovr                                 # line coverage (scripts/coverage.sh)
   libboost-dev                          # the serial port and the live viewer's server (Boost.Asio, Beast)
   chromium                              # the live viewer's browser test (headless)
+  cyclonedds-dev cyclonedds-tools       # DDS as ROS 2 speaks it (`emit live --dds`), idlc for its types
   pybind11-dev python3-dev python3-numpy  # the Python module (python/), against Debian's python3
   python3-pytest python3-matplotlib     # its tests, and examples/python/quickstart.py's picture
 )

@@ -10,6 +10,7 @@
 #include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/live/live_server.hpp"
+#include "emit/live/dds_publisher.hpp"
 #include "emit/live/mcap_publisher.hpp"
 #include "emit/live/open_source.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -35,6 +36,7 @@ struct LiveSession::Impl {
   std::optional<LiveServer> server;
   std::optional<Recorder> recorder;
   std::optional<McapPublisher> mcap;
+  std::optional<DdsPublisher> dds;
   std::ofstream contacts_file;
 };
 
@@ -45,6 +47,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
                 {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path},
                  {"--record", job.record_path},
                  {"--mcap", job.mcap_path}});
+  if (!job.dds_prefix.empty()) check_dds_options({job.dds_prefix, job.dds_domain});
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
@@ -80,6 +83,9 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   if (!job.record_path.empty()) s.loop->record_to(&s.recorder.emplace(job.record_path, s.sensor));
   if (!job.mcap_path.empty())
     s.loop->add_publisher(&s.mcap.emplace(job.mcap_path, s.sensor.name, s.pipeline->model().mesh));
+  if (!job.dds_prefix.empty())
+    s.loop->add_publisher(
+        &s.dds.emplace(DdsOptions{job.dds_prefix, job.dds_domain}, s.sensor.name, s.pipeline->model().mesh));
 }
 
 LiveSession::~LiveSession() = default;
