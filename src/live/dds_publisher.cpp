@@ -66,9 +66,12 @@ struct DdsPublisher::Impl {
   std::vector<std::array<char, 32>> contact_names;
   std::vector<float> pressure_Pa;
 
+  Impl() = default;
   ~Impl() {
     if (participant > 0) dds_delete(participant);  // and everything it made
   }
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
 
   dds_entity_t writer(const std::string& topic, const dds_topic_descriptor_t* type, int depth) const {
     const dds_entity_t t = checked(dds_create_topic(participant, type, topic.c_str(), nullptr, nullptr), topic);
@@ -101,7 +104,8 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
   std::vector<shape_msgs_msg_dds__MeshTriangle_> triangles(static_cast<std::size_t>(mesh.triangle_count()));
   for (Index t = 0; t < mesh.triangle_count(); ++t)
     for (int corner = 0; corner < 3; ++corner)
-      triangles[static_cast<std::size_t>(t)].vertex_indices[corner] = static_cast<std::uint32_t>(mesh.triangles(t, corner));
+      triangles[static_cast<std::size_t>(t)].vertex_indices[corner] =
+          static_cast<std::uint32_t>(mesh.triangles(t, corner));
   std::vector<geometry_msgs_msg_dds__Point_> vertices(static_cast<std::size_t>(mesh.node_count()));
   for (Index v = 0; v < mesh.node_count(); ++v)
     vertices[static_cast<std::size_t>(v)] = {1e-3 * mesh.nodes_mm(v, 0), 1e-3 * mesh.nodes_mm(v, 1),
@@ -153,20 +157,23 @@ void DdsPublisher::publish(const LiveFrame& frame) {
   emit_msgs_msg_dds__TactileContacts_ contacts_message{};
   contacts_message.header = header;
   contacts_message.frame = frame.sequence;
-  contacts_message.contacts = borrowed<dds_sequence_emit_msgs_msg_dds__TactileContact_>(
-      contacts.empty() ? nullptr : s.contact_messages.data(), contacts.size());
+  contacts_message.contacts =
+      borrowed<dds_sequence_emit_msgs_msg_dds__TactileContact_>(contacts.empty() ? nullptr : s.contact_messages.data(),
+                                                                contacts.size());
 
   const Vector& pressure = *frame.pressure_N_per_mm2;
   const std::size_t triangles = std::min(static_cast<std::size_t>(pressure.size()), s.pressure_Pa.size());
-  for (std::size_t k = 0; k < triangles; ++k) s.pressure_Pa[k] = static_cast<float>(1e6 * pressure[static_cast<Index>(k)]);
+  for (std::size_t k = 0; k < triangles; ++k)
+    s.pressure_Pa[k] = static_cast<float>(1e6 * pressure[static_cast<Index>(k)]);
   emit_msgs_msg_dds__PressureImage_ image{};
   image.header = header;
   image.frame = frame.sequence;
   image.pressure = borrowed<dds_sequence_float>(s.pressure_Pa.data(), triangles);
 
-  for (const auto& [writer, sample, topic] : {std::tuple{s.frames, static_cast<const void*>(&state), "frames"},
-                                              std::tuple{s.contacts, static_cast<const void*>(&contacts_message), "contacts"},
-                                              std::tuple{s.pressure, static_cast<const void*>(&image), "pressure"}})
+  for (const auto& [writer, sample, topic] :
+       {std::tuple{s.frames, static_cast<const void*>(&state), "frames"},
+        std::tuple{s.contacts, static_cast<const void*>(&contacts_message), "contacts"},
+        std::tuple{s.pressure, static_cast<const void*>(&image), "pressure"}})
     if (const dds_return_t r = dds_write(writer, sample); r < 0)
       throw IoError(std::string("dds: publishing ") + topic + ": " + dds_strretcode(r));
   ++frames_;

@@ -844,7 +844,13 @@ INSTANTIATE_TEST_SUITE_P(
                "--out DIR/no/c.json: cannot write: folder DIR/no does not exist"},
         BadRun{"unknown live source", "live --source zigzag --frames 1", "source \"zigzag\": unknown"},
         BadRun{"live serve address without a port", "live --serve 127.0.0.1 --frames 1 --cache DIR/cache",
-               "is not HOST:PORT"}),
+               "is not HOST:PORT"},
+        BadRun{"dds domain out of range", "live --dds emit --dds-domain 233 --frames 1 --cache DIR/cache",
+               "--dds-domain 233: a DDS domain is a whole number from 0 to 232"},
+        BadRun{"dds prefix not a ROS name", "live --dds a//b --frames 1 --cache DIR/cache",
+               "--dds \"a//b\": a topic prefix is a ROS name"},
+        BadRun{"mcap in a missing folder", "live --mcap DIR/no/live.mcap --frames 1 --cache DIR/cache",
+               "does not exist"}),
     [](const auto& info) {
       std::string name = info.param.what;
       for (char& c : name)

@@ -62,18 +62,22 @@ int main(int argc, char** argv) {
 
   const dds_entity_t participant = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
   if (participant < 0) return fail(std::string("joining the domain: ") + dds_strretcode(participant));
-  const dds_entity_t contacts = reader(participant, "rt/" + prefix + "/contacts", &emit_msgs_msg_dds__TactileContacts__desc);
+  const dds_entity_t contacts =
+      reader(participant, "rt/" + prefix + "/contacts", &emit_msgs_msg_dds__TactileContacts__desc);
   const dds_entity_t mesh = reader(participant, "rt/" + prefix + "/mesh", &shape_msgs_msg_dds__Mesh__desc);
   if (contacts < 0 || mesh < 0) return fail("creating the readers");
 
-  std::vector<std::string> args = {emit, "live", "--dds", prefix, "--dds-domain", std::to_string(domain),
-                                   "--frames", std::to_string(frames)};
+  std::vector<std::string> args = {emit,           "live",
+                                   "--dds",        prefix,
+                                   "--dds-domain", std::to_string(domain),
+                                   "--frames",     std::to_string(frames)};
   for (int i = 7; i < argc; ++i) args.emplace_back(argv[i]);
   std::vector<char*> child_argv;
   for (std::string& a : args) child_argv.push_back(a.data());
   child_argv.push_back(nullptr);
   pid_t child = 0;
-  if (posix_spawn(&child, emit.c_str(), nullptr, nullptr, child_argv.data(), environ) != 0) return fail("starting emit");
+  if (posix_spawn(&child, emit.c_str(), nullptr, nullptr, child_argv.data(), environ) != 0)
+    return fail("starting emit");
 
   // Take the contacts as they come, until all frames are in or the publisher has ended and
   // nothing more arrives.
@@ -108,7 +112,7 @@ int main(int argc, char** argv) {
       if (m->frame >= 15) {
         ++touched;
         const bool found = m->contacts._length >= 1 && std::hypot(m->contacts._buffer[0].position.x - x_m,
-                                                                   m->contacts._buffer[0].position.y - y_m) < 8.05e-3;
+                                                                  m->contacts._buffer[0].position.y - y_m) < 8.05e-3;
         if (!found && problem.empty()) problem = "the press not found on frame " + std::to_string(m->frame);
       }
     }
@@ -142,13 +146,16 @@ int main(int argc, char** argv) {
 
   std::vector<double> sorted = latency_ms;
   std::sort(sorted.begin(), sorted.end());
-  const auto at = [&](double q) { return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))]; };
+  const auto at = [&](double q) {
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))];
+  };
   long out_of_order = 0;
   for (std::size_t i = 1; i < numbers.size(); ++i) out_of_order += numbers[i] != numbers[i - 1] + 1;
-  std::printf("dds_check: %zu of %ld frames' contacts received, %ld out of order or missing between, first %llu; "
-              "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2\n",
-              numbers.size(), frames, out_of_order, numbers.empty() ? 0ULL : static_cast<unsigned long long>(numbers[0]),
-              at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2);
+  std::printf(
+      "dds_check: %zu of %ld frames' contacts received, %ld out of order or missing between, first %llu; "
+      "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2\n",
+      numbers.size(), frames, out_of_order, numbers.empty() ? 0ULL : static_cast<unsigned long long>(numbers[0]),
+      at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return fail("emit live exited with " + std::to_string(status));
   if (static_cast<long>(numbers.size()) != frames) return fail("frames lost");
   if (out_of_order != 0) return fail("frames out of order");

@@ -23,12 +23,12 @@
 namespace emit {
 
 struct LiveJob {
-  std::string source = "sim";    ///< live/open_source.hpp
-  std::string serve;             ///< HOST:PORT for the viewer; empty: none
-  std::string contacts_path;     ///< JSON Lines; "-": standard output; empty: none
-  std::string record_path;       ///< empty: no recording
-  std::string mcap_path;         ///< empty: no MCAP recording (live/mcap_publisher.hpp)
-  std::string dds_prefix;        ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
+  std::string source = "sim";  ///< live/open_source.hpp
+  std::string serve;           ///< HOST:PORT for the viewer; empty: none
+  std::string contacts_path;   ///< JSON Lines; "-": standard output; empty: none
+  std::string record_path;     ///< empty: no recording
+  std::string mcap_path;       ///< empty: no MCAP recording (live/mcap_publisher.hpp)
+  std::string dds_prefix;      ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
   int dds_domain = 0;
   std::string sensor_path;       ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated
