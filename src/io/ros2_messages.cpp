@@ -115,10 +115,10 @@ class CdrWriter {
     put(stamp.nanosec);
     string(frame_id);
   }
-  void vector3(double x, double y, double z) {
-    put(x);
-    put(y);
-    put(z);
+  void vector3(const Vector3& v) {
+    put(v.x());
+    put(v.y());
+    put(v.z());
   }
 
  private:
@@ -149,6 +149,20 @@ const Ros2MessageType& mesh_message() {
   return type;
 }
 
+Ros2Contact ros2_contact(const Contact& c) {
+  const Vector3 normal(c.nx, c.ny, c.nz);
+  return {1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
+          normal,
+          -c.force_N * normal,
+          1e-6 * c.area_mm2,
+          1e6 * c.pressure_N_per_mm2,
+          1e6 * c.peak_pressure_N_per_mm2,
+          1e-3 * c.x_std_mm,
+          1e-3 * c.y_std_mm,
+          1e6 * c.pressure_std_N_per_mm2,
+          c.force_std_N};
+}
+
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
                           std::string_view sensor_name, const FrameView& volts) {
   CdrWriter cdr(out);
@@ -167,20 +181,16 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
   cdr.count(contacts.size());
   char name[32];  // "contact_" and up to 20 digits
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const Contact& c = contacts[i];
+    const Ros2Contact c = ros2_contact(contacts[i]);
     std::snprintf(name, sizeof name, "contact_%zu", i);
     cdr.string(name);
-    cdr.vector3(1e-3 * c.x_mm, 1e-3 * c.y_mm, 1e-3 * c.z_mm);
-    cdr.vector3(c.nx, c.ny, c.nz);
-    cdr.vector3(-c.force_N * c.nx, -c.force_N * c.ny, -c.force_N * c.nz);  // wrench: force
-    cdr.vector3(0, 0, 0);                                                  // and torque
-    cdr.put(1e-6 * c.area_mm2);
-    cdr.put(1e6 * c.pressure_N_per_mm2);
-    cdr.put(1e6 * c.peak_pressure_N_per_mm2);
-    cdr.put(1e-3 * c.x_std_mm);
-    cdr.put(1e-3 * c.y_std_mm);
-    cdr.put(1e6 * c.pressure_std_N_per_mm2);
-    cdr.put(c.force_std_N);
+    cdr.vector3(c.position_m);
+    cdr.vector3(c.normal);
+    cdr.vector3(c.force_N);        // the wrench's force
+    cdr.vector3(Vector3::Zero());  // and torque
+    for (const double v : {c.area_m2, c.pressure_Pa, c.peak_pressure_Pa, c.position_std_x_m, c.position_std_y_m,
+                           c.pressure_std_Pa, c.force_std_N})
+      cdr.put(v);
   }
 }
 
@@ -199,8 +209,7 @@ void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh) {
   for (Index t = 0; t < mesh.triangle_count(); ++t)
     for (int corner = 0; corner < 3; ++corner) cdr.put(static_cast<std::uint32_t>(mesh.triangles(t, corner)));
   cdr.count(static_cast<std::size_t>(mesh.node_count()));
-  for (Index v = 0; v < mesh.node_count(); ++v)
-    cdr.vector3(1e-3 * mesh.nodes_mm(v, 0), 1e-3 * mesh.nodes_mm(v, 1), 1e-3 * mesh.nodes_mm(v, 2));
+  for (Index v = 0; v < mesh.node_count(); ++v) cdr.vector3(1e-3 * mesh.nodes_mm.row(v).transpose());
 }
 
 }  // namespace emit

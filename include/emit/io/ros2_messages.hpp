@@ -49,6 +49,14 @@ const Ros2MessageType& tactile_contacts_message();
 const Ros2MessageType& pressure_image_message();
 const Ros2MessageType& mesh_message();
 
+/// A contact's fields as the messages carry them (emit_msgs/TactileContact), in SI units: the
+/// one conversion of emit's contacts, for the CDR here and for DDS (live/dds_publisher.hpp).
+struct Ros2Contact {
+  Vector3 position_m, normal, force_N;  ///< force: the press on the sheet, −force_N · normal
+  double area_m2, pressure_Pa, peak_pressure_Pa, position_std_x_m, position_std_y_m, pressure_std_Pa, force_std_N;
+};
+Ros2Contact ros2_contact(const Contact& contact);
+
 /// Each fills `out` (cleared first) with the CDR bytes of one message.
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
                           std::string_view sensor_name, const FrameView& volts);
