@@ -1,8 +1,10 @@
 """emit.LiveStream: live sources as Python iterators of (frame, contacts)."""
 
+import os
 import subprocess
 import threading
 import time
+import tty
 
 import numpy as np
 import pytest
@@ -41,6 +43,29 @@ def test_a_recording_ends_the_iteration(cli, sensor, out):
     assert len(frames) == 20
     assert all(contacts == [] for _, contacts in frames[:5])
     assert all(contacts and distance_mm(contacts[0], 30, 30) < 8.05 for _, contacts in frames[5:])
+
+
+def test_a_board_on_a_serial_port(cli, sensor, out):
+    # A real serial port's other end: a pseudo-terminal, into which the test writes the packets a
+    # board sent (a recording's bytes after its 32-byte header: docs/recording.md), as a board would.
+    subprocess.run([cli, "live", "--source", "sim:fixed:20,40,10", "--fps", "0", "--frames", "15",
+                    "--record", out / "board.emitrec", "--method", "paper", "--cache", out / "cache"],
+                   check=True, capture_output=True)
+    packets = (out / "board.emitrec").read_bytes()[32:]
+    board, port = os.openpty()
+    tty.setraw(board)
+    writer = threading.Thread(target=lambda: os.write(board, packets))
+    writer.start()
+    stream = emit.LiveStream(f"serial:{os.ttyname(port)}", sensor, method="paper", max_frames=15)
+    frames = list(stream)
+    writer.join()
+    os.close(board)
+    os.close(port)
+    # The 25 frames the board sent: 10 for the baseline, 5 untouched, 10 pressed at (20, 40).
+    assert len(frames) == 15
+    assert all(contacts == [] for _, contacts in frames[:5])
+    assert all(contacts and distance_mm(contacts[0], 20, 40) < 8.05 for _, contacts in frames[5:])
+    assert [stream.sequence, stream.frames_missed] == [24, 0]
 
 
 def test_waiting_for_frames_releases_the_gil(sensor):
