@@ -48,8 +48,6 @@ const CLI::Validator& non_negative_integer();
 /// does not exist ("unknown command \"reconstuct\" (did you mean \"reconstruct\"?)").
 std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, char** argv);
 
-/// --method's choices: every method's name (model/method.hpp).
-std::vector<std::string> method_names();
 /// The operator cache: none with --no-cache, else --cache or the default folder.
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache);
 

@@ -123,11 +123,6 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& erro
   return error.what();
 }
 
-std::vector<std::string> method_names() {
-  return {method_name(Method::fit), method_name(Method::paper), method_name(Method::noser),
-          method_name(Method::laplacian)};
-}
-
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache) {
   return no_cache ? "" : (cache_dir.empty() ? default_cache_dir() : cache_dir);
 }

@@ -153,15 +153,7 @@ same keys as a dict) or Sensor.default() (the paper's 60 x 60 mm sheet, 16 elect
       py::arg("path"), py::arg("sensor"),
       "A frames file (CSV, README \"Files\") as a (frames, N, N) float64 array.\n"
       "Raises InvalidInput naming the line and value that is wrong, IoError if unreadable.");
-  m.def(
-      "methods",
-      [] {
-        std::vector<std::string> names;
-        for (Method method : {Method::fit, Method::paper, Method::noser, Method::laplacian})
-          names.emplace_back(method_name(method));
-        return names;
-      },
-      "The reconstruction methods' names.");
+  m.def("methods", &method_names, "The reconstruction methods' names.");
 }
 
 }  // namespace emit::python

@@ -14,10 +14,19 @@ const char* method_name(Method method) {
   return "?";
 }
 
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (const Method method : all_methods) names.emplace_back(method_name(method));
+  return names;
+}
+
 Method parse_method(const std::string& name) {
-  for (Method method : {Method::fit, Method::paper, Method::noser, Method::laplacian})
+  std::string choices;
+  for (const Method method : all_methods) {
     if (name == method_name(method)) return method;
-  throw InvalidInput("unknown method \"" + name + "\" (fit, paper, noser, laplacian)");
+    choices += (choices.empty() ? "" : ", ") + std::string(method_name(method));
+  }
+  throw InvalidInput("unknown method \"" + name + "\" (" + choices + ")");
 }
 
 OperatorOptions operator_options(Method method) {

@@ -3,6 +3,7 @@
 /// The reconstruction methods, by name in one place: the CLI's --method, the calibration each
 /// needs, and the linear operator each applies (README, "Reconstruction methods").
 #include <string>
+#include <vector>
 
 #include "emit/model/reconstruction_operator.hpp"
 
@@ -18,8 +19,14 @@ enum class Method {
 /// The linear methods apply an operator to each frame (eq. 7); contact fitting fits a model.
 constexpr bool is_linear(Method method) { return method != Method::fit; }
 
+/// Every method, in the order the CLI and the docs list them.
+inline constexpr Method all_methods[] = {Method::fit, Method::paper, Method::noser, Method::laplacian};
+
 /// "fit", "paper", "noser", "laplacian".
 const char* method_name(Method method);
+
+/// Every method's name, in all_methods' order (the CLI's --method choices, Python's emit.methods()).
+std::vector<std::string> method_names();
 
 /// The method named `name`. \throw InvalidInput naming it and the methods there are.
 Method parse_method(const std::string& name);
