@@ -2,6 +2,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/mesh_io.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
@@ -31,6 +32,8 @@ void check_calibration_for_method(const Calibration& calibration, Method method,
 Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration,
                    const std::function<void(const std::string&)>& progress, const std::string& calibration_source)
     : method_(options.method), calibrated_(calibration.has_value()), fit_sensor_(sensor) {
+  // The commands say so first, naming the file; a library caller (Python) hears it here.
+  require_emit_protocol(sensor, "sensor \"" + sensor.name + "\"");
   if (calibration) check_calibration_for_method(*calibration, method_, calibration_source);
   model_ = build_reconstruction_model(sensor, linear_options(options), options.cache_dir, options.excluded, progress);
   linear_ = model_.uncalibrated;

@@ -33,6 +33,7 @@ Vector sheet_conductance_S(const Mesh& mesh, double sheet_resistance_ohm_per_sq,
 }
 
 ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
+  require_emit_protocol(sensor, "sensor \"" + sensor.name + "\"");  // before meshing
   Mesh mesh = generate_mesh(sensor, options.mesh ? *options.mesh : twin_mesh_options(sensor, options.mesh_seed));
   const Vector conductance = sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options);
   std::optional<DrivingLayer> driving;

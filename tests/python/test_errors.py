@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import emit
+from conftest import EXAMPLES
 
 
 def test_errors_are_python_exceptions_of_their_kind():
@@ -51,21 +52,30 @@ def test_a_dict_with_an_unknown_key(sensor):
         emit.Sensor.from_dict(description)
 
 
-def test_a_missing_file_and_an_unknown_method(sensor, out):
-    with pytest.raises(emit.IoError, match=str(out / "missing.json")):
-        emit.Sensor.load(str(out / "missing.json"))
+def test_a_missing_file_and_an_unknown_method(sensor, tmp_path):
+    with pytest.raises(emit.IoError, match=str(tmp_path / "missing.json")):
+        emit.Sensor.load(str(tmp_path / "missing.json"))
     with pytest.raises(emit.IoError, match="missing.csv"):
-        emit.load_frames(str(out / "missing.csv"), sensor)
+        emit.load_frames(str(tmp_path / "missing.csv"), sensor)
     with pytest.raises(emit.InvalidInput, match=r"unknown method \"magic\""):
         emit.Reconstructor(sensor, method="magic")
     with pytest.raises(emit.InvalidInput, match="sim:nowhere"):
         emit.LiveStream("sim:nowhere", sensor)
 
 
-def test_a_bad_frames_file_names_its_line(sensor, out):
-    (out / "bad.csv").write_text(",".join(["1"] * 256) + "\n" + ",".join(["1"] * 255) + ",x\n")
+def test_a_current_injection_skin_is_not_modelled_as_an_emit_sheet():
+    # The hydrogel skin is read (its "excitation" says how it is measured), but the EMIT models
+    # refuse it, as the CLI's commands do, before any meshing.
+    hydrogel = emit.Sensor.load(str(EXAMPLES / "hydrogel_hardman.json"))
+    for build in (lambda: emit.Reconstructor(hydrogel, method="paper"), lambda: emit.Twin(hydrogel)):
+        with pytest.raises(emit.InvalidInput, match=r'^sensor "[^"]*": is a current-injection skin'):
+            build()
+
+
+def test_a_bad_frames_file_names_its_line(sensor, tmp_path):
+    (tmp_path / "bad.csv").write_text(",".join(["1"] * 256) + "\n" + ",".join(["1"] * 255) + ",x\n")
     with pytest.raises(emit.InvalidInput, match=r"bad\.csv:2: "):
-        emit.load_frames(str(out / "bad.csv"), sensor)
+        emit.load_frames(str(tmp_path / "bad.csv"), sensor)
 
 
 def test_no_reference_yet(sensor, reference):
@@ -74,24 +84,24 @@ def test_no_reference_yet(sensor, reference):
         reconstructor.reconstruct(reference[0])
 
 
-def test_a_calibration_of_the_wrong_kind(sensor, out):
-    (out / "fit.json").write_text('{"alpha_ohm_mm2": 2000, "gamma": -1.2}')
-    calibration = emit.Calibration.load(str(out / "fit.json"))
+def test_a_calibration_of_the_wrong_kind(sensor, tmp_path):
+    (tmp_path / "fit.json").write_text('{"alpha_ohm_mm2": 2000, "gamma": -1.2}')
+    calibration = emit.Calibration.load(str(tmp_path / "fit.json"))
     assert calibration.kind == "fit"
     with pytest.raises(emit.InvalidInput, match=r"a calibration for contact fitting"):
         emit.Reconstructor(sensor, method="paper", calibration=calibration)
     with pytest.raises(emit.InvalidInput, match=r"unknown key"):
-        (out / "bad.json").write_text('{"a1": 1, "colour": 2}')
-        emit.Calibration.load(str(out / "bad.json"))
+        (tmp_path / "bad.json").write_text('{"a1": 1, "colour": 2}')
+        emit.Calibration.load(str(tmp_path / "bad.json"))
 
 
-def test_saving_into_a_missing_folder_writes_nothing(out):
-    (out / "linear.json").write_text('{"a1": 0.1, "a2": 0.0, "a3": 0.0}')
-    calibration = emit.Calibration.load(str(out / "linear.json"))
+def test_saving_into_a_missing_folder_writes_nothing(tmp_path):
+    (tmp_path / "linear.json").write_text('{"a1": 0.1, "a2": 0.0, "a3": 0.0}')
+    calibration = emit.Calibration.load(str(tmp_path / "linear.json"))
     assert calibration.kind == "linear" and calibration.rms_N_per_mm2 is None
     with pytest.raises(emit.IoError):
-        calibration.save(str(out / "no" / "such" / "folder" / "c.json"))
-    assert not (out / "no").exists()
+        calibration.save(str(tmp_path / "no" / "such" / "folder" / "c.json"))
+    assert not (tmp_path / "no").exists()
     # Saved and read back, the same coefficients (to the digits JSON keeps).
-    calibration.save(str(out / "again.json"))
-    assert json.loads((out / "again.json").read_text()) == pytest.approx({"a1": 0.1, "a2": 0.0, "a3": 0.0})
+    calibration.save(str(tmp_path / "again.json"))
+    assert json.loads((tmp_path / "again.json").read_text()) == pytest.approx({"a1": 0.1, "a2": 0.0, "a3": 0.0})

@@ -46,7 +46,8 @@ class Pipeline {
  public:
   /// Builds the models. `calibration`: none is uncalibrated; one of the wrong kind is refused
   /// (check_calibration_for_method, `calibration_source` naming it). `progress` is told each stage.
-  /// \throw InvalidInput (a mismatched calibration, a bad sensor), IoError, SolverError.
+  /// \throw InvalidInput (a mismatched calibration, a bad sensor, a current-injection skin:
+  /// sensor/sensor.hpp's require_emit_protocol), IoError, SolverError.
   Pipeline(const Sensor& sensor, const PipelineOptions& options, const std::optional<Calibration>& calibration = {},
            const std::function<void(const std::string&)>& progress = {},
            const std::string& calibration_source = "calibration");
