@@ -45,6 +45,13 @@ FrameStack frame_stack(const py::handle& frames, Index electrodes, const std::st
   return stack;
 }
 
+std::vector<Frame> FrameStack::frames() const {
+  std::vector<Frame> copies;
+  copies.reserve(count);
+  for (std::size_t f = 0; f < count; ++f) copies.emplace_back(view(f));
+  return copies;
+}
+
 py::array_t<double> to_numpy(Vector&& vector) {
   auto* owned = new Vector(std::move(vector));
   const py::capsule free_when_done(owned, [](void* p) { delete static_cast<Vector*>(p); });

@@ -31,6 +31,8 @@ struct FrameStack {
     return array.data() + f * static_cast<std::size_t>(electrodes * electrodes);
   }
   FrameView view(std::size_t f) const { return {frame(f), electrodes, electrodes}; }
+  /// Copies, for the library calls that take std::vector<Frame> (averaging, calibration).
+  std::vector<Frame> frames() const;
 };
 
 /// \throw InvalidInput "<what>: expected an (N, N) or (frames, N, N) array with N = 16, got shape (3, 4)",

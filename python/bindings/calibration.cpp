@@ -16,17 +16,6 @@
 
 namespace emit::python {
 
-namespace {
-
-std::vector<Frame> frames_of(const FrameStack& stack) {
-  std::vector<Frame> frames;
-  frames.reserve(stack.count);
-  for (std::size_t f = 0; f < stack.count; ++f) frames.emplace_back(stack.view(f));
-  return frames;
-}
-
-}  // namespace
-
 void bind_calibration(py::module_& m) {
   py::class_<PythonCalibration>(m, "Calibration",
                                 R"(A method's calibration: eq. 8's a1, a2, a3 for the linear methods, or
@@ -76,9 +65,8 @@ the contact law and sheet as contact fitting sees them. Made by emit.calibrate o
         options.fit_sheet = fit_sheet;
         options.cache_dir = cache_dir;
         const EmitCall call;
-        const std::vector<Frame> pressed = frames_of(stack);
         const PressCalibrationResult result =
-            calibrate_from_presses(sensor, options, average_frames(frames_of(references)), pressed, presses);
+            calibrate_from_presses(sensor, options, average_frames(references.frames()), stack.frames(), presses);
         return PythonCalibration{result.calibration, result.presses, result.rms_N_per_mm2, result.max_abs_N_per_mm2};
       },
       py::arg("sensor"), py::arg("reference"), py::arg("frames"), py::arg("presses"), py::kw_only(),

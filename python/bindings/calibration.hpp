@@ -16,4 +16,10 @@ struct PythonCalibration {
   std::optional<double> max_abs_N_per_mm2;
 };
 
+/// The library's optional calibration, from Python's (None or an emit.Calibration).
+inline std::optional<Calibration> calibration_of(const std::optional<PythonCalibration>& given) {
+  if (!given) return std::nullopt;
+  return given->calibration;
+}
+
 }  // namespace emit::python

@@ -27,9 +27,7 @@ class LiveStream {
              const std::optional<PythonCalibration>& calibration, const SourceOptions& source_options,
              const LiveOptions& options)
       : max_frames_(options.max_frames) {
-    std::optional<Calibration> given;
-    if (calibration) given = calibration->calibration;
-    pipeline_ = std::make_unique<Pipeline>(sensor, pipeline_options, given);
+    pipeline_ = std::make_unique<Pipeline>(sensor, pipeline_options, calibration_of(calibration));
     source_ = open_source(spec, sensor, source_options);
     loop_ = std::make_unique<LiveLoop>(*source_, *pipeline_, options);
   }

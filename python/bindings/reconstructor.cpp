@@ -65,29 +65,33 @@ class PythonReconstructor {
  public:
   PythonReconstructor(const Sensor& sensor, const PipelineOptions& pipeline_options, const FrameOptions& options,
                       const std::optional<PythonCalibration>& calibration)
-      : options_(options), electrodes_(electrode_count_of(sensor)) {
-    std::optional<Calibration> given;
-    if (calibration) given = calibration->calibration;
-    pipeline_ = std::make_unique<Pipeline>(sensor, pipeline_options, given);
-    reconstructor_.emplace(pipeline_->reconstructor(options_));
-  }
+      : options_(options),
+        electrodes_(electrode_count_of(sensor)),
+        pipeline_(std::make_unique<Pipeline>(sensor, pipeline_options, calibration_of(calibration))),
+        reconstructor_(pipeline_->reconstructor(options_)) {}
 
   Index electrodes() const { return electrodes_; }
   const Pipeline& pipeline() const { return *pipeline_; }
-  const Reconstructor& reconstructor() const { return *reconstructor_; }
+  const Reconstructor& reconstructor() const { return reconstructor_; }
   std::mutex& mutex() { return mutex_; }
 
   void set_reference(const FrameStack& stack) {
-    std::vector<Frame> frames;
-    for (std::size_t f = 0; f < stack.count; ++f) frames.emplace_back(stack.view(f));
+    const std::vector<Frame> frames = stack.frames();
     reference_ = average_frames(frames);
-    reconstructor_->set_reference(reference_, frames_averaged(frames));
+    reconstructor_.set_reference(reference_, frames_averaged(frames));
     has_reference_ = true;
+  }
+
+  /// A copy of one of the last frame's images, taken while no other thread's call runs.
+  Vector copy_of(const Vector& (Reconstructor::*image)() const) {
+    const EmitCall call;  // a call in flight holds the mutex without the GIL
+    const std::lock_guard lock(mutex_);
+    return (reconstructor_.*image)();
   }
 
   const std::vector<Contact>& process(const FrameView& frame) {
     require_reference();
-    return reconstructor_->process(frame);
+    return reconstructor_.process(frame);
   }
 
   /// Every frame's contacts; their pressure images into `pressure` (frames × triangles) if given.
@@ -99,35 +103,28 @@ class PythonReconstructor {
                                                                                          electrodes_ * electrodes_)),
                                threads);
     std::vector<std::vector<Contact>> contacts(stack.count);
-    const Index triangles = reconstructor_->pressure().size();
+    const Index triangles = reconstructor_.pressure().size();
     for (std::size_t f = 0; f < stack.count; ++f) {
-      contacts[f] = reconstructor_->process(stack.view(f));
+      contacts[f] = reconstructor_.process(stack.view(f));
       if (pressure)
-        Eigen::Map<Vector>(pressure + f * static_cast<std::size_t>(triangles), triangles) = reconstructor_->pressure();
+        Eigen::Map<Vector>(pressure + f * static_cast<std::size_t>(triangles), triangles) = reconstructor_.pressure();
     }
     return contacts;
   }
 
   double cpp_seconds_per_frame(const FrameStack& stack, bool batch, int threads, int repeats) {
     require_reference();
-    std::vector<Frame> frames;
-    for (std::size_t f = 0; f < stack.count; ++f) frames.emplace_back(stack.view(f));
-    std::size_t contacts = 0;  // used, so that the loop is not optimised away
+    if (batch && !is_linear(pipeline_->method())) throw InvalidInput("batch: for the linear methods only");
+    const std::vector<Frame> frames = stack.frames();
     const auto start = std::chrono::steady_clock::now();
     for (int r = 0; r < repeats; ++r) {
-      if (batch) {
-        if (!is_linear(pipeline_->method())) throw InvalidInput("batch: for the linear methods only");
-        contacts += reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_, frames,
-                                      threads)
-                        .size();
-      } else {
-        for (const Frame& frame : frames) contacts += reconstructor_->process(frame).size();
-      }
+      if (batch)
+        reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_, frames, threads);
+      else
+        for (const Frame& frame : frames) reconstructor_.process(frame);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return contacts == std::size_t(-1)
-               ? 0
-               : seconds / static_cast<double>(frames.size() * static_cast<std::size_t>(repeats));
+    return seconds / static_cast<double>(frames.size() * static_cast<std::size_t>(repeats));
   }
 
  private:
@@ -139,7 +136,7 @@ class PythonReconstructor {
   FrameOptions options_;
   Index electrodes_;
   std::unique_ptr<Pipeline> pipeline_;  ///< before the reconstructor, which refers to it
-  std::optional<Reconstructor> reconstructor_;
+  Reconstructor reconstructor_;
   Frame reference_;
   bool has_reference_ = false;
   std::mutex mutex_;
@@ -181,11 +178,10 @@ not estimated). Read-only.)")
       .def_readonly("element_count", &Contact::element_count)
       .def(
           "as_dict",
-          [](const Contact& c) {
-            const py::array_t<ContactRow> rows = contact_rows({{c}});
+          [](const py::object& self) {
             py::dict fields;
-            for (const auto& name : py::dtype::of<ContactRow>().attr("names").cast<std::vector<std::string>>())
-              if (name != "frame") fields[py::str(name)] = rows[py::int_(0)][py::str(name)].attr("item")();
+            for (const py::handle name : py::dtype::of<ContactRow>().attr("names"))
+              if (name.cast<std::string>() != "frame") fields[name] = self.attr(name);
             return fields;
           },
           "Its fields as a dict (the names of CONTACT_DTYPE but 'frame').")
@@ -234,16 +230,16 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
           [](PythonReconstructor& self, const py::handle& frames, int threads, bool pressure) -> py::object {
             const FrameStack stack = frame_stack(frames, self.electrodes(), "frames");
             if (stack.single) {
-              py::list contacts;
+              std::vector<Contact> found;
+              Vector image;
               {
                 const EmitCall call;
                 const std::lock_guard lock(self.mutex());
-                const std::vector<Contact>& found = self.process(stack.view(0));
-                py::gil_scoped_acquire acquire;
-                contacts = contact_list(found);
+                found = self.process(stack.view(0));
+                if (pressure) image = self.reconstructor().pressure();
               }
-              if (!pressure) return contacts;
-              return py::make_tuple(contacts, to_numpy(Vector(self.reconstructor().pressure())));
+              if (!pressure) return contact_list(found);
+              return py::make_tuple(contact_list(found), to_numpy(std::move(image)));
             }
             const py::ssize_t triangles = self.pipeline().model().mesh.triangle_count();
             std::optional<py::array_t<double>> images;
@@ -280,12 +276,12 @@ the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangle
 
 batch=False: Reconstructor::process on each frame in turn, as reconstruct(frame) calls it.
 batch=True: reconstruct_batch on the frames as a std::vector<Frame>, as `emit reconstruct` runs
-the linear methods. python/bench_python.py sets reconstruct() against it.)")
+the linear methods. bench/python_bench.py sets reconstruct() against it.)")
       .def_property_readonly(
-          "pressure", [](const PythonReconstructor& self) { return to_numpy(Vector(self.reconstructor().pressure())); },
+          "pressure", [](PythonReconstructor& self) { return to_numpy(self.copy_of(&Reconstructor::pressure)); },
           "The last frame's pressure per triangle of `mesh` [N/mm^2], 0 below the threshold.")
       .def_property_readonly(
-          "image", [](const PythonReconstructor& self) { return to_numpy(Vector(self.reconstructor().image())); },
+          "image", [](PythonReconstructor& self) { return to_numpy(self.copy_of(&Reconstructor::image)); },
           "The last frame's linear image (eq. 7) per triangle [V] (0 while contact fitting tracks).")
       .def_property_readonly(
           "mesh", [](const PythonReconstructor& self) -> const Mesh& { return self.pipeline().model().mesh; },

@@ -14,13 +14,13 @@ namespace emit::python {
 namespace {
 
 /// The frames of each frame's presses, as one (frames, N, N) array.
-py::array_t<double> frames_of(Twin& twin, const PressSequence& presses, bool exact) {
+py::array_t<double> frames_of(Twin& twin, const PressSequence& presses) {
   const py::ssize_t n = twin.sensor().electrode_count();
   py::array_t<double> stack({static_cast<py::ssize_t>(presses.size()), n, n});
   double* out = stack.mutable_data();
   const EmitCall call;
   for (const std::vector<Press>& frame_presses : presses) {
-    const Frame frame = exact ? twin.exact_frame(frame_presses) : twin.frame(frame_presses);
+    const Frame frame = twin.frame(frame_presses);
     out = std::copy(frame.data(), frame.data() + frame.size(), out);
   }
   return stack;
@@ -58,7 +58,7 @@ applies the sensor's ADC (quantisation, noise, clipping) unless adc=False.)")
           },
           py::arg("presses"), "One frame (N, N) of these presses (a list; empty: untouched), with fresh noise.")
       .def(
-          "frames", [](Twin& twin, const PressSequence& presses) { return frames_of(twin, presses, false); },
+          "frames", [](Twin& twin, const PressSequence& presses) { return frames_of(twin, presses); },
           py::arg("presses"), "A (frames, N, N) array: one frame per list of presses.")
       .def(
           "exact_frame",
@@ -83,7 +83,7 @@ applies the sensor's ADC (quantisation, noise, clipping) unless adc=False.)")
           const EmitCall call;
           twin = std::make_unique<Twin>(sensor, twin_options(mesh_seed, noise_seed, adc));
         }
-        return frames_of(*twin, presses, false);
+        return frames_of(*twin, presses);
       },
       py::arg("sensor"), py::arg("presses"), py::kw_only(), py::arg("mesh_seed") = 1, py::arg("noise_seed") = 1,
       py::arg("adc") = true,

@@ -15,7 +15,7 @@ Errors are emit.InvalidInput (a ValueError), emit.IoError (an OSError) and emit.
 RuntimeError), all emit.Error, each carrying emit's one-line message.
 """
 
-from ._emit import (  # noqa: F401  (the package's names)
+from ._emit import (  # noqa: F401  (the package's names; `from emit import *` takes them all)
     CONTACT_DTYPE,
     Calibration,
     Contact,
@@ -36,23 +36,3 @@ from ._emit import (  # noqa: F401  (the package's names)
     simulate,
 )
 
-__all__ = [
-    "CONTACT_DTYPE",
-    "Calibration",
-    "Contact",
-    "Error",
-    "InvalidInput",
-    "IoError",
-    "LiveStream",
-    "Mesh",
-    "Press",
-    "Reconstructor",
-    "Sensor",
-    "SolverError",
-    "Twin",
-    "__version__",
-    "calibrate",
-    "load_frames",
-    "methods",
-    "simulate",
-]
