@@ -90,7 +90,6 @@ void McapWriter::write_message(std::uint16_t channel_id, std::uint32_t sequence,
   write(head, sizeof head);
   write(data.data(), data.size());
   check("a message");
-  ++messages_;
 }
 
 void McapWriter::close() {

@@ -1,6 +1,7 @@
 #include "emit/io/ros2_messages.hpp"
 
 #include <bit>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <type_traits>
@@ -149,9 +150,18 @@ const Ros2MessageType& mesh_message() {
   return type;
 }
 
-Ros2Contact ros2_contact(const Contact& c) {
+std::uint64_t unix_time_ns() {
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
+}
+
+Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
   const Vector3 normal(c.nx, c.ny, c.nz);
-  return {1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
+  std::array<char, 32> name{};  // "contact_" and up to 20 digits
+  std::snprintf(name.data(), name.size(), "contact_%zu", rank);
+  return {name,
+          1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
           normal,
           -c.force_N * normal,
           1e-6 * c.area_mm2,
@@ -179,11 +189,9 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
   cdr.header(stamp, frame_id);
   cdr.put(frame);
   cdr.count(contacts.size());
-  char name[32];  // "contact_" and up to 20 digits
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const Ros2Contact c = ros2_contact(contacts[i]);
-    std::snprintf(name, sizeof name, "contact_%zu", i);
-    cdr.string(name);
+    const Ros2Contact c = ros2_contact(contacts[i], i);
+    cdr.string(c.name.data());
     cdr.vector3(c.position_m);
     cdr.vector3(c.normal);
     cdr.vector3(c.force_N);        // the wrench's force

@@ -1,7 +1,5 @@
 #include "emit/io/tactile_mcap.hpp"
 
-#include <chrono>
-
 #include "emit/io/ros2_messages.hpp"
 
 namespace emit {
@@ -14,9 +12,9 @@ std::uint16_t add_topic(McapWriter& mcap, const std::string& topic, const Ros2Me
 
 }  // namespace
 
-TactileMcap::TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns,
-                         std::string prefix, std::string frame_id)
-    : mcap_(std::move(path), "ros2"), sensor_name_(std::move(sensor_name)), frame_id_(std::move(frame_id)) {
+TactileMcap::TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns)
+    : mcap_(std::move(path), "ros2"), sensor_name_(std::move(sensor_name)) {
+  const std::string prefix = "/emit";
   const std::uint16_t mesh_channel = add_topic(mcap_, prefix + "/mesh", mesh_message());
   frames_channel_ = add_topic(mcap_, prefix + "/frames", tactile_state_message());
   contacts_channel_ = add_topic(mcap_, prefix + "/contacts", tactile_contacts_message());
@@ -29,19 +27,13 @@ void TactileMcap::write(std::uint64_t frame, std::uint64_t time_ns, const FrameV
                         const std::vector<Contact>& contacts, const Vector& pressure_N_per_mm2) {
   const Ros2Stamp stamp = Ros2Stamp::from_ns(time_ns);
   const auto sequence = static_cast<std::uint32_t>(frames_);
-  encode_tactile_state(message_, stamp, frame_id_, sensor_name_, volts);
+  encode_tactile_state(message_, stamp, ros2_frame_id, sensor_name_, volts);
   mcap_.write_message(frames_channel_, sequence, time_ns, time_ns, message_);
-  encode_tactile_contacts(message_, stamp, frame_id_, frame, contacts);
+  encode_tactile_contacts(message_, stamp, ros2_frame_id, frame, contacts);
   mcap_.write_message(contacts_channel_, sequence, time_ns, time_ns, message_);
-  encode_pressure_image(message_, stamp, frame_id_, frame, pressure_N_per_mm2);
+  encode_pressure_image(message_, stamp, ros2_frame_id, frame, pressure_N_per_mm2);
   mcap_.write_message(pressure_channel_, sequence, time_ns, time_ns, message_);
   ++frames_;
-}
-
-std::uint64_t unix_time_ns() {
-  return static_cast<std::uint64_t>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
-          .count());
 }
 
 }  // namespace emit

@@ -14,6 +14,7 @@
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
+#include "emit/io/ros2_messages.hpp"
 #include "emit/io/tactile_mcap.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"

@@ -1,5 +1,7 @@
 #include "emit/live/mcap_publisher.hpp"
 
+#include "emit/io/ros2_messages.hpp"
+
 namespace emit {
 
 McapPublisher::McapPublisher(std::string path, const std::string& sensor_name, const Mesh& mesh)

@@ -47,7 +47,6 @@ class McapWriter {
   void close();
 
   const std::string& path() const { return path_; }
-  std::uint64_t messages() const { return messages_; }
 
  private:
   void record(std::uint8_t opcode, std::span<const std::uint8_t> content);
@@ -59,7 +58,6 @@ class McapWriter {
   std::uint32_t crc_;  ///< zlib's running CRC-32 of all bytes so far
   std::vector<std::uint8_t> scratch_;
   std::uint16_t schemas_ = 0, channels_ = 0;
-  std::uint64_t messages_ = 0;
   bool closed_ = false;
 };
 

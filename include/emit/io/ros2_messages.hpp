@@ -17,6 +17,7 @@
 ///
 /// Encoding reuses the caller's buffer: once it has grown to the largest message, it allocates
 /// nothing (the per-frame path).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -27,6 +28,12 @@
 #include "emit/mesh/mesh.hpp"
 
 namespace emit {
+
+/// The messages' header frame: the sheet's coordinate frame in a ROS graph.
+inline constexpr std::string_view ros2_frame_id = "emit_sheet";
+
+/// Nanoseconds since the Unix epoch, now (the host's clock: a message's receive-time stamp).
+std::uint64_t unix_time_ns();
 
 /// A message's time: ROS's builtin_interfaces/Time, from nanoseconds since the Unix epoch.
 struct Ros2Stamp {
@@ -52,10 +59,11 @@ const Ros2MessageType& mesh_message();
 /// A contact's fields as the messages carry them (emit_msgs/TactileContact), in SI units: the
 /// one conversion of emit's contacts, for the CDR here and for DDS (live/dds_publisher.hpp).
 struct Ros2Contact {
+  std::array<char, 32> name;            ///< "contact_<i>", i its rank in the frame (strongest first)
   Vector3 position_m, normal, force_N;  ///< force: the press on the sheet, −force_N · normal
   double area_m2, pressure_Pa, peak_pressure_Pa, position_std_x_m, position_std_y_m, pressure_std_Pa, force_std_N;
 };
-Ros2Contact ros2_contact(const Contact& contact);
+Ros2Contact ros2_contact(const Contact& contact, std::size_t rank);
 
 /// Each fills `out` (cleared first) with the CDR bytes of one message.
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,

@@ -6,10 +6,10 @@
 /// the start. Profile "ros2", schemas "ros2msg", messages "cdr": `ros2 bag play` and Foxglove read
 /// it as a bag.
 ///
-///   <prefix>/frames    emit_msgs/msg/TactileState
-///   <prefix>/contacts  emit_msgs/msg/TactileContacts
-///   <prefix>/pressure  emit_msgs/msg/PressureImage
-///   <prefix>/mesh      shape_msgs/msg/Mesh
+///   /emit/frames    emit_msgs/msg/TactileState
+///   /emit/contacts  emit_msgs/msg/TactileContacts
+///   /emit/pressure  emit_msgs/msg/PressureImage
+///   /emit/mesh      shape_msgs/msg/Mesh
 ///
 /// Written through PATH.partial, renamed on close() (io/mcap_writer.hpp).
 #include <cstdint>
@@ -25,11 +25,9 @@ namespace emit {
 
 class TactileMcap {
  public:
-  /// `frame_id`: the messages' header frame (the sheet's coordinate frame in a ROS graph);
-  /// `prefix`: the topics' ("/emit"). The mesh is written at `start_time_ns`.
-  /// \throw IoError naming the file (a missing folder: before anything is written).
-  TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns,
-              std::string prefix = "/emit", std::string frame_id = "emit_sheet");
+  /// The mesh is written at `start_time_ns`. \throw IoError naming the file (a missing folder:
+  /// before anything is written).
+  TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
 
   /// One frame's three messages, at `time_ns` (ns since the Unix epoch). Allocates nothing once
   /// warm. \throw IoError.
@@ -43,13 +41,10 @@ class TactileMcap {
 
  private:
   McapWriter mcap_;
-  std::string sensor_name_, frame_id_;
+  std::string sensor_name_;
   std::uint16_t frames_channel_ = 0, contacts_channel_ = 0, pressure_channel_ = 0;
   std::vector<std::uint8_t> message_;
   std::uint64_t frames_ = 0;
 };
-
-/// Nanoseconds since the Unix epoch, now (the host's clock: a bag's receive time).
-std::uint64_t unix_time_ns();
 
 }  // namespace emit

@@ -39,12 +39,10 @@ class DdsPublisher : public FramePublisher {
   /// A reconstructed frame's three messages (capture frames are left out). \throw IoError if
   /// DDS refuses a write.
   void publish(const LiveFrame& frame) override;
-  std::uint64_t frames() const { return frames_; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::uint64_t frames_ = 0;
 };
 
 }  // namespace emit

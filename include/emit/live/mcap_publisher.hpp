@@ -18,7 +18,6 @@ class McapPublisher : public FramePublisher {
   void publish(const LiveFrame& frame) override;
   /// Renames PATH.partial to PATH (io/mcap_writer.hpp). \throw IoError.
   void close() { mcap_.close(); }
-  std::uint64_t frames() const { return mcap_.frames(); }
 
  private:
   TactileMcap mcap_;
