@@ -56,9 +56,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string emit = argv[1], prefix = argv[3];
-  const int domain = std::atoi(argv[2]);
-  const long frames = std::atol(argv[4]);
-  const double x_m = 1e-3 * std::atof(argv[5]), y_m = 1e-3 * std::atof(argv[6]);
+  double given[4];  // domain, frames, x, y
+  for (int i = 0; i < 4; ++i) {
+    const char* text = argv[i == 0 ? 2 : i + 3];
+    char* end = nullptr;
+    given[i] = std::strtod(text, &end);
+    if (end == text || *end != '\0') return fail(std::string("not a number: \"") + text + "\"");
+  }
+  const auto domain = static_cast<int>(given[0]);
+  const auto frames = static_cast<long>(given[1]);
+  const double x_m = 1e-3 * given[2], y_m = 1e-3 * given[3];
 
   const dds_entity_t participant = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
   if (participant < 0) return fail(std::string("joining the domain: ") + dds_strretcode(participant));
@@ -73,6 +80,7 @@ int main(int argc, char** argv) {
                                    "--frames",     std::to_string(frames)};
   for (int i = 7; i < argc; ++i) args.emplace_back(argv[i]);
   std::vector<char*> child_argv;
+  child_argv.reserve(args.size() + 1);
   for (std::string& a : args) child_argv.push_back(a.data());
   child_argv.push_back(nullptr);
   pid_t child = 0;
@@ -147,7 +155,7 @@ int main(int argc, char** argv) {
   std::vector<double> sorted = latency_ms;
   std::sort(sorted.begin(), sorted.end());
   const auto at = [&](double q) {
-    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * (sorted.size() - 1))];
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))];
   };
   long out_of_order = 0;
   for (std::size_t i = 1; i < numbers.size(); ++i) out_of_order += numbers[i] != numbers[i - 1] + 1;
