@@ -21,11 +21,6 @@ def cli():
     return path
 
 
-@pytest.fixture
-def out(tmp_path):
-    return tmp_path
-
-
 @pytest.fixture(scope="session")
 def sensor():
     return emit.Sensor.load(str(EXAMPLES / "default60.json"))

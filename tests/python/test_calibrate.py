@@ -45,20 +45,20 @@ def test_calibrated_pressure_on_held_out_presses(sensor, twin, reference, calibr
     assert abs(uncalibrated.reconstruct(frame)[0].pressure_N_per_mm2 - HELD_OUT[0].pressure_N_per_mm2) > errors[0]
 
 
-def test_the_same_calibration_as_the_cli(cli, reference, calibration_frames, calibration, out):
-    np.savetxt(out / "ref.csv", reference.reshape(len(reference), -1), delimiter=",", fmt="%.17g")
-    np.savetxt(out / "presses.csv", calibration_frames.reshape(len(calibration_frames), -1), delimiter=",",
+def test_the_same_calibration_as_the_cli(cli, reference, calibration_frames, calibration, tmp_path):
+    np.savetxt(tmp_path / "ref.csv", reference.reshape(len(reference), -1), delimiter=",", fmt="%.17g")
+    np.savetxt(tmp_path / "presses.csv", calibration_frames.reshape(len(calibration_frames), -1), delimiter=",",
                fmt="%.17g")
-    with open(out / "truth.csv", "w") as truth:
+    with open(tmp_path / "truth.csv", "w") as truth:
         truth.write("frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n")
         for f, p in enumerate(CALIBRATION):
             truth.write(f"{f},{p.x_mm!r},{p.y_mm!r},{p.radius_mm!r},{p.force_N!r},{p.pressure_N_per_mm2!r}\n")
-    subprocess.run([cli, "calibrate", "--method", "paper", "--reference", out / "ref.csv", "--frames",
-                    out / "presses.csv", "--truth", out / "truth.csv", "--out", out / "cli.json", "--cache",
-                    out / "cache"], check=True, capture_output=True)
-    calibration.save(str(out / "python.json"))
-    theirs = json.loads((out / "cli.json").read_text())
-    mine = json.loads((out / "python.json").read_text())
+    subprocess.run([cli, "calibrate", "--method", "paper", "--reference", tmp_path / "ref.csv", "--frames",
+                    tmp_path / "presses.csv", "--truth", tmp_path / "truth.csv", "--out", tmp_path / "cli.json", "--cache",
+                    tmp_path / "cache"], check=True, capture_output=True)
+    calibration.save(str(tmp_path / "python.json"))
+    theirs = json.loads((tmp_path / "cli.json").read_text())
+    mine = json.loads((tmp_path / "python.json").read_text())
     assert mine.keys() == theirs.keys() == {"a1", "a2", "a3"}
     for key in mine:
         # The same fit of the same frames (the CSV round trip keeps all 17 digits).

@@ -31,11 +31,11 @@ def test_a_held_press_from_the_twin(sensor):
     assert stream.frames_missed == 0
 
 
-def test_a_recording_ends_the_iteration(cli, sensor, out):
+def test_a_recording_ends_the_iteration(cli, sensor, tmp_path):
     subprocess.run([cli, "live", "--source", "sim:fixed:30,30,10", "--fps", "0", "--frames", "20",
-                    "--record", out / "rec.emitrec", "--method", "paper", "--cache", out / "cache"],
+                    "--record", tmp_path / "rec.emitrec", "--method", "paper", "--cache", tmp_path / "cache"],
                    check=True, capture_output=True)
-    stream = emit.LiveStream(f"file:{out / 'rec.emitrec'}", sensor, method="paper", frames_per_s=0)
+    stream = emit.LiveStream(f"file:{tmp_path / 'rec.emitrec'}", sensor, method="paper", frames_per_s=0)
     frames = list(stream)
     # The recording holds all 30 frames the CLI handled (its baseline's 10 included): the stream
     # captures its own 10 and reconstructs the other 20, and ends there. The twin's first 15 are
@@ -45,13 +45,13 @@ def test_a_recording_ends_the_iteration(cli, sensor, out):
     assert all(contacts and distance_mm(contacts[0], 30, 30) < 8.05 for _, contacts in frames[5:])
 
 
-def test_a_board_on_a_serial_port(cli, sensor, out):
+def test_a_board_on_a_serial_port(cli, sensor, tmp_path):
     # A real serial port's other end: a pseudo-terminal, into which the test writes the packets a
     # board sent (a recording's bytes after its 32-byte header: docs/recording.md), as a board would.
     subprocess.run([cli, "live", "--source", "sim:fixed:20,40,10", "--fps", "0", "--frames", "15",
-                    "--record", out / "board.emitrec", "--method", "paper", "--cache", out / "cache"],
+                    "--record", tmp_path / "board.emitrec", "--method", "paper", "--cache", tmp_path / "cache"],
                    check=True, capture_output=True)
-    packets = (out / "board.emitrec").read_bytes()[32:]
+    packets = (tmp_path / "board.emitrec").read_bytes()[32:]
     board, port = os.openpty()
     tty.setraw(board)
     writer = threading.Thread(target=lambda: os.write(board, packets))

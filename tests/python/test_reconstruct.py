@@ -35,7 +35,10 @@ def test_contact_fitting_places_single_presses(sensor, reference, frames):
         # The README's p95 of contact fitting's error is 0.13 mm; 0.5 mm leaves room for this
         # twin mesh's seed and noise.
         assert distance_mm(contacts[0], x, y) < 0.5
-    assert fit.fit_rms_misfit_mV is not None and fit.fit_rms_misfit_mV < 5.0
+    # A fit that explains the frame leaves its noise: the ADC's 1 mV on the frame and on the
+    # 10-frame reference (sqrt(1.1) mV), with 12-bit quantisation (0.23 mV), 1.08 mV in all;
+    # half as much again for the model's error on the twin's other mesh.
+    assert fit.fit_rms_misfit_mV is not None and fit.fit_rms_misfit_mV < 1.5 * 1.08
 
 
 def test_a_stack_gives_each_frames_contacts(paper, frames):
@@ -64,16 +67,16 @@ def test_pressure_images_match_the_contacts(paper, frames):
     assert np.array_equal(paper.pressure, images[0])
 
 
-def test_python_gives_the_clis_contacts(cli, sensor, paper, reference, frames, out):
+def test_python_gives_the_clis_contacts(cli, paper, reference, frames, tmp_path):
     # The same frames through `emit reconstruct` (files) and through Python (arrays): the same
     # contacts to the last digit the CLI writes.
-    np.savetxt(out / "ref.csv", reference.reshape(len(reference), -1), delimiter=",", fmt="%.17g")
-    np.savetxt(out / "frames.csv", frames.reshape(len(frames), -1), delimiter=",", fmt="%.17g")
+    np.savetxt(tmp_path / "ref.csv", reference.reshape(len(reference), -1), delimiter=",", fmt="%.17g")
+    np.savetxt(tmp_path / "frames.csv", frames.reshape(len(frames), -1), delimiter=",", fmt="%.17g")
     subprocess.run(
-        [cli, "reconstruct", "--method", "paper", "--reference", out / "ref.csv", "--frames", out / "frames.csv",
-         "--contacts", out / "contacts.jsonl", "--cache", out / "cache"],
+        [cli, "reconstruct", "--method", "paper", "--reference", tmp_path / "ref.csv", "--frames", tmp_path / "frames.csv",
+         "--contacts", tmp_path / "contacts.jsonl", "--cache", tmp_path / "cache"],
         check=True, capture_output=True)
-    lines = [json.loads(line) for line in open(out / "contacts.jsonl")]
+    lines = [json.loads(line) for line in open(tmp_path / "contacts.jsonl")]
     assert len(lines) == len(frames)
     for line, frame in zip(lines, frames):
         mine = paper.reconstruct(frame)
@@ -86,7 +89,7 @@ def test_python_gives_the_clis_contacts(cli, sensor, paper, reference, frames, o
                 assert fields[key] == pytest.approx(value, rel=1e-5, abs=1e-12), key
 
 
-def test_the_reference_is_averaged_leaving_out_a_touched_frame(sensor, twin, reference, frames):
+def test_the_reference_is_averaged_leaving_out_a_touched_frame(sensor, reference, frames):
     # A touched frame among the reference frames is an outlier the average leaves out: the
     # reference is then the untouched one, and a press is found where it was.
     with_glitch = np.concatenate([reference, frames[:1]])
