@@ -8,6 +8,7 @@
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/threads.hpp"
+#include "emit/core/version.hpp"
 
 namespace {
 
@@ -17,7 +18,7 @@ int run(int argc, char** argv) {
       "emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
       "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
   app.name("emit");
-  app.set_version_flag("--version", "emit 0.1.0");
+  app.set_version_flag("--version", std::string("emit ") + emit::version());
   app.require_subcommand(1);
   app.fallthrough();  // --threads after the command, too
   int threads = 1;

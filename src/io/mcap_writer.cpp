@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/version.hpp"
 
 namespace emit {
 
@@ -56,7 +57,7 @@ McapWriter::McapWriter(std::string path, std::string_view profile)
   stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw IoError(partial_path_ + ": cannot write (" + std::strerror(errno) + ")");
   write(magic, sizeof magic);
-  Fields(scratch_).string(profile).string("emit " EMIT_VERSION_STRING);
+  Fields(scratch_).string(profile).string(std::string("emit ") + version());
   record(header_op, scratch_);
 }
 
