@@ -51,7 +51,7 @@ std::uint64_t parse_seed(const std::string& text) {
 /// The standard sheets whose name begins with `sheet` (all for ""): "60" is the 60 mm sheet, not
 /// the sleeve 60 mm long. \throw InvalidInput if none.
 std::vector<EvalCase> matching_cases(const std::string& sheet) {
-  std::vector<EvalCase> cases = standard_eval_cases(EMIT_EXAMPLES_DIR);
+  std::vector<EvalCase> cases = standard_eval_cases(examples_dir());
   std::erase_if(cases, [&](const EvalCase& c) { return c.name.rfind(sheet, 0) != 0; });
   if (cases.empty())
     throw InvalidInput("--sheet " + quote_input(sheet) +

@@ -51,6 +51,10 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& erro
 /// The operator cache: none with --no-cache, else --cache or the default folder.
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache);
 
+/// The example sensors' folder: the installed one beside the command (bin/../share/emit/sensors,
+/// cmake/install_rules.cmake) when there is one, else the source tree's examples/sensors.
+std::string examples_dir();
+
 /// `emit eval --realistic`'s table for one sheet: each figure beside issue 14's target
 /// (realistic_eval_table.cpp).
 void print_realistic_evaluation(const RealisticEvaluation& evaluation);

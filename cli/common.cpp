@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 
 #include "commands.hpp"
@@ -125,6 +126,16 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& erro
 
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache) {
   return no_cache ? "" : (cache_dir.empty() ? default_cache_dir() : cache_dir);
+}
+
+std::string examples_dir() {
+  std::error_code error;
+  const std::filesystem::path command = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed = command.parent_path().parent_path() / EMIT_INSTALLED_EXAMPLES_DIR;
+    if (std::filesystem::is_directory(installed, error)) return installed.string();
+  }
+  return EMIT_EXAMPLES_DIR;
 }
 
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses) {

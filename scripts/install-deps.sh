@@ -25,6 +25,8 @@ packages=(
   cyclonedds-dev cyclonedds-tools       # DDS as ROS 2 speaks it (`emit live --dds`), idlc for its types
   pybind11-dev python3-dev python3-numpy  # the Python module (python/), against Debian's python3
   python3-pytest python3-matplotlib     # its tests, and examples/python/quickstart.py's picture
+  dpkg-dev file lintian help2man        # the Debian package (scripts/package.sh): dpkg-shlibdeps, its
+                                        # check, the manual page from the commands' help
 )
 # node and npm drive the browser test (playwright-core); any install of them will do.
 command -v node >/dev/null || packages+=(nodejs)

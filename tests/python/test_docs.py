@@ -19,6 +19,11 @@ def readme_section(title):
     return text[start:end]
 
 
+# EMIT_INSTALLED: the installed package's module and command (tests/package/package_test.sh runs
+# this test so), not the build tree's.
+INSTALLED = bool(os.environ.get("EMIT_INSTALLED"))
+
+
 def test_the_readme_python_section_as_written(cli, tmp_path):
     section = readme_section("Python (`import emit`)")
     blocks = re.findall(r"```(sh|python)\n(.*?)```", section, re.S)
@@ -37,7 +42,12 @@ def test_the_readme_python_section_as_written(cli, tmp_path):
             assignment, interpreter, script = command.split()
             # The README's python3 is Debian's (the one the module is built for).
             assert interpreter == "python3"
-            environment["PYTHONPATH"] = assignment.split("=", 1)[1]
+            if not INSTALLED:
+                environment["PYTHONPATH"] = assignment.split("=", 1)[1]
+            where = subprocess.run([sys.executable, "-c", "import emit; print(emit.__file__)"], cwd=tmp_path,
+                                   env=environment, check=True, capture_output=True, text=True).stdout
+            expected = "/usr/lib/python3/dist-packages/emit/" if INSTALLED else str(tmp_path / "build" / "python")
+            assert where.startswith(expected), f"emit imported from {where.strip()}, not {expected}"
             result = subprocess.run([sys.executable, script], cwd=tmp_path, env=environment, check=True,
                                     capture_output=True, text=True)
         else:
