@@ -5,7 +5,7 @@ digital twin, every reconstruction method with its calibration, and live sources
 emit's own (the C++ library, through pybind11); arrays are numpy's.
 
     import emit
-    sensor = emit.Sensor.load("examples/sensors/default.json")
+    sensor = emit.Sensor.load("examples/sensors/default60.json")
     reconstructor = emit.Reconstructor(sensor, method="paper")
     reconstructor.set_reference(untouched_frames)       # (N, N) or (K, N, N)
     for contact in reconstructor.reconstruct(frame):    # (N, N): a list of Contact
