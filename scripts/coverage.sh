@@ -3,8 +3,10 @@
 # (gcovr included), builds with gcc's --coverage (-Og, no sanitizers) in build-coverage/, runs the
 # suite there, and prints a table per file (the lowest last) and the total; the HTML report goes to
 # build-coverage/coverage/index.html. Left out of the run: the fuzz tests (label fuzz: a separate
-# clang++ build, which writes no gcc coverage) and the browser test (the viewer's JavaScript; the
-# server it drives is covered by tests/live/live_server_test.cpp).
+# clang++ build, which writes no gcc coverage), the browser test (the viewer's JavaScript; the
+# server it drives is covered by tests/live/live_server_test.cpp) and the Debian package's test
+# (label package: it builds and installs a Release package of its own, which writes no coverage
+# here).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -13,7 +15,7 @@ find build-coverage -name '*.gcda' -delete 2>/dev/null || true  # counts from an
 cmake -S . -B build-coverage -DCMAKE_BUILD_TYPE=RelWithDebInfo -DEMIT_COVERAGE=ON -DEMIT_BUILD_TESTS=ON \
       -DEMIT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-coverage -j"$(nproc)"
-(cd build-coverage && ctest --output-on-failure -j"$(nproc)" -LE fuzz -E '^browser_')
+(cd build-coverage && ctest --output-on-failure -j"$(nproc)" -LE 'fuzz|package' -E '^browser_')
 mkdir -p build-coverage/coverage
 # --filter keeps src/ (the generated viewer page lives in build-coverage/, tests/ is not src/).
 gcovr --root . --object-directory build-coverage --filter "$PWD/src/" -j "$(nproc)" --sort-percentage \
