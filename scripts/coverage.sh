@@ -18,5 +18,10 @@ cmake --build build-coverage -j"$(nproc)"
 (cd build-coverage && ctest --output-on-failure -j"$(nproc)" -LE 'fuzz|package' -E '^browser_')
 mkdir -p build-coverage/coverage
 # --filter keeps src/ (the generated viewer page lives in build-coverage/, tests/ is not src/).
+# Threads (the live loop, the sources, --threads) race on gcc's plain counters, and now and then
+# gcov prints a line gcovr 5.2 cannot read ("branch 1 taken -2"; 2026-11-26 in contacts.cpp):
+# gcovr skips that line and says so on stderr. (-fprofile-update=atomic avoids the race, but the
+# suite ran 3.5 times slower.)
 gcovr --root . --object-directory build-coverage --filter "$PWD/src/" -j "$(nproc)" --sort-percentage \
+      --gcov-ignore-parse-errors \
       --print-summary --html-details build-coverage/coverage/index.html --txt -
