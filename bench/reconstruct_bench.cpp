@@ -67,7 +67,7 @@ Bench& bench() {
 void BM_PaperFrame(benchmark::State& state) {
   Bench& b = bench();
   Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
-  reconstructor.set_reference(b.reference);
+  reconstructor.set_reference({b.reference, 1});
   std::size_t f = 0;
   for ([[maybe_unused]] auto _ : state)
     benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
@@ -79,7 +79,7 @@ void BM_PaperFrameBefore(benchmark::State& state) {
   FrameOptions options;
   options.min_contact_cells = 0;
   Reconstructor reconstructor(b.before, LinearCalibration::uncalibrated(b.sensor), options);
-  reconstructor.set_reference(b.reference);
+  reconstructor.set_reference({b.reference, 1});
   std::size_t f = 0;
   for ([[maybe_unused]] auto _ : state)
     benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
@@ -181,11 +181,11 @@ CurvedBench& fingertip_bench() {
 /// tracking (each frame started from the last one's contacts).
 template <class Sheet>
 void fit_frames(benchmark::State& state, Sheet& b, const std::vector<Frame>& frames, bool track) {
-  ContactFitter fitter(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
+  const FitPrecompute fit(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
   FrameOptions options;
   options.track_contacts = track;
-  Reconstructor reconstructor(b.model, fitter, FitCalibration::uncalibrated(b.sensor), options);
-  reconstructor.set_reference(b.reference);
+  Reconstructor reconstructor(b.model, fit, FitCalibration::uncalibrated(b.sensor), options);
+  reconstructor.set_reference({b.reference, 1});
   std::size_t f = 0;
   double evaluations = 0, contacts = 0;
   for ([[maybe_unused]] auto _ : state) {

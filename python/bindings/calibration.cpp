@@ -66,7 +66,7 @@ the contact law and sheet as contact fitting sees them. Made by emit.calibrate o
         options.cache_dir = cache_dir;
         const EmitCall call;
         const PressCalibrationResult result =
-            calibrate_from_presses(sensor, options, average_frames(references.frames()), stack.frames(), presses);
+            calibrate_from_presses(sensor, options, average_reference(references.frames()), stack.frames(), presses);
         return PythonCalibration{result.calibration, result.presses, result.rms_N_per_mm2, result.max_abs_N_per_mm2};
       },
       py::arg("sensor"), py::arg("reference"), py::arg("frames"), py::arg("presses"), py::kw_only(),

@@ -78,7 +78,7 @@ list of Contact. A recording ends the iteration at its end; max_frames > 0 ends 
              source_options.seed = seed;
              source_options.loop = loop;
              LiveOptions options;
-             options.baseline.capture_frames = capture_frames;
+             options.reference.capture_frames = capture_frames;
              options.max_frames = max_frames;
              options.poll = std::chrono::milliseconds(50);
              const EmitCall call;

@@ -76,9 +76,8 @@ class PythonReconstructor {
   std::mutex& mutex() { return mutex_; }
 
   void set_reference(const FrameStack& stack) {
-    const std::vector<Frame> frames = stack.frames();
-    reference_ = average_frames(frames);
-    reconstructor_.set_reference(reference_, frames_averaged(frames));
+    reference_ = average_reference(stack.frames());
+    reconstructor_.set_reference(reference_);
     has_reference_ = true;
   }
 
@@ -97,11 +96,14 @@ class PythonReconstructor {
   /// Every frame's contacts; their pressure images into `pressure` (frames × triangles) if given.
   std::vector<std::vector<Contact>> process_all(const FrameStack& stack, int threads, double* pressure) {
     require_reference();
-    if (is_linear(pipeline_->method()) && !pressure)
-      return reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_,
-                               std::span<const double>(stack.frame(0), stack.count * static_cast<std::size_t>(
-                                                                                         electrodes_ * electrodes_)),
-                               threads);
+    // Linear methods always, contact fitting when asked for threads: independent frames
+    // (Pipeline::reconstruct_batch fits each frame cold, whatever the thread count).
+    if ((is_linear(pipeline_->method()) || threads > 1) && !pressure)
+      return pipeline_->reconstruct_batch(options_, reference_,
+                                          std::span<const double>(stack.frame(0),
+                                                                  stack.count * static_cast<std::size_t>(electrodes_ *
+                                                                                                         electrodes_)),
+                                          threads);
     std::vector<std::vector<Contact>> contacts(stack.count);
     const Index triangles = reconstructor_.pressure().size();
     for (std::size_t f = 0; f < stack.count; ++f) {
@@ -114,12 +116,10 @@ class PythonReconstructor {
 
   double cpp_seconds_per_frame(const FrameStack& stack, bool batch, int threads, int repeats) {
     require_reference();
-    if (batch && !is_linear(pipeline_->method())) throw InvalidInput("batch: for the linear methods only");
     const std::vector<Frame> frames = stack.frames();
     const auto start = std::chrono::steady_clock::now();
     for (int r = 0; r < repeats; ++r) {
-      if (batch)
-        reconstruct_batch(pipeline_->model(), pipeline_->linear_calibration(), options_, reference_, frames, threads);
+      if (batch) pipeline_->reconstruct_batch(options_, reference_, frames, threads);
       else
         for (const Frame& frame : frames) reconstructor_.process(frame);
     }
@@ -137,7 +137,7 @@ class PythonReconstructor {
   Index electrodes_;
   std::unique_ptr<Pipeline> pipeline_;  ///< before the reconstructor, which refers to it
   Reconstructor reconstructor_;
-  Frame reference_;
+  Reference reference_;
   bool has_reference_ = false;
   std::mutex mutex_;
 };
@@ -260,7 +260,8 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
 
 frames (N, N): a list of Contact, strongest first. frames (F, N, N): one structured array of every
 frame's contacts (CONTACT_DTYPE; its 'frame' field says whose), the linear methods split across
-`threads`; contact fitting goes in order, tracking from frame to frame. pressure=True also returns
+`threads`; contact fitting goes in order, tracking from frame to frame, or with threads > 1 fits
+each frame on its own, split across them (the same contacts for any count). pressure=True also returns
 the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangles).)")
       .def(
           "cpp_seconds_per_frame",
@@ -275,8 +276,9 @@ the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangle
           R"(The benchmarks' baseline: seconds per frame of the same frames in C++ alone, no Python per frame.
 
 batch=False: Reconstructor::process on each frame in turn, as reconstruct(frame) calls it.
-batch=True: reconstruct_batch on the frames as a std::vector<Frame>, as `emit reconstruct` runs
-the linear methods. bench/python_bench.py sets reconstruct() against it.)")
+batch=True: Pipeline::reconstruct_batch on the frames as a std::vector<Frame>, as `emit
+reconstruct` runs the linear methods (contact fitting: each frame fitted on its own).
+bench/python_bench.py sets reconstruct() against it.)")
       .def_property_readonly(
           "pressure", [](PythonReconstructor& self) { return to_numpy(self.copy_of(&Reconstructor::pressure)); },
           "The last frame's pressure per triangle of `mesh` [N/mm^2], 0 below the threshold.")

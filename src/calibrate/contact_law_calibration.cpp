@@ -70,20 +70,20 @@ FitCalibration nominal_law(const ContactLaw& law) {
 
 }  // namespace
 
-FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, ContactFitter& fitter,
-                                                  const Frame& reference, const std::vector<Frame>& frames,
+FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, const FitPrecompute& fitting,
+                                                  const Reference& reference, const std::vector<Frame>& frames,
                                                   const std::vector<double>& true_pressure_N_per_mm2,
                                                   const ContactLaw& nominal, const FrameOptions& options) {
   if (frames.size() != true_pressure_N_per_mm2.size()) throw InvalidInput("one true pressure per frame is needed");
-  Reconstructor reconstructor(model, fitter, nominal_law(nominal), options);
+  Reconstructor reconstructor(model, fitting, nominal_law(nominal), options);
   reconstructor.set_reference(reference);
   std::vector<double> pressure, resistance;  // true P, and 1/g of the fitted disc [Ω·mm²]
   for (std::size_t f = 0; f < frames.size(); ++f) {
     reconstructor.process(frames[f]);
-    const FitResult& fit = *reconstructor.fit_result();
-    if (fit.contacts.empty()) continue;
+    const FitResult& fitted = *reconstructor.fit_result();
+    if (fitted.contacts.empty()) continue;
     pressure.push_back(true_pressure_N_per_mm2[f]);
-    resistance.push_back(1 / fit.contacts[0].disc.conductance_S_per_mm2);
+    resistance.push_back(1 / fitted.contacts[0].disc.conductance_S_per_mm2);
   }
   const ContactLawFit fit = fit_contact_law(pressure, resistance);
   FittedLawCalibration result{{fit.alpha, fit.gamma, nominal.min_pressure_N_per_mm2}, 0, 0, pressure.size()};

@@ -13,7 +13,7 @@ SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int referenc
   std::vector<Frame> references;
   references.reserve(static_cast<std::size_t>(std::max(reference_frames, 0)));
   for (int i = 0; i < reference_frames; ++i) references.push_back(twin.frame({}));
-  run.reference = average_frames(references);
+  run.reference = average_reference(references);
   for (const auto& frame_presses : presses) run.frames.push_back(twin.frame(frame_presses));
   return run;
 }
@@ -101,7 +101,7 @@ LCurvePoint l_curve_point(const Matrix& J, const CompactOperator& op, const Meas
   CompactOperatorScratch scratch = op.scratch();
   Vector dphi;
   for (const Frame& frame : run.frames) {
-    const Vector dV = frame_difference(measurements, frame, run.reference);
+    const Vector dV = frame_difference(measurements, frame, run.reference.frame);
     op.apply(dV, dphi, scratch);
     point.residual_norm_V += (J * dphi - dV).norm();
     point.solution_norm_V += dphi.norm();

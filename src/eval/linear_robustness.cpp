@@ -11,11 +11,11 @@ namespace emit {
 
 namespace {
 
-/// localisation_errors' image-centroid mean, with a reference averaged from `frames` frames.
-double position_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, const Frame& reference, int frames) {
+/// localisation_errors' image-centroid mean, against `reference`.
+double position_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, const Reference& reference) {
   std::vector<double> errors;
   int missed = 0;
-  reconstructor.set_reference(reference, frames);
+  reconstructor.set_reference(reference);
   for (std::size_t f = 0; f < run.frames.size(); ++f) {
     const Press& truth = run.presses[f].at(0);
     reconstructor.process(run.frames[f]);
@@ -28,9 +28,8 @@ double position_error_mm(Reconstructor& reconstructor, const SimulatedRun& run, 
 
 }  // namespace
 
-double false_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run, double distance_mm,
-                          int reference_frames) {
-  reconstructor.set_reference(run.reference, reference_frames);
+double false_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run, double distance_mm) {
+  reconstructor.set_reference(run.reference);
   int ghosts = 0;
   for (std::size_t f = 0; f < run.frames.size(); ++f)
     ghosts += has_false_contact(reconstructor.process(run.frames[f]), run.presses[f], distance_mm);
@@ -41,7 +40,7 @@ ReferenceSpread single_reference_spread(Reconstructor& reconstructor, const Simu
                                         const std::vector<Frame>& references) {
   ReferenceSpread spread{std::numeric_limits<double>::infinity(), 0};
   for (const Frame& reference : references) {
-    const double e = position_error_mm(reconstructor, run, reference, 1);
+    const double e = position_error_mm(reconstructor, run, {reference, 1});
     spread.low_mm = std::min(spread.low_mm, e);
     spread.high_mm = std::max(spread.high_mm, e);
   }
@@ -54,7 +53,7 @@ double noisy_reference_error_mm(Reconstructor& reconstructor, const SimulatedRun
   std::normal_distribution<double> noise(0.0, extra_noise_V);
   if (!references.empty())
     for (Index i = 0; i < references[0].size(); ++i) references[0].data()[i] += noise(rng);
-  return position_error_mm(reconstructor, run, average_frames(references), frames_averaged(references));
+  return position_error_mm(reconstructor, run, average_reference(references));
 }
 
 }  // namespace emit

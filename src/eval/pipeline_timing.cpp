@@ -119,7 +119,7 @@ void time_per_frame(const ReconstructionModel& model, const Sensor& sensor, cons
   const LinearCalibration calibration = LinearCalibration::uncalibrated(sensor);
   Reconstructor reconstructor(model, calibration);
   const int N = model.measurements.electrode_count;
-  reconstructor.set_reference(Frame::Zero(N, N));
+  reconstructor.set_reference({Frame::Zero(N, N), 1});
   std::vector<Frame> full_frames;
   full_frames.reserve(frames.size());
   for (const Vector& dV : frames) full_frames.push_back(as_frame(model.measurements, dV));

@@ -89,7 +89,7 @@ std::vector<Frame> simulate(Twin& twin, const PressSequence& presses, const std:
 }
 
 /// Each frame's contacts, by a reconstructor of its own (as one `emit reconstruct` per file).
-ContactSequence reconstruct(Pipeline& pipeline, const Frame& reference, const std::vector<Frame>& frames,
+ContactSequence reconstruct(Pipeline& pipeline, const Reference& reference, const std::vector<Frame>& frames,
                             const std::string& what, const Progress& progress) {
   Reconstructor reconstructor = pipeline.reconstructor();
   reconstructor.set_reference(reference);
@@ -104,7 +104,7 @@ ContactSequence reconstruct(Pipeline& pipeline, const Frame& reference, const st
 
 /// Every frame the round simulates, with its presses.
 struct RealisticRuns {
-  Frame reference;
+  Reference reference;
   PressSequence calibration, test, three, four;
   std::vector<PressSequence> indenters;  ///< per IndenterScore, in its order
   std::vector<Frame> calibration_frames, test_frames, three_frames, four_frames;
@@ -120,7 +120,7 @@ RealisticRuns simulate_round(const EvalCase& c, const RealisticSheet& sheet, con
   {
     progress.say("meshing the realistic sheet's twin (reference, seed " + std::to_string(seed) + ")");
     Twin twin = twin_of(sheet, seed);
-    runs.reference = average_frames(
+    runs.reference = average_reference(
         simulate(twin, PressSequence(static_cast<std::size_t>(n.reference_frames)), "reference frame", progress));
   }
   {

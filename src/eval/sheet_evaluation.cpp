@@ -183,20 +183,19 @@ std::vector<double> true_pressures(const SimulatedRun& run) {
 
 /// Fitted contacts' pressure after contact fitting's calibration on the calibration run: the
 /// mean |error| on the test run.
-double fit_pressure_error(Reconstructor& reconstructor, const ReconstructionModel& model, ContactFitter& fitter,
+double fit_pressure_error(Reconstructor& reconstructor, const ReconstructionModel& model, const FitPrecompute& fit,
                           const EvalCase& c, const Runs& runs) {
-  const ContactLaw law =
-      calibrate_fitted_contact_law(model, fitter, runs.calibration.reference, runs.calibration.frames,
-                                   true_pressures(runs.calibration), c.sensor.contact)
-          .law;
+  const ContactLaw law = calibrate_fitted_contact_law(model, fit, runs.calibration.reference, runs.calibration.frames,
+                                                      true_pressures(runs.calibration), c.sensor.contact)
+                             .law;
   reconstructor.set_reference(runs.test.reference);
   const std::vector<double> truth = true_pressures(runs.test);
   std::vector<double> errors;
   for (std::size_t f = 0; f < runs.test.frames.size(); ++f) {
     reconstructor.process(runs.test.frames[f]);
-    const FitResult& fit = *reconstructor.fit_result();
-    if (fit.contacts.empty()) continue;
-    errors.push_back(std::abs(law.pressure_N_per_mm2(fit.contacts[0].disc.conductance_S_per_mm2) - truth[f]));
+    const FitResult& fitted = *reconstructor.fit_result();
+    if (fitted.contacts.empty()) continue;
+    errors.push_back(std::abs(law.pressure_N_per_mm2(fitted.contacts[0].disc.conductance_S_per_mm2) - truth[f]));
   }
   return summarize_errors(errors, 0).mean;
 }
@@ -209,15 +208,15 @@ MethodEvaluation evaluate_fit(const EvalCase& c, const Runs& runs, Reconstructio
   model.op = build_compact_operator(J, model.mesh, model.options);
   const FitModel fit_model = build_fit_model(c.sensor);
   result.fit_mesh_nodes = static_cast<long>(fit_model.mesh.node_count());
-  ContactFitter fitter(c.sensor, fit_model.mesh, fit_model.green, model.measurements);
-  Reconstructor reconstructor(model, fitter, FitCalibration::uncalibrated(c.sensor));
+  const FitPrecompute fit(c.sensor, fit_model.mesh, fit_model.green, model.measurements);
+  Reconstructor reconstructor(model, fit, FitCalibration::uncalibrated(c.sensor));
   const auto start = std::chrono::steady_clock::now();
   const LocalisationResult r = localisation_errors(reconstructor, runs.grid, 0.5);
   result.ms_per_frame = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
                         static_cast<double>(runs.grid.frames.size());
   result.position = result.strongest_contact = r.strongest_contact;
   if (c.pressure_and_two_press) {
-    result.pressure_error_N_per_mm2 = fit_pressure_error(reconstructor, model, fitter, c, runs);
+    result.pressure_error_N_per_mm2 = fit_pressure_error(reconstructor, model, fit, c, runs);
     result.two_press = two_press_rates(reconstructor, runs.two_press, 2.0);
   }
   return result;
@@ -247,20 +246,20 @@ std::vector<MismatchEvaluation> evaluate_mismatches(const EvalCase& c, double la
     Reconstructor paper(model, LinearCalibration::uncalibrated(c.sensor));
     result.paper = localisation_errors(paper, run, 0.5).image_centroid;
     if (fit_model) {
-      ContactFitter fitter(c.sensor, fit_model->mesh, fit_model->green, model.measurements);
-      Reconstructor fitting(model, fitter, FitCalibration::uncalibrated(c.sensor));
+      const FitPrecompute fit(c.sensor, fit_model->mesh, fit_model->green, model.measurements);
+      Reconstructor fitting(model, fit, FitCalibration::uncalibrated(c.sensor));
       result.fit = localisation_errors(fitting, run, 0.5).strongest_contact;
       const SimulatedRun calibration =
           simulate_run(twin,
                        pressure_presses(c.sensor, c.radius_mm, pressure_press_count(options), options.seed + 100));
       const SensorCalibration sensor_fit =
-          calibrate_sensor(c.sensor, fit_model->mesh, model.measurements, calibration.frames, calibration.reference,
-                           calibration.presses);
+          calibrate_sensor(c.sensor, fit_model->mesh, model.measurements, calibration.frames,
+                           calibration.reference.frame, calibration.presses);
       const SheetCorrection& correction = sensor_fit.correction;
       const Sensor sensor_as_fitted = calibrated_sensor(c.sensor, sensor_fit);
       const Mesh slid = slide_electrodes(fit_model->mesh, c.sensor, sensor_fit.electrode_shift_mm);
       const DenseGreenFunction green = fit_green_function(slid, c.sensor, &correction);
-      ContactFitter corrected(sensor_as_fitted, slid, green, model.measurements);
+      const FitPrecompute corrected(sensor_as_fitted, slid, green, model.measurements);
       Reconstructor calibrated(model, corrected, FitCalibration::uncalibrated(c.sensor));
       result.fit_self_calibrated = localisation_errors(calibrated, run, 0.5).strongest_contact;
       std::tie(result.sheet_factor_low, result.sheet_factor_high) = correction.factor_range(fit_model->mesh);

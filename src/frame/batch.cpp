@@ -13,8 +13,7 @@ namespace {
 
 /// The batch over `count` frames, `frame(f)` giving frame f (a Frame or a FrameView).
 template <typename FrameAt>
-std::vector<std::vector<Contact>> batch(const ReconstructionModel& model, const LinearCalibration& calibration,
-                                        const FrameOptions& options, const Frame& reference, std::size_t count,
+std::vector<std::vector<Contact>> batch(const ReconstructorFactory& make, const Reference& reference, std::size_t count,
                                         int threads, const FrameAt& frame) {
   if (threads < 1) throw InvalidInput("batch needs at least 1 thread, got " + std::to_string(threads));
   std::vector<std::vector<Contact>> contacts(count);
@@ -22,7 +21,7 @@ std::vector<std::vector<Contact>> batch(const ReconstructionModel& model, const 
   // Contiguous slices: each worker's frames sit together in memory, and its results too.
   const auto work = [&](int worker) {
     try {
-      Reconstructor reconstructor(model, calibration, options);
+      Reconstructor reconstructor = make();
       reconstructor.set_reference(reference);
       const std::size_t begin = count * static_cast<std::size_t>(worker) / static_cast<std::size_t>(threads);
       const std::size_t end = count * static_cast<std::size_t>(worker + 1) / static_cast<std::size_t>(threads);
@@ -43,25 +42,28 @@ std::vector<std::vector<Contact>> batch(const ReconstructionModel& model, const 
 
 }  // namespace
 
-std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
-                                                    const LinearCalibration& calibration, const FrameOptions& options,
-                                                    const Frame& reference, const std::vector<Frame>& frames,
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructorFactory& make, const Reference& reference,
+                                                    const std::vector<Frame>& frames, int threads) {
+  return batch(make, reference, frames.size(), threads, [&](std::size_t f) -> const Frame& { return frames[f]; });
+}
+
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructorFactory& make, const Reference& reference,
+                                                    std::span<const double> frames_volts, Index electrodes,
                                                     int threads) {
-  return batch(model, calibration, options, reference, frames.size(), threads,
-               [&](std::size_t f) -> const Frame& { return frames[f]; });
+  const Index N = electrodes;
+  const auto per_frame = static_cast<std::size_t>(N * N);
+  if (per_frame == 0 || frames_volts.size() % per_frame != 0)
+    throw InvalidInput("frames: " + std::to_string(frames_volts.size()) + " values are not a whole number of " +
+                       std::to_string(N) + " × " + std::to_string(N) + " frames");
+  return batch(make, reference, frames_volts.size() / per_frame, threads,
+               [&](std::size_t f) { return FrameView(frames_volts.data() + f * per_frame, N, N); });
 }
 
 std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
                                                     const LinearCalibration& calibration, const FrameOptions& options,
-                                                    const Frame& reference, std::span<const double> frames_volts,
+                                                    const Reference& reference, const std::vector<Frame>& frames,
                                                     int threads) {
-  const Index N = model.measurements.electrode_count;
-  const auto per_frame = static_cast<std::size_t>(N * N);
-  if (frames_volts.size() % per_frame != 0)
-    throw InvalidInput("frames: " + std::to_string(frames_volts.size()) + " values are not a whole number of " +
-                       std::to_string(N) + " × " + std::to_string(N) + " frames");
-  return batch(model, calibration, options, reference, frames_volts.size() / per_frame, threads,
-               [&](std::size_t f) { return FrameView(frames_volts.data() + f * per_frame, N, N); });
+  return reconstruct_batch([&] { return Reconstructor(model, calibration, options); }, reference, frames, threads);
 }
 
 }  // namespace emit

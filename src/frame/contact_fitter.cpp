@@ -38,23 +38,24 @@ class FrameMisfit : public ceres::CostFunction {
  public:
   FrameMisfit(ContactFitter& fitter, const Vector& dV, int discs) : fitter_(fitter), dV_(dV), discs_(discs) {
     for (int i = 0; i < discs; ++i) mutable_parameter_block_sizes()->push_back(disc_parameters);
-    set_num_residuals(fitter.measurements_.size());
+    set_num_residuals(fitter.shared_.measurements_.size());
   }
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     ContactFitter& f = fitter_;
+    const FitPrecompute& shared = f.shared_;
     f.load_.clear();
     ranges_.clear();
     for (int i = 0; i < discs_; ++i) {
       const std::size_t begin = f.load_.triangles.size();
-      f.integrator_.integrate(to_disc(parameters[i]), f.load_, jacobians != nullptr);
+      shared.integrator_.integrate(to_disc(parameters[i]), f.load_, jacobians != nullptr);
       ranges_.emplace_back(begin, f.load_.triangles.size());
     }
-    f.predictor_.predict(f.load_.triangles, f.load_.local_S, f.sensor_.drive_voltage_V, f.frame_);
-    const MeasurementSet& m = f.measurements_;
+    f.predictor_.predict(f.load_.triangles, f.load_.local_S, shared.sensor_.drive_voltage_V, f.frame_);
+    const MeasurementSet& m = shared.measurements_;
     bool finite = true;
     for (int r = 0; r < m.size(); ++r) {
-      residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / f.noise_V_;
+      residuals[r] = (f.frame_.data()[m.frame_index[r]] - dV_[r]) / shared.noise_V_;
       finite = finite && std::isfinite(residuals[r]);
     }
     if (!finite) return false;  // a step too far: Ceres shrinks it
@@ -71,7 +72,7 @@ class FrameMisfit : public ceres::CostFunction {
           direction_[t] = j == 3 ? f.load_.local_S[t] : f.load_.d_local_S[t][j];
         f.predictor_.derivative(f.load_.triangles, direction_, d_frame_);
         for (int r = 0; r < m.size(); ++r)
-          jacobians[i][r * disc_parameters + j] = d_frame_.data()[m.frame_index[r]] / f.noise_V_;
+          jacobians[i][r * disc_parameters + j] = d_frame_.data()[m.frame_index[r]] / shared.noise_V_;
       }
     }
     return true;
@@ -96,26 +97,38 @@ FitOptions resolved_fit_options(FitOptions o, const Sensor& sensor, const Mesh& 
   return o;
 }
 
-ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+FitPrecompute::FitPrecompute(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
                              const MeasurementSet& measurements, FitOptions options)
     : sensor_(sensor),
       mesh_(mesh),
+      green_(green),
       measurements_(measurements),
       chart_box_(chart_box(mesh, sensor.shape)),
       options_(resolved_fit_options(options, sensor, mesh)),
       integrator_(mesh, options_.edge_mm, 3, sensor.shape),
-      predictor_(mesh, green),
       noise_V_(reading_noise_V(sensor.adc)) {
-  predictor_.set_series_resistance(sensor.series_resistance_ohm);
   build_atoms();
+}
+
+ContactFitter::ContactFitter(const FitPrecompute& shared) : shared_(shared), predictor_(shared.mesh_, shared.green_) {
+  predictor_.set_series_resistance(shared.sensor_.series_resistance_ohm);
+}
+
+ContactFitter::ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+                             const MeasurementSet& measurements, FitOptions options)
+    : owned_(std::make_unique<const FitPrecompute>(sensor, mesh, green, measurements, options)),
+      shared_(*owned_),
+      predictor_(mesh, green) {
+  predictor_.set_series_resistance(sensor.series_resistance_ohm);
 }
 
 /// The frames of a disc at the contact law's conductance at 0.1 N/mm² on a grid over the sheet
 /// (in units of σ), and their Gram matrix. While the contact's resistance dwarfs the sheet's, each
 /// contact draws a current of its own: a frame with several is close to a positive sum of atoms.
-void ContactFitter::build_atoms() {
+void FitPrecompute::build_atoms() {
   const double spacing = 1.5 * options_.prior_radius_mm;  // finer than the plausible separation
   const double g = sensor_.contact.conductance_S_per_mm2(0.1);
+  ContactFitter workspace(*this);  // its predictor (the atoms are not built yet: it does not fit)
   std::vector<Vector> columns;
   // The grid's coordinates are accumulated steps, as the fits (and their recorded results) have
   // always seen them; a rounding at the far edge can only add or drop a point off the mesh.
@@ -126,7 +139,7 @@ void ContactFitter::build_atoms() {
       const Disc d{x, y, options_.prior_radius_mm, g};
       if (!chart_on_sheet(mesh_, sensor_.shape, Vector2(x, y))) continue;
       Vector column;
-      misfit({d}, Vector::Zero(measurements_.size()), column);
+      workspace.misfit({d}, Vector::Zero(measurements_.size()), column);
       columns.emplace_back(column / noise_V_);
       atom_discs_.push_back(d);
     }
@@ -143,7 +156,7 @@ void ContactFitter::build_atoms() {
 /// more (the greedy first choice is often between two presses). The explained sum of squares of
 /// a set S is bᵀ_S G_S⁻¹ b_S, G the atoms' Gram matrix: a solve of at most max_contacts unknowns.
 /// \return false if no such set has all weights positive.
-bool ContactFitter::best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const {
+bool FitPrecompute::best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const {
   const Vector b = atoms_.transpose() * target;
   const double min_separation = plausible_separation_mm();
   const auto atoms = static_cast<Index>(atom_discs_.size());
@@ -208,23 +221,24 @@ bool ContactFitter::best_atom_set(const Vector& target, int count, std::vector<D
 
 Frame ContactFitter::predict(const std::vector<Disc>& discs) {
   load_.clear();
-  for (const Disc& d : discs) integrator_.integrate(d, load_);
-  predictor_.predict(load_.triangles, load_.local_S, sensor_.drive_voltage_V, frame_);
+  for (const Disc& d : discs) shared_.integrator_.integrate(d, load_);
+  predictor_.predict(load_.triangles, load_.local_S, shared_.sensor_.drive_voltage_V, frame_);
   return frame_;
 }
 
 void ContactFitter::misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out) {
   predict(discs);
-  out.resize(measurements_.size());
-  for (int i = 0; i < measurements_.size(); ++i) out[i] = frame_.data()[measurements_.frame_index[i]] - dV[i];
+  const MeasurementSet& m = shared_.measurements_;
+  out.resize(m.size());
+  for (int i = 0; i < m.size(); ++i) out[i] = frame_.data()[m.frame_index[i]] - dV[i];
 }
 
 /// The distance between two discs' centres on the sheet (in 3D: a chord on a curved one).
-double ContactFitter::separation_mm(const Disc& a, const Disc& b) const {
+double FitPrecompute::separation_mm(const Disc& a, const Disc& b) const {
   return (surface_point_mm(sensor_.shape, {a.x_mm, a.y_mm}) - surface_point_mm(sensor_.shape, {b.x_mm, b.y_mm})).norm();
 }
 
-Disc ContactFitter::clamp_seed(Disc seed) const {
+Disc FitPrecompute::clamp_seed(Disc seed) const {
   seed.x_mm = std::clamp(seed.x_mm, chart_box_.min().x(), chart_box_.max().x());
   seed.y_mm = is_sleeve(sensor_.shape) ? wrapped_chart_mm(sensor_.shape, {seed.x_mm, seed.y_mm}).y()
                                        : std::clamp(seed.y_mm, chart_box_.min().y(), chart_box_.max().y());
@@ -238,7 +252,7 @@ Disc ContactFitter::clamp_seed(Disc seed) const {
 /// A set of discs is presses only if every disc is on the sheet (one pushed off it is the
 /// optimiser using it as a fudge) and none is beside another: two small discs side by side are
 /// one large press, modelled by two (the held radius is smaller than most presses).
-bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
+bool FitPrecompute::plausible_set(const std::vector<Disc>& discs) const {
   for (std::size_t i = 0; i < discs.size(); ++i) {
     if (!chart_on_sheet(mesh_, sensor_.shape, Vector2(discs[i].x_mm, discs[i].y_mm))) return false;
     for (std::size_t j = 0; j < i; ++j)
@@ -250,10 +264,10 @@ bool ContactFitter::plausible_set(const std::vector<Disc>& discs) const {
 /// The misfit is the noise's (within a bound on χ²), or what it has beyond the noise is the
 /// model's error: a small fraction of the frame's energy, as a press's shape departs from a held
 /// disc in proportion to its frame. A missed press leaves a larger fraction (FitOptions).
-bool ContactFitter::explained(double misfit_sq, const Vector& dV) const {
+bool FitPrecompute::explained(double misfit_sq, const Vector& dV) const {
   const double noise_sq = noise_V_ * noise_V_ * measurements_.size();
-  if (misfit_sq <= noise_chi2_per_measurement * noise_sq) return true;
-  const double fraction = model_error_rms_fraction;
+  if (misfit_sq <= ContactFitter::noise_chi2_per_measurement * noise_sq) return true;
+  const double fraction = ContactFitter::model_error_rms_fraction;
   return misfit_sq - noise_sq <= fraction * fraction * dV.squaredNorm();
 }
 
@@ -262,7 +276,7 @@ bool ContactFitter::explained(double misfit_sq, const Vector& dV) const {
 /// the noise. Computed here from the analytic Jacobian rather than by ceres::Covariance, whose
 /// Eigen temporaries cross the library boundary (and an ASan build's allocator with them).
 void ContactFitter::parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2) {
-  const int k = static_cast<int>(parameters.size()), M = measurements_.size();
+  const int k = static_cast<int>(parameters.size()), M = shared_.measurements_.size();
   const FrameMisfit cost(*this, dV, k);
   Vector residuals(M);
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, disc_parameters, Eigen::RowMajor>>
@@ -297,14 +311,14 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
   for (auto& p : parameters) blocks.push_back(p.data());
   problem.AddResidualBlock(new FrameMisfit(*this, dV, k), nullptr, blocks);
   for (double* p : blocks) {
-    problem.SetParameterLowerBound(p, 0, chart_box_.min().x());
-    problem.SetParameterUpperBound(p, 0, chart_box_.max().x());
-    if (!is_sleeve(sensor_.shape)) {  // around a sleeve the chart is periodic: no bound
-      problem.SetParameterLowerBound(p, 1, chart_box_.min().y());
-      problem.SetParameterUpperBound(p, 1, chart_box_.max().y());
+    problem.SetParameterLowerBound(p, 0, shared_.chart_box_.min().x());
+    problem.SetParameterUpperBound(p, 0, shared_.chart_box_.max().x());
+    if (!is_sleeve(shared_.sensor_.shape)) {  // around a sleeve the chart is periodic: no bound
+      problem.SetParameterLowerBound(p, 1, shared_.chart_box_.min().y());
+      problem.SetParameterUpperBound(p, 1, shared_.chart_box_.max().y());
     }
     // g within six decades of the contact law's at 0.1 N/mm²: keeps exp(log g) finite.
-    const double log_g = std::log(sensor_.contact.conductance_S_per_mm2(0.1));
+    const double log_g = std::log(shared_.sensor_.contact.conductance_S_per_mm2(0.1));
     problem.SetParameterLowerBound(p, 3, log_g - 14);
     problem.SetParameterUpperBound(p, 3, log_g + 14);
     problem.SetManifold(p, new ceres::SubsetManifold(disc_parameters, {2}));  // the radius is held
@@ -321,9 +335,9 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
 
   for (int i = 0; i < k; ++i) {
     discs[i] = to_disc(parameters[i].data());
-    discs[i].y_mm = wrapped_chart_mm(sensor_.shape, {discs[i].x_mm, discs[i].y_mm}).y();
+    discs[i].y_mm = wrapped_chart_mm(shared_.sensor_.shape, {discs[i].x_mm, discs[i].y_mm}).y();
   }
-  return 2 * summary.final_cost * noise_V_ * noise_V_;
+  return 2 * summary.final_cost * shared_.noise_V_ * shared_.noise_V_;
 }
 
 /// Two starts for one more contact at `seed`: the fitted discs as they are plus the seed, and a
@@ -333,17 +347,17 @@ double ContactFitter::fit_discs(const Vector& dV, std::vector<Disc>& discs) {
 /// sits beside it. Mirrored, the pair starts near both presses.
 void ContactFitter::add_starts(const std::vector<Disc>& discs, const Disc& seed,
                                std::vector<std::vector<Disc>>& starts) const {
-  const Disc added = clamp_seed(seed);
+  const Disc added = shared_.clamp_seed(seed);
   starts.push_back(discs);
   starts.back().push_back(added);
-  const auto distance = [&](const Disc& d) { return separation_mm(d, added); };
+  const auto distance = [&](const Disc& d) { return shared_.separation_mm(d, added); };
   const auto nearest = std::min_element(discs.begin(), discs.end(),
                                         [&](const Disc& a, const Disc& b) { return distance(a) < distance(b); });
   // Mirrored less than the plausible separation apart, the pair would be one press anyway.
-  if (2 * distance(*nearest) < plausible_separation_mm()) return;
+  if (2 * distance(*nearest) < shared_.plausible_separation_mm()) return;
   std::vector<Disc> split = starts.back();
   Disc& moved = split[static_cast<std::size_t>(nearest - discs.begin())];
-  moved = clamp_seed(
+  moved = shared_.clamp_seed(
       {2 * moved.x_mm - added.x_mm, 2 * moved.y_mm - added.y_mm, moved.radius_mm, moved.conductance_S_per_mm2});
   starts.push_back(std::move(split));
 }
@@ -354,9 +368,9 @@ bool ContactFitter::fit_best_start(const Vector& dV, std::vector<std::vector<Dis
                                    double& best_sq) {
   bool found = false;
   for (std::vector<Disc>& start : starts) {
-    if (!plausible_set(start)) continue;  // a seed beside a contact: not worth a fit
+    if (!shared_.plausible_set(start)) continue;  // a seed beside a contact: not worth a fit
     const double sq = fit_discs(dV, start);
-    if (plausible_set(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
+    if (shared_.plausible_set(start) && (!found || sq < best_sq)) best = std::move(start), best_sq = sq, found = true;
   }
   return found;
 }
@@ -367,14 +381,14 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
   parameters.reserve(discs.size());
   for (const Disc& d : discs) parameters.push_back(to_parameters(d));
   covariance_std_.assign(static_cast<std::size_t>(disc_parameters * discs.size()), 0.0);
-  parameter_std(dV, parameters, misfit_sq / (noise_V_ * noise_V_));
-  result_.rms_misfit_V = std::sqrt(misfit_sq / measurements_.size());
+  parameter_std(dV, parameters, misfit_sq / (shared_.noise_V_ * shared_.noise_V_));
+  result_.rms_misfit_V = std::sqrt(misfit_sq / shared_.measurements_.size());
   for (std::size_t i = 0; i < discs.size(); ++i) {
     const double* s = covariance_std_.data() + disc_parameters * i;
     // r = e^ρ: σ_r = r σ_ρ; σ_g/g = σ_log g.
-    const double pressure = sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
+    const double pressure = shared_.sensor_.contact.pressure_N_per_mm2(discs[i].conductance_S_per_mm2);
     result_.contacts.push_back({discs[i], s[0], s[1], discs[i].radius_mm * s[2], s[3], pressure,
-                                pressure * s[3] / std::abs(sensor_.contact.gamma)});
+                                pressure * s[3] / std::abs(shared_.sensor_.contact.gamma)});
   }
   std::sort(result_.contacts.begin(), result_.contacts.end(), [](const FittedContact& a, const FittedContact& b) {
     return a.disc.conductance_S_per_mm2 * a.disc.radius_mm * a.disc.radius_mm >
@@ -388,7 +402,7 @@ void ContactFitter::finish(const Vector& dV, const std::vector<Disc>& discs, dou
 /// about as well (two discs 3–5 mm off two strong presses on the 60 mm sheet: χ²/M 3.2, the right
 /// pair's ~3); the cold fit, with its global search for the pair, decides there. One disc has no
 /// such minima: wherever it went, if it explains the frame the cold fit would agree.
-bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
+bool FitPrecompute::jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const {
   if (discs.size() < 2) return false;
   for (std::size_t i = 0; i < discs.size(); ++i)
     if (separation_mm(discs[i], previous[i]) > plausible_separation_mm()) return true;
@@ -396,17 +410,18 @@ bool ContactFitter::jumped(const std::vector<Disc>& previous, const std::vector<
 }
 
 const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>& previous) {
-  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  if (dV.size() != shared_.measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
   result_ = {};
   if (previous.empty()) return result_;
   std::vector<Disc> discs = previous;
   const double misfit_sq = fit_discs(dV, discs);
-  if (!explained(misfit_sq, dV) || !plausible_set(discs) || jumped(previous, discs)) return result_;
+  if (!shared_.explained(misfit_sq, dV) || !shared_.plausible_set(discs) || shared_.jumped(previous, discs))
+    return result_;
   // A lifted finger: its disc fades to nothing the readings can see.
   for (const Disc& d : discs) {
-    zeros_.setZero(measurements_.size());
+    zeros_.setZero(shared_.measurements_.size());
     misfit({d}, zeros_, residual_);
-    if (residual_.cwiseAbs().maxCoeff() < 5 * noise_V_) return result_;
+    if (residual_.cwiseAbs().maxCoeff() < 5 * shared_.noise_V_) return result_;
   }
   result_.tracked = true;
   finish(dV, discs, misfit_sq);
@@ -415,17 +430,17 @@ const FitResult& ContactFitter::track(const Vector& dV, const std::vector<Disc>&
 
 const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& seeds,
                                     const std::function<bool(const Vector&, Disc&)>& residual_peak) {
-  if (dV.size() != measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
+  if (dV.size() != shared_.measurements_.size()) throw InvalidInput("fit: one value per measurement is needed");
   result_ = {};
   // No contact at all already explains the frame (the rule every further contact answers to):
   // the linear image of noise always has a peak to seed from, and a faint disc at the border
   // would "explain" it.
-  if (explained(dV.squaredNorm(), dV)) {
-    result_.rms_misfit_V = std::sqrt(dV.squaredNorm() / static_cast<double>(measurements_.size()));
+  if (shared_.explained(dV.squaredNorm(), dV)) {
+    result_.rms_misfit_V = std::sqrt(dV.squaredNorm() / static_cast<double>(shared_.measurements_.size()));
     return result_;
   }
   if (seeds.empty()) return result_;
-  std::vector<Disc> discs{clamp_seed(seeds[0])};
+  std::vector<Disc> discs{shared_.clamp_seed(seeds[0])};
   double misfit_sq = fit_discs(dV, discs);
   std::size_t next_seed = 1;
   Vector residual;
@@ -442,20 +457,20 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
     const int k = static_cast<int>(discs.size());
     std::vector<Disc> set;
     if (stage == 0) {
-      if (best_atom_set(dV / noise_V_, k + 1, set)) {
-        for (Disc& d : set) d = clamp_seed(d);
+      if (shared_.best_atom_set(dV / shared_.noise_V_, k + 1, set)) {
+        for (Disc& d : set) d = shared_.clamp_seed(d);
         starts.push_back(std::move(set));
       }
       this->misfit(discs, dV, residual);
       std::vector<Disc> one;
-      if (best_atom_set(-residual / noise_V_, 1, one)) add_starts(discs, one[0], starts);
+      if (shared_.best_atom_set(-residual / shared_.noise_V_, 1, one)) add_starts(discs, one[0], starts);
       Disc seed;
       if (residual_peak && residual_peak(residual, seed)) add_starts(discs, seed, starts);
     } else if (stage <= 2) {
       // Only where the contacts leave more than a press's model error: several presses missed.
-      if (k + stage + 1 <= options_.max_contacts && !explained(misfit_sq, dV) &&
-          best_atom_set(dV / noise_V_, k + stage + 1, set)) {
-        for (Disc& d : set) d = clamp_seed(d);
+      if (k + stage + 1 <= shared_.options_.max_contacts && !shared_.explained(misfit_sq, dV) &&
+          shared_.best_atom_set(dV / shared_.noise_V_, k + stage + 1, set)) {
+        for (Disc& d : set) d = shared_.clamp_seed(d);
         starts.push_back(std::move(set));
       }
     } else if (next_seed < seeds.size()) {
@@ -472,12 +487,13 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   // It is kept if it halves the misfit (a quarter for two more, an eighth for three) and the set
   // lies on the sheet, its discs apart; a contact the frame cannot place is dropped afterwards.
   int failed = 0;  // the caller's seeds cost a few fits each: give up after a few
-  const double noise_sq = noise_V_ * noise_V_ * measurements_.size();
-  const double beyond_noise_sq = noise_V_ * noise_V_ * 4 * std::sqrt(2.0 * measurements_.size());
+  const double noise_sq = shared_.noise_V_ * shared_.noise_V_ * shared_.measurements_.size();
+  const double beyond_noise_sq =
+      shared_.noise_V_ * shared_.noise_V_ * 4 * std::sqrt(2.0 * shared_.measurements_.size());
   const auto another = [&] {
-    return !explained(misfit_sq, dV) || (discs.size() >= 2 && misfit_sq > noise_sq + beyond_noise_sq);
+    return !shared_.explained(misfit_sq, dV) || (discs.size() >= 2 && misfit_sq > noise_sq + beyond_noise_sq);
   };
-  while (static_cast<int>(discs.size()) < options_.max_contacts && another() && failed < 3 && next_starts()) {
+  while (static_cast<int>(discs.size()) < shared_.options_.max_contacts && another() && failed < 3 && next_starts()) {
     if (starts.empty()) continue;
     std::vector<Disc> more;
     double more_sq = 0;
@@ -498,7 +514,7 @@ const FitResult& ContactFitter::fit(const Vector& dV, const std::vector<Disc>& s
   for (bool dropped = true; dropped && discs.size() > 1;) {
     dropped = false;
     for (const FittedContact& c : result_.contacts)
-      if (std::max(c.x_std_mm, c.y_std_mm) > plausible_separation_mm()) {
+      if (std::max(c.x_std_mm, c.y_std_mm) > shared_.plausible_separation_mm()) {
         const auto it = std::find_if(discs.begin(), discs.end(),
                                      [&](const Disc& d) { return d.x_mm == c.disc.x_mm && d.y_mm == c.disc.y_mm; });
         if (it == discs.end()) continue;

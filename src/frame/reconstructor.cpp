@@ -38,25 +38,27 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
   if (test) floor_ = difference_noise_V(model.reading_noise_V, 1) * noise_per_volt_;
 }
 
-Reconstructor::Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
-                             FrameOptions options)
+Reconstructor::Reconstructor(const ReconstructionModel& model, const FitPrecompute& fit,
+                             const FitCalibration& calibration, FrameOptions options)
     : Reconstructor(model, model.uncalibrated, options) {
-  fitter_ = &fitter;
+  fitter_.emplace(fit);
   indenter_radius_mm_ = calibration.indenter_radius_mm;
   gamma_ = calibration.contact_law.gamma;
 }
 
-void Reconstructor::set_reference(const Frame& reference, int frames_averaged) {
+void Reconstructor::set_reference(const Reference& reference) {
   const int N = model_.measurements.electrode_count;
-  if (reference.rows() != N || reference.cols() != N)
-    throw InvalidInput("reference frame has " + std::to_string(reference.size()) + " values, expected " +
+  const Frame& frame = reference.frame;
+  if (frame.rows() != N || frame.cols() != N)
+    throw InvalidInput("reference frame has " + std::to_string(frame.size()) + " values, expected " +
                        std::to_string(N * N));
-  if (!reference.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
-  for (int i = 0; i < model_.measurements.size(); ++i)
-    reference_[i] = reference.data()[model_.measurements.frame_index[i]];
+  if (!frame.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
+  if (!(reference.frames >= 1))
+    throw InvalidInput("reference: it stands for " + std::to_string(reference.frames) + " frames, at least 1 expected");
+  for (int i = 0; i < model_.measurements.size(); ++i) reference_[i] = frame.data()[model_.measurements.frame_index[i]];
   previous_discs_.clear();  // a new reference starts a new stream
   if (noise_per_volt_.size() == floor_.size())
-    floor_ = difference_noise_V(model_.reading_noise_V, frames_averaged) * noise_per_volt_;
+    floor_ = difference_noise_V(model_.reading_noise_V, reference.frames) * noise_per_volt_;
 }
 
 const std::vector<Contact>& Reconstructor::process(const FrameView& frame) {
@@ -139,50 +141,6 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
   }
   return fitted_;
-}
-
-namespace {
-
-/// Which frames average_frames keeps (see there).
-std::vector<bool> frames_kept(const std::vector<Frame>& frames) {
-  if (frames.empty()) throw InvalidInput("no frames to average");
-  for (const Frame& f : frames)
-    if (f.rows() != frames[0].rows() || f.cols() != frames[0].cols()) throw InvalidInput("frames of different sizes");
-  std::vector<bool> kept(frames.size(), true);
-  if (frames.size() < 3) return kept;
-  Frame median(frames[0].rows(), frames[0].cols());
-  std::vector<double> values(frames.size());
-  for (Index i = 0; i < median.size(); ++i) {
-    for (std::size_t f = 0; f < frames.size(); ++f) values[f] = frames[f].data()[i];
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    median.data()[i] = *middle;
-  }
-  std::vector<double> distance(frames.size());
-  for (std::size_t f = 0; f < frames.size(); ++f) distance[f] = (frames[f] - median).norm();
-  std::vector<double> sorted = distance;
-  const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-  std::nth_element(sorted.begin(), middle, sorted.end());
-  // Pure noise frames' distances agree within a few % (χ with M degrees of freedom), so 3× the
-  // median distance leaves them all in and takes out a frame three times as noisy or worse.
-  for (std::size_t f = 0; f < frames.size(); ++f) kept[f] = !(distance[f] > 3 * *middle);
-  return kept;
-}
-
-}  // namespace
-
-int frames_averaged(const std::vector<Frame>& frames) {
-  const std::vector<bool> kept = frames_kept(frames);
-  return static_cast<int>(std::count(kept.begin(), kept.end(), true));
-}
-
-Frame average_frames(const std::vector<Frame>& frames) {
-  const std::vector<bool> kept = frames_kept(frames);
-  Frame mean = Frame::Zero(frames[0].rows(), frames[0].cols());
-  int count = 0;
-  for (std::size_t f = 0; f < frames.size(); ++f)
-    if (kept[f]) mean += frames[f], ++count;
-  return mean / static_cast<double>(count);
 }
 
 }  // namespace emit

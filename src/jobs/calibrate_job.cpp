@@ -50,7 +50,7 @@ PressCalibrationResult calibrate_presses(const CalibrateJob& job, const Progress
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
   const int N = electrode_count_of(sensor);
-  const Frame reference = detail::read_reference(job.reference_path, sensor, N, progress);
+  const Reference reference = detail::read_reference(job.reference_path, sensor, N, progress);
   const std::vector<Frame> frames = read_frames_csv(job.frames_path, N);
   for (std::size_t f = 0; f < frames.size(); ++f)
     check_readings_in_range(frames[f], sensor.adc, job.frames_path + ": frame " + std::to_string(f));

@@ -39,8 +39,8 @@ DemoReport run_demo_reconstruction(const std::string& out_dir, const std::string
   auto start = std::chrono::steady_clock::now();
   progress.say("the twin records a reference, 20 presses of known force and the frames to reconstruct");
   Twin twin(sensor);
-  const Frame reference = twin.frame({});
-  PressStyle style;  // 5 mm indenter, 2 to 39 N: 0.025 to 0.5 N/mm², the paper's range
+  const Reference reference{twin.frame({}), 1};  // one untouched frame
+  PressStyle style;                              // 5 mm indenter, 2 to 39 N: 0.025 to 0.5 N/mm², the paper's range
   style.min_force_N = 2, style.max_force_N = 39, style.seed = 11;
   const PressSequence calibration_presses = random_script(sensor, 20, style);
   std::vector<Frame> calibration_frames, frames;

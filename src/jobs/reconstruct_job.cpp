@@ -93,7 +93,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
 
   // The frames before anything is built or written: a bad value stops the run with nothing lost.
   const int N = electrode_count_of(sensor);
-  const Frame reference = detail::read_reference(job.reference_path, sensor, N, progress);
+  const Reference reference = detail::read_reference(job.reference_path, sensor, N, progress);
   const FramesSurvey survey = survey_frames(job.frames_path, sensor, N);
   ReconstructReport report;
   PipelineOptions options{job.method, job.lambda2, job.cache_dir, {}};
@@ -139,8 +139,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     const std::size_t count = chunk.size();
     check_no_stuck_rows(chunk, sensor.adc, options.excluded, job.frames_path, first);
     if (batch) {
-      const auto contacts =
-          reconstruct_batch(model, pipeline.linear_calibration(), frame_options, reference, chunk, job.threads);
+      const auto contacts = pipeline.reconstruct_batch(frame_options, reference, chunk, job.threads);
       for (std::size_t f = 0; f < count; ++f)
         write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts[f], -1);
     } else {

@@ -116,7 +116,7 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
 DdsPublisher::~DdsPublisher() = default;
 
 void DdsPublisher::publish(const LiveFrame& frame) {
-  if (frame.capturing_baseline || frame.volts == nullptr) return;
+  if (frame.capturing_reference || frame.volts == nullptr) return;
   Impl& s = *impl_;
   const Ros2Stamp stamp = Ros2Stamp::from_ns(unix_time_ns());
   const std_msgs_msg_dds__Header_ header{{stamp.sec, stamp.nanosec}, s.frame_id.data()};

@@ -19,7 +19,7 @@ LiveLoop::LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& o
     : source_(source),
       options_(options),
       reconstructor_(pipeline.reconstructor(options.frame)),
-      baseline_(options.baseline),
+      reference_(options.reference),
       no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {
   if (options.poll.count() <= 0) throw InvalidInput("live: the poll interval must be positive");
   if (!(options.max_seconds >= 0)) throw InvalidInput("live: the time limit must be 0 (none) or positive");
@@ -46,7 +46,7 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
 }
 
 const std::vector<Contact>* LiveLoop::step() {
-  if (recapture_requested_.exchange(false)) baseline_.recapture();
+  if (recapture_requested_.exchange(false)) reference_.recapture();
   return source_.next(frame_, options_.poll) ? handle(frame_) : nullptr;
 }
 
@@ -58,17 +58,17 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   out.sequence = frame.sequence;
   out.volts = &frame.volts;
   if (recorder_) recorder_->record(frame.raw);
-  if (baseline_.capturing()) {
-    if (baseline_.capture(frame.volts)) reconstructor_.set_reference(baseline_.reference());
+  if (reference_.capturing()) {
+    if (reference_.capture(frame.volts)) reconstructor_.set_reference(reference_.reference());
     ++stats_.capture_frames;
-    out.capturing_baseline = true;
+    out.capturing_reference = true;
     out.contacts = &no_contacts_;
     out.pressure_N_per_mm2 = &no_pressure_;
     publish(out);
     return nullptr;
   }
   const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
-  if (baseline_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(baseline_.reference());
+  if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
   if (contacts_out_) {
     const FitResult* fitted = reconstructor_.fit_result();
     write_contacts_line(*contacts_out_, static_cast<long>(frame.sequence), contacts,
@@ -100,7 +100,7 @@ void LiveLoop::publish(LiveFrame& frame) {
   previous_publish_ = now;
   frame.frames_per_s = mean_interval_s_ > 0 ? 1 / mean_interval_s_ : 0;
   frame.latency_s = last_latency_s_;
-  frame.baseline_captures = baseline_.captures();
+  frame.reference_captures = reference_.captures();
   for (FramePublisher* publisher : publishers_) publisher->publish(frame);
 }
 

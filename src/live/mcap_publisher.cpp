@@ -8,7 +8,7 @@ McapPublisher::McapPublisher(std::string path, const std::string& sensor_name, c
     : mcap_(std::move(path), sensor_name, mesh, unix_time_ns()) {}
 
 void McapPublisher::publish(const LiveFrame& frame) {
-  if (frame.capturing_baseline || frame.volts == nullptr) return;
+  if (frame.capturing_reference || frame.volts == nullptr) return;
   mcap_.write(frame.sequence, unix_time_ns(), frame_view(*frame.volts), *frame.contacts, *frame.pressure_N_per_mm2);
 }
 

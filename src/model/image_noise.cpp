@@ -8,8 +8,8 @@
 
 namespace emit {
 
-double difference_noise_V(double reading_noise_V, int reference_frames) {
-  return reading_noise_V * std::sqrt(1.0 + 1.0 / std::max(reference_frames, 1));
+double difference_noise_V(double reading_noise_V, double reference_frames) {
+  return reading_noise_V * std::sqrt(1.0 + 1.0 / std::max(reference_frames, 1.0));
 }
 
 double significance_sigmas(Index elements, double false_alarm_rate) {

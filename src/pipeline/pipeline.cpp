@@ -60,12 +60,34 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
   fit_model_ = std::make_unique<FitModel>(
       build_fit_model(sensor, fit_calibration_.sheet_correction ? &*fit_calibration_.sheet_correction : nullptr,
                       progress, fit_calibration_.electrode_shift_mm));
-  fitter_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
+  fit_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
 }
 
-Reconstructor Pipeline::reconstructor(const FrameOptions& options) {
-  if (fitter_) return Reconstructor(model_, *fitter_, fit_calibration_, options);
+Reconstructor Pipeline::reconstructor(const FrameOptions& options) const {
+  if (fit_) return Reconstructor(model_, *fit_, fit_calibration_, options);
   return Reconstructor(model_, linear_, options);
+}
+
+namespace {
+
+FrameOptions independent_frames(FrameOptions options) {
+  options.track_contacts = false;
+  return options;
+}
+
+}  // namespace
+
+std::vector<std::vector<Contact>> Pipeline::reconstruct_batch(const FrameOptions& options, const Reference& reference,
+                                                              const std::vector<Frame>& frames, int threads) const {
+  const FrameOptions independent = independent_frames(options);
+  return emit::reconstruct_batch([&] { return reconstructor(independent); }, reference, frames, threads);
+}
+
+std::vector<std::vector<Contact>> Pipeline::reconstruct_batch(const FrameOptions& options, const Reference& reference,
+                                                              std::span<const double> frames_volts, int threads) const {
+  const FrameOptions independent = independent_frames(options);
+  return emit::reconstruct_batch([&] { return reconstructor(independent); }, reference, frames_volts,
+                                 model_.measurements.electrode_count, threads);
 }
 
 }  // namespace emit

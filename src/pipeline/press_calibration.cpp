@@ -16,7 +16,7 @@ namespace {
 
 /// Contact fitting's calibration: the sheet (if asked), then the contact law on the corrected sheet.
 PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibrationOptions& options,
-                                         const ReconstructionModel& model, const Frame& reference,
+                                         const ReconstructionModel& model, const Reference& reference,
                                          const std::vector<Frame>& frames, const PressSequence& truth,
                                          const std::function<void(const std::string&)>& say) {
   std::vector<Frame> single;
@@ -37,8 +37,8 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
   FitModel fit_model{fit_mesh(sensor), {}};
   Sensor calibrated = sensor;
   if (options.fit_sheet) {
-    result.sheet =
-        calibrate_sensor(sensor, fit_model.mesh, model.measurements, frames, reference, truth, options.sensor, say);
+    result.sheet = calibrate_sensor(sensor, fit_model.mesh, model.measurements, frames, reference.frame, truth,
+                                    options.sensor, say);
     calibration.sheet_correction = result.sheet->correction;
     calibration.drive_voltage_V = result.sheet->drive_voltage_V;
     calibration.series_resistance_ohm = result.sheet->series_resistance_ohm;
@@ -52,11 +52,11 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
   if (say) say("Green's function (" + std::to_string(fit_model.mesh.node_count()) + " nodes)");
   fit_model.green = fit_green_function(fit_model.mesh, sensor,
                                        calibration.sheet_correction ? &*calibration.sheet_correction : nullptr);
-  ContactFitter fitter(calibrated, fit_model.mesh, fit_model.green, model.measurements);
+  const FitPrecompute fit(calibrated, fit_model.mesh, fit_model.green, model.measurements);
   FrameOptions frame_options;
   frame_options.threshold_fraction = options.threshold_fraction;
   const FittedLawCalibration fitted =
-      calibrate_fitted_contact_law(model, fitter, reference, single, pressures, sensor.contact, frame_options);
+      calibrate_fitted_contact_law(model, fit, reference, single, pressures, sensor.contact, frame_options);
   calibration.contact_law = fitted.law;
   result.calibration = calibration;
   result.presses = fitted.presses;
@@ -68,7 +68,7 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
 }  // namespace
 
 PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressCalibrationOptions& options,
-                                              const Frame& reference, const std::vector<Frame>& frames,
+                                              const Reference& reference, const std::vector<Frame>& frames,
                                               const PressSequence& truth,
                                               const std::function<void(const std::string&)>& progress) {
   if (truth.size() != frames.size())

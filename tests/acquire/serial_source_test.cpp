@@ -116,9 +116,9 @@ TEST(SerialEndToEnd, TwinFramesCrossAPtyAndReconstructToThePresses) {
 
   const ReconstructionModel model = build_reconstruction_model(sensor, operator_options(Method::paper), "");
   const FitModel fit_model = build_fit_model(sensor);
-  ContactFitter fitter(sensor, fit_model.mesh, fit_model.green, model.measurements);
-  Reconstructor reconstructor(model, fitter, FitCalibration::uncalibrated(sensor));
-  reconstructor.set_reference(frames[0].volts);  // the first untouched frame
+  const FitPrecompute fit(sensor, fit_model.mesh, fit_model.green, model.measurements);
+  Reconstructor reconstructor(model, fit, FitCalibration::uncalibrated(sensor));
+  reconstructor.set_reference({frames[0].volts, 1});  // the first untouched frame
   for (std::size_t k = 1; k < frames.size(); ++k) {
     const std::vector<Contact>& contacts = reconstructor.process(frames[k].volts);
     double force_N = 0;

@@ -43,7 +43,7 @@ SensorCalibration calibrate(const Sheet30& s, const SimulatedRun& run) {
   SensorCalibrationOptions sheet_only;
   sheet_only.sheet_terms = SheetCorrection::quadratic_terms;
   sheet_only.fit_series_resistance = sheet_only.fit_drive_voltage = sheet_only.fit_electrode_positions = false;
-  return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses, sheet_only);
+  return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference.frame, run.presses, sheet_only);
 }
 
 TEST(SheetCalibration, RecoversTheTwinsResistanceGradient) {
@@ -134,7 +134,7 @@ TEST(SensorCalibration, RecoversTheSeriesResistances) {
     SensorCalibrationOptions only;
     only.sheet_terms = SheetCorrection::quadratic_terms;
     only.fit_drive_voltage = only.fit_electrode_positions = false;
-    return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference, run.presses, only);
+    return calibrate_sensor(s.sensor, s.mesh, s.measurements, run.frames, run.reference.frame, run.presses, only);
   };
   const SensorCalibration with = fitted(truth), without = fitted({});
   double worst = 0;

@@ -27,7 +27,7 @@ TEST(CylinderFit, SleeveFitsPressesAllRoundAndAcrossTheSeam) {
   Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
   Reconstructor reconstructor = pipeline.reconstructor();
   const Twin twin(sensor);
-  reconstructor.set_reference(twin.exact_frame({}));
+  reconstructor.set_reference({twin.exact_frame({}), 1});
   const double round_mm = 2 * std::numbers::pi * 15;
   for (const double v : {round_mm / 2, round_mm / 4, 0.0, 1.5, round_mm - 1.5}) {
     const Press press = press_at(sensor.shape, {22, v});
@@ -60,8 +60,8 @@ TEST(CylinderFit, APatchFitsWhereItsUnrolledRectangleFits) {
   Pipeline on_patch(patch, {Method::fit, 0, "", {}}), on_flat(flat, {Method::fit, 0, "", {}});
   Reconstructor patch_fit = on_patch.reconstructor(), flat_fit = on_flat.reconstructor();
   const Twin patch_twin(patch), flat_twin(flat);
-  patch_fit.set_reference(patch_twin.exact_frame({}));
-  flat_fit.set_reference(flat_twin.exact_frame({}));
+  patch_fit.set_reference({patch_twin.exact_frame({}), 1});
+  flat_fit.set_reference({flat_twin.exact_frame({}), 1});
   for (const Vector2& c : {Vector2(30, 20.9), Vector2(12, 8), Vector2(47, 33)}) {
     const auto& on_the_patch = patch_fit.process(patch_twin.exact_frame({press_at(patch.shape, c)}));
     const auto& on_the_rectangle = flat_fit.process(flat_twin.exact_frame({press_at(flat.shape, c)}));

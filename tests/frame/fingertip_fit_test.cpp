@@ -28,7 +28,7 @@ TEST(FingertipFit, PressesAreFoundWhereTheyAreOnTheCadSkin) {
   Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
   Reconstructor reconstructor = pipeline.reconstructor();
   const Twin twin(sensor);
-  reconstructor.set_reference(twin.exact_frame({}));
+  reconstructor.set_reference({twin.exact_frame({}), 1});
   for (const Vector2& c : {Vector2(0, 0), Vector2(-8, 4), Vector2(5, -3), Vector2(-11, -5), Vector2(3, 4.5)}) {
     const Press press = press_at_chart(sensor.shape, c, 2.5, 2);
     const Vector3 p(press.x_mm, press.y_mm, press.z_mm);

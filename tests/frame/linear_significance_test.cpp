@@ -1,6 +1,6 @@
 // The linear methods' contacts only where the image stands out from its noise
 // (FrameOptions::false_alarm_rate, model/image_noise.hpp), and the reference averaged robustly
-// (average_frames).
+// (average_reference, frame/reference.hpp).
 #include <cmath>
 #include <random>
 
@@ -51,8 +51,8 @@ TEST(LinearSignificance, NoContactOnPureNoiseFrames) {
   for (int f = 0; f < frames; ++f) {
     if (f % 15 == 0) {  // a fresh single-frame reference every 15 frames: ten references
       const Frame reference = twin.frame({});
-      tested.set_reference(reference, 1);
-      untested.set_reference(reference, 1);
+      tested.set_reference({reference, 1});
+      untested.set_reference({reference, 1});
     }
     const Frame frame = twin.frame({});
     with_contact += !tested.process(frame).empty();
@@ -78,7 +78,7 @@ TEST(LinearSignificance, WeakPressesAboveTheNoiseAreFound) {
   std::vector<Frame> references;
   references.reserve(10);
   for (int i = 0; i < 10; ++i) references.push_back(twin.frame({}));
-  reconstructor.set_reference(average_frames(references), 10);
+  reconstructor.set_reference(average_reference(references));
   int weak_found = 0;
   for (int step = 0; 0.6 / std::pow(1.2, step) > 0.1; ++step) {  // 0.6 N down by 1.2 a step
     const double force_N = 0.6 / std::pow(1.2, step);
@@ -107,14 +107,14 @@ TEST(ReferenceAverage, OneVeryNoisyFrameIsLeftOut) {
     std::vector<Frame> frames(10, Frame(16, 16));
     for (Frame& f : frames)
       for (Index i = 0; i < f.size(); ++i) f.data()[i] = 0.05 + adc(rng);
-    EXPECT_EQ(frames_averaged(frames), 10) << seed;
+    EXPECT_EQ(average_reference(frames).frames, 10) << seed;
     Frame clean_nine = Frame::Zero(16, 16);
     for (int k = 1; k < 10; ++k) clean_nine += frames[static_cast<std::size_t>(k)] / 9.0;
     for (Index i = 0; i < frames[0].size(); ++i) frames[0].data()[i] += burst(rng);
-    EXPECT_EQ(frames_averaged(frames), 9) << seed;
-    EXPECT_LT((average_frames(frames) - clean_nine).cwiseAbs().maxCoeff(), 1e-15) << seed;
+    EXPECT_EQ(average_reference(frames).frames, 9) << seed;
+    EXPECT_LT((average_reference(frames).frame - clean_nine).cwiseAbs().maxCoeff(), 1e-15) << seed;
   }
-  EXPECT_THROW(average_frames({}), InvalidInput);
+  EXPECT_THROW(average_reference({}), InvalidInput);
 }
 
 }  // namespace

@@ -74,11 +74,11 @@ struct SmallModel {
 TEST(Reconstruction, RejectsFramesOfTheWrongSize) {
   SmallModel s;
   Reconstructor reconstructor(s.model, LinearCalibration::uncalibrated(s.sensor));
-  EXPECT_THROW(reconstructor.set_reference(Frame::Zero(8, 8)), InvalidInput);
+  EXPECT_THROW(reconstructor.set_reference({Frame::Zero(8, 8), 1}), InvalidInput);
   Frame nan_frame = Frame::Zero(16, 16);
   nan_frame(2, 3) = std::nan("");
-  EXPECT_THROW(reconstructor.set_reference(nan_frame), InvalidInput);
-  reconstructor.set_reference(Frame::Zero(16, 16));
+  EXPECT_THROW(reconstructor.set_reference({nan_frame, 1}), InvalidInput);
+  reconstructor.set_reference({Frame::Zero(16, 16), 1});
   EXPECT_THROW(reconstructor.process(Frame::Zero(32, 32)), InvalidInput);
   EXPECT_THROW(Reconstructor(s.model, LinearCalibration{}, FrameOptions{1.5, 0}), InvalidInput);
 }
@@ -91,7 +91,7 @@ TEST(Reconstruction, ProcessAllocatesNothing) {
   Twin twin(s.sensor, options);
   const Frame frame = twin.frame({{30, 30, 5, 10}, {15, 45, 4, 8}});
   Reconstructor reconstructor(s.model, LinearCalibration::uncalibrated(s.sensor));
-  reconstructor.set_reference(twin.frame({}));
+  reconstructor.set_reference({twin.frame({}), 1});
   reconstructor.process(frame);  // warm-up
   test::AllocationCounter counter;
   const auto& contacts = reconstructor.process(frame);
@@ -106,7 +106,7 @@ TEST(Reconstruction, ProcessOnTheDomeAllocatesNothingAndPlacesContactsOnTheSurfa
   Twin twin(sensor);
   const Frame frame = twin.frame({{6, -5, 4, 10}});
   Reconstructor reconstructor(model, LinearCalibration::uncalibrated(sensor));
-  reconstructor.set_reference(twin.frame({}));
+  reconstructor.set_reference({twin.frame({}), 1});
   reconstructor.process(frame);  // warm-up
   test::AllocationCounter counter;
   const auto& contacts = reconstructor.process(frame);
@@ -122,7 +122,7 @@ TEST(Reconstruction, ProcessOnTheDomeAllocatesNothingAndPlacesContactsOnTheSurfa
 TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
   SmallModel s;
   Twin twin(s.sensor);
-  const Frame reference = twin.frame({});
+  const Reference reference{twin.frame({}), 1};
   std::vector<Frame> frames;
   for (double x : {10.0, 20.0, 30.0, 40.0, 50.0}) frames.push_back(twin.frame({{x, 60 - x, 4, 10}}));
   frames.push_back(twin.frame({{15, 15, 4, 10}, {45, 45, 4, 20}}));
@@ -144,7 +144,8 @@ TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
   // The same frames as one block (a C-ordered (frames, N, N) array, read in place): the same contacts.
   std::vector<double> block;
   for (const Frame& frame : frames) block.insert(block.end(), frame.data(), frame.data() + frame.size());
-  const auto from_block = reconstruct_batch(s.model, calibration, {}, reference, std::span<const double>(block), 2);
+  const auto make = [&] { return Reconstructor(s.model, calibration); };
+  const auto from_block = reconstruct_batch(make, reference, std::span<const double>(block), 16, 2);
   ASSERT_EQ(from_block.size(), frames.size());
   for (std::size_t f = 0; f < frames.size(); ++f) {
     ASSERT_EQ(from_block[f].size(), batch[f].size()) << "frame " << f;
@@ -155,7 +156,7 @@ TEST(Reconstruction, BatchAcrossThreadsMatchesOneReconstructor) {
   EXPECT_THROW(
       {
         try {
-          reconstruct_batch(s.model, calibration, {}, reference, std::span<const double>(block), 1);
+          reconstruct_batch(make, reference, std::span<const double>(block), 16, 1);
         } catch (const InvalidInput& e) {
           EXPECT_NE(std::string(e.what()).find("not a whole number of"), std::string::npos) << e.what();
           throw;

@@ -1,4 +1,4 @@
-// The live path end to end in one process: the simulator's frames through the baseline and the
+// The live path end to end in one process: the simulator's frames through the reference and the
 // fit to contacts at the scripted presses; the server's WebSocket delivers the mesh, frames and
 // commands; a port in use is a clear error.
 #include "emit/live/live_loop.hpp"
@@ -81,6 +81,33 @@ TEST(SimSource, BadSpecsNameThemselves) {
   EXPECT_THROW(open_source("serial", sensor, unpaced()), InvalidInput);
 }
 
+// The live reference is the mean of its 10 captured frames, and the significance floor counts
+// them: σ·√(1 + 1/10), not a single frame's σ·√2 (35 % higher, what the loop used to set). Each
+// untouched frame after that moves the reference by the drift rate, and the floor follows the
+// average's count (frame/reference.hpp): 1/(0.99²/10 + 0.01²) = 10.19 frames after one.
+TEST(LiveLoop, TheSignificanceFloorCountsTheCapturedFrames) {
+  LiveBench& b = bench();
+  SimSource source(b.sensor, parse_sim_script("sim"), unpaced());  // its first 15 frames untouched
+  LiveOptions options;
+  ASSERT_EQ(options.reference.capture_frames, 10);
+  LiveLoop loop(source, b.pipeline, options);
+  for (int k = 0; k < options.reference.capture_frames; ++k) EXPECT_EQ(loop.step(), nullptr) << "capture frame " << k;
+  const auto floor_for = [&](double frames) {
+    Reconstructor r = b.pipeline.reconstructor(options.frame);
+    r.set_reference({Frame::Zero(16, 16), frames});
+    return Vector(r.significance_floor());
+  };
+  const Vector live = loop.reconstructor().significance_floor();
+  ASSERT_TRUE(live.allFinite());
+  EXPECT_EQ(live, floor_for(10));
+  EXPECT_NEAR(floor_for(1).maxCoeff() / live.maxCoeff(), std::sqrt(2 / 1.1), 1e-12);
+  ASSERT_NE(loop.step(), nullptr);  // frame 10: untouched, reconstructed, followed
+  ASSERT_TRUE(loop.last_frame().sequence < static_cast<std::uint64_t>(unpaced().untouched_frames));
+  const double r = options.reference.drift_rate;
+  EXPECT_NEAR(loop.reconstructor().significance_floor().maxCoeff() / floor_for(10).maxCoeff(),
+              std::sqrt((1 + (1 - r) * (1 - r) / 10 + r * r) / 1.1), 1e-12);
+}
+
 // The scripted figure-eight, reconstructed live by contact fitting: every pressed frame gives one
 // contact at the press, every untouched frame none; the JSON Lines carry the source's numbers.
 TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
@@ -103,17 +130,17 @@ TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
   const std::atomic<bool> stop{false};
   const LiveStats stats = loop.run(stop);
   EXPECT_EQ(stats.frames, 40u);
-  EXPECT_EQ(stats.capture_frames, static_cast<std::uint64_t>(BaselineOptions{}.capture_frames));
-  EXPECT_EQ(pressed, 40 - (unpaced().untouched_frames - BaselineOptions{}.capture_frames));
+  EXPECT_EQ(stats.capture_frames, static_cast<std::uint64_t>(ReferenceOptions{}.capture_frames));
+  EXPECT_EQ(pressed, 40 - (unpaced().untouched_frames - ReferenceOptions{}.capture_frames));
   EXPECT_EQ(stats.latency.count(), 40u);
   std::istringstream in(lines.str());
   std::string line;
-  long expected_frame = BaselineOptions{}.capture_frames, frame = -1;
+  long expected_frame = ReferenceOptions{}.capture_frames, frame = -1;
   for (; std::getline(in, line); ++expected_frame) {
     parse_contacts_line(line, &frame);
     EXPECT_EQ(frame, expected_frame);
   }
-  EXPECT_EQ(expected_frame, BaselineOptions{}.capture_frames + 40);
+  EXPECT_EQ(expected_frame, ReferenceOptions{}.capture_frames + 40);
 }
 
 // Pulled a frame at a time (step(), as the Python iterator pulls), the loop gives what run()
@@ -122,7 +149,7 @@ TEST(LiveLoop, SteppingGivesEachReconstructedFramesContacts) {
   LiveBench& b = bench();
   SimSource source(b.sensor, parse_sim_script("sim"), unpaced());
   LiveLoop loop(source, b.pipeline);
-  const int capture = BaselineOptions{}.capture_frames;
+  const int capture = ReferenceOptions{}.capture_frames;
   for (int f = 0; f < capture; ++f) {
     const std::vector<Contact>* contacts = nullptr;
     while (loop.stats().capture_frames == static_cast<std::uint64_t>(f)) contacts = loop.step();

@@ -95,7 +95,7 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   LiveFrame frame;
   frame.index = 41;
   frame.sequence = 1234;
-  frame.baseline_captures = 1;
+  frame.reference_captures = 1;
   frame.contacts = &contacts;
   frame.pressure_N_per_mm2 = &pressure;
   frame.frames_per_s = 50;

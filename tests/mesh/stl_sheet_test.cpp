@@ -71,7 +71,7 @@ TEST(StlSheet, TheFingertipAsStlHasItsElectrodesAndFitsAPress) {
   Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
   Reconstructor reconstructor = pipeline.reconstructor();
   const Twin twin(sensor);
-  reconstructor.set_reference(twin.exact_frame({}));
+  reconstructor.set_reference({twin.exact_frame({}), 1});
   const Press press = press_at_chart(sensor.shape, {-6, 2}, 2.5, 2);
   const Vector3 p(press.x_mm, press.y_mm, press.z_mm);
   const auto& contacts = reconstructor.process(twin.exact_frame({press}));

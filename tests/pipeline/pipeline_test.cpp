@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <functional>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -72,8 +74,8 @@ TEST(Pipeline, LinearMethodTakesItsOptionsAndCalibration) {
   Reconstructor piped = pipeline.reconstructor();
   Twin twin(sensor);
   const Frame reference = twin.frame({}), pressed = twin.frame({{12, 18, 2.5, 10}});
-  by_hand.set_reference(reference);
-  piped.set_reference(reference);
+  by_hand.set_reference({reference, 1});
+  piped.set_reference({reference, 1});
   const std::vector<Contact> expected = by_hand.process(pressed);
   const std::vector<Contact>& contacts = piped.process(pressed);
   ASSERT_FALSE(expected.empty());
@@ -96,6 +98,52 @@ TEST(Pipeline, FittingBuildsItsOwnMesh) {
   EXPECT_EQ(pipeline.fit_mesh()->electrode_count(), 16);
   EXPECT_NE(pipeline.fit_mesh()->node_count(), pipeline.model().mesh.node_count());  // graded into the electrodes' ends
   EXPECT_EQ(pipeline.linear_calibration().a1, pipeline.model().uncalibrated.a1);
+}
+
+/// Every number of every contact of every frame, for comparing bit for bit.
+std::vector<double> numbers_of(const std::vector<std::vector<Contact>>& frames) {
+  std::vector<double> numbers;
+  for (const auto& contacts : frames)
+    for (const Contact& c : contacts)
+      numbers.insert(numbers.end(), {c.x_mm, c.y_mm, c.area_mm2, c.pressure_N_per_mm2, c.force_N, c.x_std_mm,
+                                     c.y_std_mm, c.force_std_N});
+  return numbers;
+}
+
+// Two reconstructors of one fitting pipeline, each its own fitter on the pipeline's one
+// precompute, fit two streams at once on two threads, with no lock: each stream's contacts are
+// bit for bit those of the same stream fitted alone on one thread. And the pipeline's batch fits
+// independent frames the same on one thread or three.
+TEST(Pipeline, ReconstructorsOfOneFittingPipelineFitOnThreadsAtOnce) {
+  const Sensor sensor = load_sensor(test::source_path("examples/sensors/square30.json"));
+  const Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
+  Twin twin(sensor);
+  const Reference reference{twin.frame({}), 1};
+  std::vector<std::vector<Frame>> streams(2);
+  for (int k = 0; k < 3; ++k) {  // a press moving right, another moving up, with a lift-off
+    streams[0].push_back(twin.frame({{10.0 + k, 15, 4, 8}}));
+    streams[1].push_back(k == 1 ? twin.frame({}) : twin.frame({{18, 12.0 + k, 4, 8}}));
+  }
+  const auto run = [&](const std::vector<Frame>& frames, std::vector<std::vector<Contact>>& out) {
+    Reconstructor reconstructor = pipeline.reconstructor();
+    reconstructor.set_reference(reference);
+    for (const Frame& frame : frames) out.push_back(reconstructor.process(frame));
+  };
+  std::vector<std::vector<std::vector<Contact>>> alone(2), together(2);
+  run(streams[0], alone[0]);
+  run(streams[1], alone[1]);
+  std::thread other([&] { run(streams[1], together[1]); });
+  run(streams[0], together[0]);
+  other.join();
+  for (int s = 0; s < 2; ++s) {
+    ASSERT_EQ(together[s].size(), alone[s].size());
+    EXPECT_FALSE(numbers_of(alone[s]).empty()) << "stream " << s << " found no contact";
+    EXPECT_EQ(numbers_of(together[s]), numbers_of(alone[s])) << "stream " << s;
+  }
+  std::vector<Frame> frames = streams[0];
+  frames.insert(frames.end(), streams[1].begin(), streams[1].end());
+  EXPECT_EQ(numbers_of(pipeline.reconstruct_batch({}, reference, frames, 3)),
+            numbers_of(pipeline.reconstruct_batch({}, reference, frames, 1)));
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ TEST(PressCalibration, FramesAndTruthMustMatch) {
   const Sensor sensor = coarse_sensor();
   const Frame zero = Frame::Zero(16, 16);
   try {
-    calibrate_from_presses(sensor, {}, zero, {zero, zero}, {{}});
+    calibrate_from_presses(sensor, {}, {zero, 1}, {zero, zero}, {{}});
     FAIL() << "no error";
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "calibration: 1 frames of presses for 2 frames");
@@ -34,7 +34,7 @@ TEST(PressCalibration, FramesAndTruthMustMatch) {
   // Contact fitting calibrates on single presses; two at once are skipped, so none is left.
   const PressSequence two_at_once = {{{10, 10, 2.5, 5}, {20, 20, 2.5, 5}}};
   try {
-    calibrate_from_presses(sensor, {}, zero, {zero}, two_at_once);
+    calibrate_from_presses(sensor, {}, {zero, 1}, {zero}, two_at_once);
     FAIL() << "no error";
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "calibration: no single presses to calibrate on");
@@ -58,7 +58,7 @@ TEST(PressCalibration, PaperMethodFitsEquationEightOnSinglePresses) {
   PressCalibrationOptions options;
   options.method = Method::paper;
   options.lambda2 = 3e3;
-  const PressCalibrationResult result = calibrate_from_presses(sensor, options, twin.frame({}), frames, truth);
+  const PressCalibrationResult result = calibrate_from_presses(sensor, options, {twin.frame({}), 1}, frames, truth);
   ASSERT_TRUE(std::holds_alternative<LinearCalibration>(result.calibration));
   EXPECT_EQ(result.presses, 6u);
   EXPECT_EQ(result.lambda2, 3e3);

@@ -22,7 +22,7 @@ struct ContactLawFit {
 ContactLawFit fit_contact_law(const std::vector<double>& pressure_N_per_mm2, const std::vector<double>& resistance_ohm);
 
 /// Contact fitting's calibration: eq. 2 as the fit sees it. Each single-press frame is
-/// reconstructed by contact fitting (with `model`'s seeds and `fitter`, against `reference`, one
+/// reconstructed by contact fitting (with `model`'s seeds and a fitter on `fitting`, against `reference`, one
 /// frame after another as a stream), and α, γ are fitted to the true pressure against 1/g of the
 /// strongest fitted contact.
 struct FittedLawCalibration {
@@ -31,8 +31,8 @@ struct FittedLawCalibration {
   std::size_t presses = 0;                          ///< frames that gave a contact
 };
 /// \param true_pressure_N_per_mm2  one per frame. \throw InvalidInput as fit_contact_law.
-FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, ContactFitter& fitter,
-                                                  const Frame& reference, const std::vector<Frame>& frames,
+FittedLawCalibration calibrate_fitted_contact_law(const ReconstructionModel& model, const FitPrecompute& fitting,
+                                                  const Reference& reference, const std::vector<Frame>& frames,
                                                   const std::vector<double>& true_pressure_N_per_mm2,
                                                   const ContactLaw& nominal, const FrameOptions& options = {});
 

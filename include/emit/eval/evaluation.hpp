@@ -16,7 +16,7 @@ namespace emit {
 struct SimulatedRun {
   PressSequence presses;
   std::vector<Frame> frames;
-  Frame reference;  ///< mean of `reference_frames` no-contact frames
+  Reference reference;  ///< the robust mean of `reference_frames` no-contact frames
 };
 
 SimulatedRun simulate_run(Twin& twin, const PressSequence& presses, int reference_frames = 10);

@@ -1,7 +1,11 @@
 #pragma once
 /// \file batch.hpp
-/// A recorded file's frames at full speed: the linear methods treat each frame on its own, so a
-/// batch is split across threads, each with its own Reconstructor on the shared model.
+/// A block of independent frames reconstructed on several threads: contiguous slices, one
+/// Reconstructor per worker. Each frame's contacts are what one reconstructor gives it alone, so
+/// the result does not depend on the thread count (contact fitting fits every frame cold: tracking
+/// from frame to frame would make a slice's first frame differ; Pipeline::reconstruct_batch turns
+/// it off).
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -9,20 +13,25 @@
 
 namespace emit {
 
-/// Contacts of every frame, in order, with `threads` workers (each frame's contacts are those
-/// one Reconstructor would give). For the linear methods only: contact fitting tracks from
-/// frame to frame and runs in order. \throw InvalidInput for threads < 1 or a bad frame.
-std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
-                                                    const LinearCalibration& calibration, const FrameOptions& options,
-                                                    const Frame& reference, const std::vector<Frame>& frames,
-                                                    int threads);
+/// Makes one worker's reconstructor; called once per worker, on its thread.
+using ReconstructorFactory = std::function<Reconstructor()>;
+
+/// Contacts of every frame, in order, with `threads` workers, each reconstructing against
+/// `reference`. \throw InvalidInput for threads < 1 or a bad frame; the first worker's error.
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructorFactory& make, const Reference& reference,
+                                                    const std::vector<Frame>& frames, int threads);
 
 /// The same for frames held as one block: `frames_volts` holds frame after frame, each N×N
 /// ground-major (a C-ordered (frames, N, N) array), read in place. \throw InvalidInput also when
 /// its length is not a whole number of frames.
+std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructorFactory& make, const Reference& reference,
+                                                    std::span<const double> frames_volts, Index electrodes,
+                                                    int threads);
+
+/// A linear method's batch (eq. 7 with `calibration`).
 std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructionModel& model,
                                                     const LinearCalibration& calibration, const FrameOptions& options,
-                                                    const Frame& reference, std::span<const double> frames_volts,
+                                                    const Reference& reference, const std::vector<Frame>& frames,
                                                     int threads);
 
 }  // namespace emit

@@ -10,6 +10,7 @@
 /// peak of the residual's linear image, while doing so cuts the misfit by a clear fraction.
 #include <array>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -58,6 +59,54 @@ struct FitResult {
   bool tracked = false;                 ///< started from the last frame's contacts (ContactFitter::track)
 };
 
+/// The fitter's immutable part, built once per sensor, fit mesh and Green's function: the options
+/// resolved, the disc integrator, and the atoms (a held disc's frame on a grid over the sheet) with
+/// their Gram matrix. Read-only once built, it is shared by any number of ContactFitters on any
+/// threads (Pipeline holds one; each Reconstructor fits with its own ContactFitter on it).
+class FitPrecompute {
+ public:
+  /// Keeps references to all but `options`; they must outlive it. \throw InvalidInput.
+  FitPrecompute(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
+                const MeasurementSet& measurements, FitOptions options = {});
+  FitPrecompute(const FitPrecompute&) = delete;  // fitters refer to it
+  FitPrecompute& operator=(const FitPrecompute&) = delete;
+  ~FitPrecompute() = default;
+
+  const Sensor& sensor() const { return sensor_; }
+  const Mesh& mesh() const { return mesh_; }
+  const DenseGreenFunction& green() const { return green_; }
+  const MeasurementSet& measurements() const { return measurements_; }
+  const FitOptions& options() const { return options_; }
+  double noise_V() const { return noise_V_; }
+
+ private:
+  friend class ContactFitter;
+  friend class FrameMisfit;
+  void build_atoms();
+  bool best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const;
+  Disc clamp_seed(Disc seed) const;
+  bool plausible_set(const std::vector<Disc>& discs) const;
+  bool explained(double misfit_sq, const Vector& dV) const;
+  bool jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const;
+  double separation_mm(const Disc& a, const Disc& b) const;
+  /// Two contacts closer than this are one press (three held radii).
+  double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
+
+  const Sensor& sensor_;
+  const Mesh& mesh_;
+  const DenseGreenFunction& green_;
+  const MeasurementSet& measurements_;
+  Eigen::AlignedBox2d chart_box_;  ///< where the discs' centres may go (mesh/sheet_chart.hpp)
+  FitOptions options_;
+  DiscContactIntegrator integrator_;
+  double noise_V_;
+  Matrix atoms_, atom_gram_;  ///< build_atoms()
+  std::vector<Disc> atom_discs_;
+};
+
+/// Fits contacts to frames: the per-thread half (its predictor's scratch, the load, the result)
+/// on a shared FitPrecompute. One ContactFitter serves one thread at a time; several, on one
+/// precompute, fit at once with no lock, each giving what it would give alone.
 class ContactFitter {
  public:
   /// A further contact is kept only if it cuts the misfit (sum of squares) by this fraction.
@@ -74,6 +123,9 @@ class ContactFitter {
   static constexpr double model_error_rms_fraction = 3e-3;  ///< between the two above
   static constexpr int max_iterations = 50;                 ///< of one Levenberg–Marquardt run
 
+  /// A workspace on `shared`, which must outlive it.
+  explicit ContactFitter(const FitPrecompute& shared);
+  /// A fitter with a precompute of its own (one fitter, one thread: tests, calibrations).
   /// Keeps references to all but `options`; they must outlive it. \throw InvalidInput.
   ContactFitter(const Sensor& sensor, const Mesh& mesh, const DenseGreenFunction& green,
                 const MeasurementSet& measurements, FitOptions options = {});
@@ -95,42 +147,28 @@ class ContactFitter {
 
   /// The frame the discs give (N×N), for tests and pictures.
   Frame predict(const std::vector<Disc>& discs);
-  double noise_V() const { return noise_V_; }
+  double noise_V() const { return shared_.noise_V_; }
+  const FitPrecompute& shared() const { return shared_; }
 
  private:
   friend class FrameMisfit;
+  friend class FitPrecompute;  // build_atoms predicts with a fitter of its own
   double fit_discs(const Vector& dV, std::vector<Disc>& discs);
   void misfit(const std::vector<Disc>& discs, const Vector& dV, Vector& out);
-  Disc clamp_seed(Disc seed) const;
-  bool plausible_set(const std::vector<Disc>& discs) const;
-  bool explained(double misfit_sq, const Vector& dV) const;
-  bool jumped(const std::vector<Disc>& previous, const std::vector<Disc>& discs) const;
-  double separation_mm(const Disc& a, const Disc& b) const;
-  /// Two contacts closer than this are one press (three held radii).
-  double plausible_separation_mm() const { return 3 * options_.prior_radius_mm; }
   void finish(const Vector& dV, const std::vector<Disc>& discs, double misfit_sq);
-  void build_atoms();
-  bool best_atom_set(const Vector& target, int count, std::vector<Disc>& set) const;
   void add_starts(const std::vector<Disc>& discs, const Disc& seed, std::vector<std::vector<Disc>>& starts) const;
   bool fit_best_start(const Vector& dV, std::vector<std::vector<Disc>>& starts, std::vector<Disc>& best,
                       double& best_sq);
   void parameter_std(const Vector& dV, std::vector<std::array<double, 4>>& parameters, double chi2);
 
-  const Sensor& sensor_;
-  const Mesh& mesh_;
-  const MeasurementSet& measurements_;
-  Eigen::AlignedBox2d chart_box_;  ///< where the discs' centres may go (mesh/sheet_chart.hpp)
-  FitOptions options_;
-  DiscContactIntegrator integrator_;
+  std::unique_ptr<const FitPrecompute> owned_;  ///< the convenience constructor's
+  const FitPrecompute& shared_;
   FramePredictor predictor_;
-  double noise_V_;
   DiscLoad load_;
   Frame frame_;
   FitResult result_;
   std::vector<double> covariance_std_;
   Vector residual_, zeros_;
-  Matrix atoms_, atom_gram_;  ///< build_atoms()
-  std::vector<Disc> atom_discs_;
 };
 
 }  // namespace emit

@@ -3,12 +3,13 @@
 /// The online half (docs/architecture.md, the online line): per frame, δV = V − V_ref → δφ = R·δV → threshold →
 /// pressure (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
 #include <cstdint>
-#include <vector>
-
+#include <optional>
 #include <variant>
+#include <vector>
 
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/contacts.hpp"
+#include "emit/frame/reference.hpp"
 #include "emit/model/calibration.hpp"
 #include "emit/model/reconstruction_model.hpp"
 
@@ -41,15 +42,17 @@ class Reconstructor {
   Reconstructor(const ReconstructionModel& model, LinearCalibration calibration, FrameOptions options = {});
   /// Contact fitting (contact_fitter.hpp), seeded by the linear image's contacts (strongest first,
   /// by the model's uncalibrated eq. 8: only their order matters). Contacts are reported with
-  /// the calibration's indenter area. `fitter`, built with the calibration's contact law and sheet
-  /// (pipeline/pipeline.hpp does both) and on the model's measurements, must outlive this; one
-  /// reconstructor at a time may use it. \throw InvalidInput for a bad option.
-  Reconstructor(const ReconstructionModel& model, ContactFitter& fitter, const FitCalibration& calibration,
+  /// the calibration's indenter area. `fit`, built with the calibration's contact law and sheet
+  /// (pipeline/pipeline.hpp does both) and on the model's measurements, must outlive this; the
+  /// reconstructor fits with a ContactFitter of its own on it, so reconstructors on one `fit` may
+  /// run on several threads at once. \throw InvalidInput for a bad option.
+  Reconstructor(const ReconstructionModel& model, const FitPrecompute& fit, const FitCalibration& calibration,
                 FrameOptions options = {});
 
-  /// The no-contact reference frame, the mean of `frames_averaged` frames (its noise adds to every
-  /// δV: model/image_noise.hpp). \throw InvalidInput if it is not N×N or not finite.
-  void set_reference(const Frame& reference, int frames_averaged = 1);
+  /// The no-contact reference (frame/reference.hpp); how many frames' noise it holds sets the
+  /// significance floor (its noise adds to every δV: model/image_noise.hpp).
+  /// \throw InvalidInput if its frame is not N×N or not finite, or its count is below 1.
+  void set_reference(const Reference& reference);
 
   /// The last frame's fit (null for a linear method).
   const FitResult* fit_result() const { return fitter_ ? &fitter_result_ : nullptr; }
@@ -80,7 +83,7 @@ class Reconstructor {
   Vector noise_per_volt_;  ///< ‖row k of R‖ times the significance's k
   Vector floor_;
   std::vector<std::uint8_t> selected_;
-  ContactFitter* fitter_ = nullptr;
+  std::optional<ContactFitter> fitter_;
   FitResult fitter_result_;
   std::vector<Disc> seeds_;
   std::vector<Contact> fitted_;
@@ -90,14 +93,5 @@ class Reconstructor {
   const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
   const std::vector<Contact>& report_fitted();
 };
-
-/// The mean of several frames (the reference is captured as an average), robust to a bad one:
-/// frames whose RMS distance from the per-reading median exceeds 3× the median of those
-/// distances (a glitch, a touch, a burst of noise) are left out; with one or two frames, the plain
-/// mean. \throw InvalidInput if there are none or their sizes differ.
-Frame average_frames(const std::vector<Frame>& frames);
-
-/// How many of `frames` average_frames keeps.
-int frames_averaged(const std::vector<Frame>& frames);
 
 }  // namespace emit

@@ -1,7 +1,7 @@
 #pragma once
 /// \file live_loop.hpp
-/// The live path (issue 6): source → baseline → Reconstructor → contacts (JSON Lines) and
-/// publishers (the viewer's server). One thread runs it; commands (re-capture the baseline) may
+/// The live path: source → reference (frame/reference.hpp) → Reconstructor → contacts (JSON Lines) and
+/// publishers (the viewer's server). One thread runs it; commands (re-capture the reference) may
 /// come from any thread and are applied between frames. It measures frames/s and end-to-end
 /// latency: from SourceFrame::received to the frame's contacts written and published.
 #include <atomic>
@@ -14,7 +14,7 @@
 
 #include "emit/acquire/frame_source.hpp"
 #include "emit/acquire/recorder.hpp"
-#include "emit/live/baseline.hpp"
+#include "emit/frame/reference.hpp"
 #include "emit/live/latency_stats.hpp"
 #include "emit/pipeline/pipeline.hpp"
 
@@ -22,10 +22,10 @@ namespace emit {
 
 /// One frame as the loop publishes it; the pointers are valid during publish() only.
 struct LiveFrame {
-  std::uint64_t index = 0;          ///< frames the loop has handled before this one (capture included)
-  std::uint64_t sequence = 0;       ///< the source's number
-  bool capturing_baseline = false;  ///< no reference yet, or a re-capture under way: no contacts
-  std::uint64_t baseline_captures = 0;
+  std::uint64_t index = 0;           ///< frames the loop has handled before this one (capture included)
+  std::uint64_t sequence = 0;        ///< the source's number
+  bool capturing_reference = false;  ///< no reference yet, or a re-capture under way: no contacts
+  std::uint64_t reference_captures = 0;
   const Frame* volts = nullptr;  ///< the frame as the source gave it
   const std::vector<Contact>* contacts = nullptr;
   const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
@@ -42,9 +42,9 @@ class FramePublisher {
 };
 
 struct LiveOptions {
-  BaselineOptions baseline;
+  ReferenceOptions reference;  ///< its capture and drift (frame/reference.hpp)
   FrameOptions frame;
-  /// Stop after this many reconstructed frames (the baseline capture's frames do not count); 0: run until stopped.
+  /// Stop after this many reconstructed frames (the reference capture's frames do not count); 0: run until stopped.
   std::uint64_t max_frames = 0;
   /// Stop after this many seconds of running; 0: no limit.
   double max_seconds = 0;
@@ -71,7 +71,7 @@ class LiveLoop {
   /// Contacts as JSON Lines (contacts_jsonl.hpp), "frame" = the source's sequence number, one line
   /// per reconstructed frame, flushed each frame. Null: none.
   void write_contacts_to(std::ostream* out) { contacts_out_ = out; }
-  /// Every frame the source gives (baseline capture included) is recorded here, as the board sent
+  /// Every frame the source gives (the reference's capture included) is recorded here, as the board sent
   /// it (SourceFrame::raw). Null: none.
   void record_to(Recorder* recorder) { recorder_ = recorder; }
   /// Must outlive run(). Several may be added.
@@ -81,7 +81,7 @@ class LiveLoop {
     observer_ = std::move(observer);
   }
 
-  /// A command from any thread, applied before the next frame: "recapture" (the baseline).
+  /// A command from any thread, applied before the next frame: "recapture" (the reference).
   /// \return false for an unknown command (ignored).
   bool command(const std::string& name);
 
@@ -92,7 +92,7 @@ class LiveLoop {
   /// One turn of run()'s loop, for a caller that pulls frames (the Python iterator): applies a
   /// pending command, waits up to the poll for the source's next frame and handles it.
   /// \return the frame's contacts when it was reconstructed (valid until the next step); null
-  /// when no frame came or it went to the baseline's capture. \throw IoError as run() does.
+  /// when no frame came or it went to the reference's capture. \throw IoError as run() does.
   const std::vector<Contact>* step();
   /// The last frame the source gave, and the reconstructor (its pressure and image are the last
   /// reconstructed frame's).
@@ -108,7 +108,7 @@ class LiveLoop {
   FrameSource& source_;
   LiveOptions options_;
   Reconstructor reconstructor_;
-  Baseline baseline_;
+  ReferenceTracker reference_;
   std::ostream* contacts_out_ = nullptr;
   Recorder* recorder_ = nullptr;
   std::vector<FramePublisher*> publishers_;

@@ -2,7 +2,7 @@
 /// \file mcap_publisher.hpp
 /// `emit live --mcap FILE`: every reconstructed frame (its readings, contacts and pressure image)
 /// into an MCAP recording with ROS 2's messages (io/tactile_mcap.hpp), stamped with the host's
-/// clock as it is published. The baseline's capture frames are left out (they have no contacts;
+/// clock as it is published. The reference's capture frames are left out (they have no contacts;
 /// `--record` keeps every frame as the board sent it).
 #include <string>
 

@@ -19,7 +19,7 @@
 /// sheet's point above (x, y) and its normal there: frame/contacts.hpp).
 /// padded with spaces to a multiple of 4 bytes, then one float32 per triangle: the pressure [N/mm²].
 /// The client answers each frame with the text "ack" (the next frame is sent only then), and may
-/// send the command "recapture" (the baseline).
+/// send the command "recapture" (the no-contact reference).
 #include <cstdint>
 #include <string>
 

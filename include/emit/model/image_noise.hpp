@@ -11,7 +11,7 @@ namespace emit {
 
 /// σ of δV = V − V_ref when the reference is the mean of `reference_frames` frames:
 /// σ_n·√(1 + 1/n) (√2·σ_n for a single-frame reference). \pre reference_frames ≥ 1.
-double difference_noise_V(double reading_noise_V, int reference_frames);
+double difference_noise_V(double reading_noise_V, double reference_frames);
 
 /// k such that #F independent standard Gaussians all stay below k with probability
 /// 1 − false_alarm_rate: Q(k) = false_alarm_rate/#F (Bonferroni; the image's elements are

@@ -15,9 +15,11 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "emit/frame/batch.hpp"
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/model/calibration.hpp"
@@ -64,9 +66,22 @@ class Pipeline {
   /// Contact fitting's own mesh (model/fit_model.hpp); null for a linear method.
   const Mesh* fit_mesh() const { return fit_model_ ? &fit_model_->mesh : nullptr; }
 
-  /// A reconstructor for the method. It (and for `fit` the pipeline's one fitter) refers to this
-  /// pipeline, which must outlive it; one reconstructor at a time may fit.
-  Reconstructor reconstructor(const FrameOptions& options = {});
+  /// Contact fitting's shared precompute (frame/contact_fitter.hpp); null for a linear method.
+  const FitPrecompute* fit_precompute() const { return fit_ ? &*fit_ : nullptr; }
+
+  /// A reconstructor for the method, with its own scratch (for `fit`, its own fitter on the
+  /// pipeline's precompute): several may run at once, on as many threads. Each refers to this
+  /// pipeline, which must outlive it.
+  Reconstructor reconstructor(const FrameOptions& options = {}) const;
+
+  /// Independent frames on `threads` workers, every method (frame/batch.hpp): for `fit`, each
+  /// frame is fitted cold (options.track_contacts is set false), so that the contacts do not
+  /// depend on the thread count. \throw as reconstruct_batch.
+  std::vector<std::vector<Contact>> reconstruct_batch(const FrameOptions& options, const Reference& reference,
+                                                      const std::vector<Frame>& frames, int threads) const;
+  /// The same over one block of frames (a C-ordered (frames, N, N) array), read in place.
+  std::vector<std::vector<Contact>> reconstruct_batch(const FrameOptions& options, const Reference& reference,
+                                                      std::span<const double> frames_volts, int threads) const;
 
  private:
   Method method_;
@@ -76,7 +91,7 @@ class Pipeline {
   FitCalibration fit_calibration_;
   std::unique_ptr<FitModel> fit_model_;
   Sensor fit_sensor_;  ///< the sensor with the calibrated contact law
-  std::optional<ContactFitter> fitter_;
+  std::optional<FitPrecompute> fit_;
 };
 
 }  // namespace emit

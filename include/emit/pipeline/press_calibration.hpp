@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "emit/calibrate/sensor_calibration.hpp"
+#include "emit/frame/reference.hpp"
 #include "emit/model/calibration.hpp"
 #include "emit/model/method.hpp"
 #include "emit/sensor/press.hpp"
@@ -45,7 +46,7 @@ struct PressCalibrationResult {
 /// \throw InvalidInput (frames and truth of different lengths, no single presses, too few of
 /// them), SolverError.
 PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressCalibrationOptions& options,
-                                              const Frame& reference, const std::vector<Frame>& frames,
+                                              const Reference& reference, const std::vector<Frame>& frames,
                                               const PressSequence& truth,
                                               const std::function<void(const std::string&)>& progress = {});
 

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
 
     emit::Pipeline pipeline(sensor, {.method = emit::Method::fit});
     emit::Reconstructor reconstructor = pipeline.reconstructor();
-    reconstructor.set_reference(emit::average_frames(untouched), emit::frames_averaged(untouched));
+    reconstructor.set_reference(emit::average_reference(untouched));
     const std::vector<emit::Contact>& contacts =
         reconstructor.process(twin.frame({{.x_mm = x_mm, .y_mm = y_mm, .radius_mm = 5, .force_N = 10}}));
 
