@@ -39,9 +39,10 @@ It meshes the sheet, builds its finite-element model and Jacobian, and
 reconstructs contacts by regularised inversion or contact fitting, live from
 the acquisition board, a recording or a digital twin.
 
-This package holds the emit command, the shared library libemit with its
-headers and CMake package (find_package(emit), target emit::emit), and the
-Python module emit.
+This package holds the emit command, the shared libraries libemit_core,
+libemit_io, libemit_live, libemit_eval and libemit_jobs with their headers and
+CMake package (find_package(emit COMPONENTS ...), targets emit::core, ...,
+emit::emit), and the Python module emit.
 ")
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER ${EMIT_DEB_MAINTAINER})
 set(CPACK_DEBIAN_PACKAGE_SECTION science)

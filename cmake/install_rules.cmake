@@ -1,8 +1,10 @@
 # What `cmake --install` (and so the Debian package, cmake/debian_package.cmake) puts where, under
 # the prefix (/usr for the package):
 #   bin/emit                                   the command
-#   lib/<triplet>/libemit.so.*                 the library, with its CMake package config in
-#   lib/<triplet>/cmake/emit/                  emitConfig.cmake: find_package(emit), emit::emit
+#   lib/<triplet>/libemit_<component>.so.*     the library's components (core, io, live, eval, jobs)
+#   lib/<triplet>/emit/libemit_gmsh.so         the Gmsh module emit_core loads to mesh (mesh/gmsh_mesher.hpp)
+#   lib/<triplet>/cmake/emit/                  emitConfig.cmake: find_package(emit [COMPONENTS ...]),
+#                                              emit::<component>, and emit::emit for all of them
 #   include/emit/...                           its headers; the board's packet format they include in
 #   include/emit/firmware/core/                (as "core/frame_packet.hpp")
 #   lib/python3/dist-packages/emit/            the Python module (EMIT_PYTHON_INSTALL_DIR)
@@ -16,9 +18,10 @@ set(EMIT_CMAKE_INSTALL_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emit)
 find_program(EMIT_GZIP gzip REQUIRED)
 
 install(TARGETS emit RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS emit_lib EXPORT emitTargets
+install(TARGETS emit_core emit_io emit_live emit_eval emit_jobs emit_lib EXPORT emitTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS emit_gmsh LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/emit)  # a module: no soname, not for linking
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/emit DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/firmware/core DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/emit/firmware

@@ -4,15 +4,26 @@
 # src/, cli/, bench/, tests/ (and the generated sources), in parallel. Exits non-zero on any
 # formatting difference or clang-tidy warning, and ends with a one-line summary.
 #
-# Usage: scripts/lint.sh [format|tidy]   (default: both)
-# Environment: EMIT_LINT_BUILD_DIR (default build-lint), EMIT_LINT_JOBS (default: nproc).
+# Usage: scripts/lint.sh [format|tidy] [--full]   (default: both)
+# clang-tidy's result for a unit is reused while nothing it reads changed (its preprocessed text,
+# flags, the .clang-tidy files, clang-tidy's version: scripts/clang_tidy_cached.py), from a cache
+# outside the clone ($EMIT_LINT_CACHE, default ~/.cache/emit/clang-tidy) that every clone on the
+# machine shares; --full runs clang-tidy on every unit afresh.
+# Environment: EMIT_LINT_BUILD_DIR (default build-lint), EMIT_LINT_JOBS (default: nproc), EMIT_LINT_CACHE.
 # The build directory is configured (no sanitizer, tests and benchmarks on, so their files are in
 # compile_commands.json) but not built: only the generated sources are made. clang-tidy's full
 # output per translation unit is kept in $EMIT_LINT_BUILD_DIR/lint/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-what=${1:-all}
-case "$what" in all | format | tidy) ;; *) echo "usage: scripts/lint.sh [format|tidy]" >&2; exit 2 ;; esac
+what=all
+full=0
+for argument in "$@"; do
+  case "$argument" in
+    all | format | tidy) what=$argument ;;
+    --full) full=1 ;;
+    *) echo "usage: scripts/lint.sh [format|tidy] [--full]" >&2; exit 2 ;;
+  esac
+done
 build=${EMIT_LINT_BUILD_DIR:-build-lint}
 jobs=${EMIT_LINT_JOBS:-$(nproc)}
 start=$(date +%s)
@@ -68,22 +79,25 @@ for entry in json.load(open(database)):
         print(path)
 EOF
   )
-  # One clang-tidy per unit, $jobs at a time; each writes its own log (no interleaving).
-  printf '%s\n' "${units[@]}" | sort -u |
-    xargs -P "$jobs" -I{} sh -c 'log="$0/$(echo "$1" | sed "s|^$2/||; s|/|_|g").log"
-      "$3" -p "$4" --quiet "$1" >"$log" 2>&1 || echo "clang-tidy exited $? on $1" >>"$log"' \
-      "$logs" {} "$root" "$clang_tidy" "$build"
+  # One clang-tidy per unit, $jobs at a time, each writing its own log (no interleaving); a unit
+  # whose preprocessed text, flags and configuration are those of an earlier run reuses that run's
+  # result (scripts/clang_tidy_cached.py says how; --full runs every unit).
+  clang=$(command -v clang++-14 || command -v clang++)
+  cache_flag=()
+  [ "$full" -eq 1 ] && cache_flag=(--no-cache)
+  tidy_summary=$(python3 scripts/clang_tidy_cached.py --clang-tidy "$clang_tidy" --clang "$clang" --build "$build" \
+    --root "$root" --logs "$logs" --jobs "$jobs" "${cache_flag[@]}" $(printf '%s\n' "${units[@]}" | sort -u))
   # A header's warning shows once per unit that includes it: count each once.
   diagnostics=$(cat "$logs"/*.log | grep -E '^[^ ]+:[0-9]+:[0-9]+: (warning|error):|^clang-tidy exited' | sort -u || true)
   count=$(printf '%s' "$diagnostics" | grep -c . || true)
   if [ "$count" -eq 0 ]; then
-    summary+=("clang-tidy: 0 warnings in ${#units[@]} translation units")
+    summary+=("clang-tidy: 0 warnings in $tidy_summary")
   else
     failed=1
     printf '%s\n' "$diagnostics" | sed "s|^$root/||"
     by_check=$(printf '%s\n' "$diagnostics" | grep -oE '\[[a-z0-9.,-]+\]$' | sort | uniq -c | sort -rn |
       awk '{printf "%s%s %s", (NR > 1 ? ", " : ""), $1, $2}')
-    summary+=("clang-tidy: $count warnings in ${#units[@]} translation units ($by_check; full output in $logs/)")
+    summary+=("clang-tidy: $count warnings in $tidy_summary ($by_check; full output in $logs/)")
   fi
 fi
 

@@ -115,7 +115,7 @@ std::string describe(const std::vector<Violation>& violations) {
 }  // namespace
 
 TEST(IncludeDirection, EveryIncludePointsDown) {
-  const fs::path root = EMIT_SOURCE_DIR;
+  const fs::path root = fs::path(emit::test::source_path("")).parent_path();  // without the trailing /
   const auto floor_of = read_floors(root / "src/floors.txt");
   ASSERT_GE(floor_of.size(), 10u) << "src/floors.txt lists too few folders";
   const std::vector<Violation> violations = check_includes(root, floor_of);
@@ -124,7 +124,7 @@ TEST(IncludeDirection, EveryIncludePointsDown) {
 }
 
 TEST(IncludeDirection, EveryFolderOfTheLibraryIsOnAFloor) {
-  const fs::path root = EMIT_SOURCE_DIR;
+  const fs::path root = fs::path(emit::test::source_path("")).parent_path();  // without the trailing /
   const auto floor_of = read_floors(root / "src/floors.txt");
   for (const char* top : {"include/emit", "src"}) {
     for (const auto& entry : fs::directory_iterator(root / top)) {

@@ -48,9 +48,12 @@ TEST(CliReliability, CtrlCDuringReconstructLeavesNoTemporaryFile) {
   std::ofstream(dir + "/ref.csv") << zero_frames(1);
   std::ofstream(dir + "/frames.csv") << zero_frames(400);
   std::ofstream(dir + "/contacts.jsonl") << "GOOD\n";
-  const std::vector<std::string> arguments = {EMIT_CLI_PATH, "reconstruct",           "--method", "paper",
-                                              "--reference", dir + "/ref.csv",        "--frames", dir + "/frames.csv",
-                                              "--contacts",  dir + "/contacts.jsonl", "--images", dir + "/images",
+  const std::vector<std::string> arguments = {test::cli_path(), "reconstruct",
+                                              "--method",       "paper",
+                                              "--reference",    dir + "/ref.csv",
+                                              "--frames",       dir + "/frames.csv",
+                                              "--contacts",     dir + "/contacts.jsonl",
+                                              "--images",       dir + "/images",
                                               "--no-cache"};
   std::vector<char*> argv;
   argv.reserve(arguments.size() + 1);

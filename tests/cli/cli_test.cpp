@@ -319,7 +319,9 @@ TEST(Cli, CalibrateThenReconstruct) {
   ASSERT_EQ(run_emit("simulate --press 21,37,5,12 --out " + d + "/one.csv").exit_code, 0);
   const std::string calibrate =
       "calibrate --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d + "/cal_presses.csv";
-  auto r = run_emit(calibrate + " --out " + d + "/calib.json" + cache);
+  // The twin's sheet is its description: the contact law alone (--no-sheet). Fitting the sheet
+  // from the presses is CalibrationCorrectsANonUniformSheet's, and `emit eval --realistic`'s.
+  auto r = run_emit(calibrate + " --no-sheet --out " + d + "/calib.json" + cache);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("alpha ="), std::string::npos) << "the default method, fit, calibrates the contact law";
   r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d +
@@ -371,10 +373,16 @@ TEST(Cli, CalibrateThenReconstruct) {
 // A sheet 20 % more resistive on one side than the other (the reconstruction is told the nominal
 // one): `emit calibrate` fits the variation from the calibration presses, and a press elsewhere
 // is found within issue 4's 0.2 mm for the 30 mm sheet; without the correction it is millimetres off.
+// On the 30 mm sheet meshed at 1 mm instead of its 0.6 mm (a test's size: the twin still meshes
+// it twice as finely, and the 0.2 mm holds there, 0.01-0.04 mm measured); the electrodes' places,
+// whose fit slides the mesh and costs most, are fitted by `emit eval --realistic` (below).
 TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   const std::string d = test::temp_folder("cli_sheet");
-  const std::string twin = " --sensor " + source_path("examples/sensors/square30.json") + " --sheet-variation 0.2";
-  const std::string sensor = " --sensor " + source_path("examples/sensors/square30.json") + " --cache " + d + "/cache";
+  auto square30 = nlohmann::json::parse(test::read_text(source_path("examples/sensors/square30.json")));
+  square30["mesh"]["element_size_mm"] = 1.0;
+  std::ofstream(d + "/square30_coarse.json") << square30.dump();
+  const std::string twin = " --sensor " + d + "/square30_coarse.json --sheet-variation 0.2";
+  const std::string sensor = " --sensor " + d + "/square30_coarse.json --cache " + d + "/cache";
   ASSERT_EQ(run_emit("simulate" + twin + " --script none --frames 5 --out " + d + "/ref.csv").exit_code, 0);
   ASSERT_EQ(run_emit("simulate" + twin +
                      " --script random --frames 12 --force-N 0.5,8 --radius-mm 2.5 --seed 3 --out " + d + "/cal.csv")
@@ -403,14 +411,14 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   };
   EXPECT_LT(error_mm(" --calibration " + d + "/calib.json"), 0.2);
   EXPECT_GT(error_mm(""), 1.0);
-  // The whole sensor (cubic field, electrodes, series resistances, drive: 42 parameters from 12
+  // The sheet (cubic field), the series resistances and the drive (26 parameters from 12
   // presses): the press is found as well, and the file says which parameters the presses set.
   r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
-               "/cal_presses.csv --out " + d + "/full.json");
+               "/cal_presses.csv --no-electrodes --out " + d + "/full.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_LT(error_mm(" --calibration " + d + "/full.json"), 0.2);
   const std::string full = test::read_text(d + "/full.json");
-  EXPECT_NE(full.find("\"electrode_shift_mm\""), std::string::npos) << full;
+  EXPECT_NE(full.find("\"series_resistance_ohm\""), std::string::npos) << full;
   EXPECT_NE(full.find("\"determined\": true"), std::string::npos) << full;
 }
 
@@ -866,7 +874,7 @@ namespace {
 
 /// The real hydrogel skin's presses (../shared/real, not in the repository), or "" when absent.
 std::string hydrogel_folder() {
-  const std::string dir = std::string(EMIT_REAL_DATA_DIR) + "/hardman_hydrogel";
+  const std::string dir = test::real_data_dir() + "/hardman_hydrogel";
   return std::ifstream(dir + "/frames.csv").good() ? dir : "";
 }
 
@@ -876,7 +884,7 @@ std::string hydrogel_folder() {
 // own method 11–14 mm); every later press is written as a contact, and the curve is drawn.
 TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
   const std::string data = hydrogel_folder();
-  if (data.empty()) GTEST_SKIP() << "no real data at " << EMIT_REAL_DATA_DIR << " (cmake -DEMIT_REAL_DATA_DIR=...)";
+  if (data.empty()) GTEST_SKIP() << "no real data at " << test::real_data_dir() << " (cmake -DEMIT_REAL_DATA_DIR=...)";
   const std::string d = test::temp_folder("cli_eval_real");
   const std::string sensor = test::source_path("examples/sensors/hydrogel_hardman.json");
   const auto r = run_emit("eval --real " + data + " --sensor " + sensor + " --calibration-presses 100 --curve 50 " +

@@ -4,7 +4,9 @@
 #   2. apt installs it, and it holds what it promises (the command, the library, the headers, the
 #      CMake config, the Python module, the example sensors);
 #   3. tests/package/downstream, a user's CMake project, builds against the installed package
-#      (find_package(emit), emit::emit) and reconstructs a press of the twin within 0.5 mm;
+#      (find_package(emit COMPONENTS core), emit::emit and emit::core), reconstructs a press of the
+#      twin within 0.5 mm, and, linking the core alone (no Boost, DDS, OpenCASCADE, libpng: ldd),
+#      frames the installed command wrote;
 #   4. the README's Python section runs as written with the installed module and command;
 #   5. the package is removed again (also when a step fails).
 # Installing needs root (or sudo without a password); without it the test is skipped (exit 77). So
@@ -46,7 +48,8 @@ DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommen
 installed=1
 triplet=$(gcc -print-multiarch)
 python_dir=/usr/lib/python3/dist-packages/emit
-for path in /usr/bin/emit "/usr/lib/$triplet/libemit.so" "/usr/lib/$triplet/cmake/emit/emitConfig.cmake" \
+for path in /usr/bin/emit "/usr/lib/$triplet/libemit_core.so" "/usr/lib/$triplet/emit/libemit_gmsh.so" \
+  "/usr/lib/$triplet/libemit_jobs.so" "/usr/lib/$triplet/cmake/emit/emitConfig.cmake" \
   /usr/include/emit/pipeline/pipeline.hpp /usr/include/emit/firmware/core/frame_packet.hpp \
   "$python_dir/__init__.py" "$python_dir/_emit.pyi" /usr/share/emit/sensors/dome25.json \
   /usr/share/doc/emit/copyright; do
@@ -55,9 +58,9 @@ done
 # The installed command and module find the installed library, not a build tree's.
 loads_installed_library() {
   local loaded
-  loaded=$(ldd "$1" | awk '$1 ~ /^libemit\.so/ {print $3}')
-  [ -n "$loaded" ] && [ "$(readlink -f "$loaded")" = "$(readlink -f "/usr/lib/$triplet/libemit.so")" ] ||
-    { echo "$1 does not load /usr/lib/$triplet/libemit.so:"; ldd "$1"; return 1; }
+  loaded=$(ldd "$1" | awk '$1 ~ /^libemit_core\.so/ {print $3}')
+  [ -n "$loaded" ] && [ "$(readlink -f "$loaded")" = "$(readlink -f "/usr/lib/$triplet/libemit_core.so")" ] ||
+    { echo "$1 does not load /usr/lib/$triplet/libemit_core.so:"; ldd "$1"; return 1; }
 }
 loads_installed_library /usr/bin/emit
 loads_installed_library "$(ls "$python_dir"/_emit.cpython-*.so)"
@@ -71,6 +74,17 @@ grep -q "/usr/lib/$triplet/cmake/emit" "$work/downstream/CMakeCache.txt" ||
   { echo "the downstream project did not find the installed package's config"; exit 1; }
 loads_installed_library "$work/downstream/reconstruct_press"
 "$work/downstream/reconstruct_press" 20 40
+# The core alone: frames the installed command wrote, reconstructed by a program that links
+# emit::core, which brings no Boost, DDS, OpenCASCADE (Gmsh's) or libpng.
+/usr/bin/emit simulate --script none --frames 10 --out "$work/untouched.csv" >/dev/null 2>&1
+/usr/bin/emit simulate --press 20,40,5,10 --out "$work/pressed.csv" >/dev/null 2>&1
+core_links=$(ldd "$work/downstream/reconstruct_frames")
+[ -n "$(printf '%s\n' "$core_links" | awk '$1 ~ /^libemit_core\.so/')" ] ||
+  { echo "reconstruct_frames does not link libemit_core:"; printf '%s\n' "$core_links"; exit 1; }
+heavy=$(printf '%s\n' "$core_links" | grep -E 'libboost|libddsc|libcyclone|libTK|libpng|libgmsh|libemit_(io|live|eval|jobs)' || true)
+[ -z "$heavy" ] || { echo "a program of emit::core links more than the core:"; printf '%s\n' "$heavy"; exit 1; }
+echo "reconstruct_frames links $(printf '%s\n' "$core_links" | wc -l) libraries, none of Boost, DDS, OpenCASCADE, libpng, Gmsh"
+"$work/downstream/reconstruct_frames" "$work/untouched.csv" "$work/pressed.csv" 20 40
 
 echo "== 4. the README's Python section, with the installed module and command"
 env -u PYTHONPATH -u LD_PRELOAD EMIT_INSTALLED=1 EMIT_CLI=/usr/bin/emit EMIT_SOURCE_DIR="$source_dir" \

@@ -42,6 +42,8 @@ Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny) {
 }
 
 std::string source_path(const std::string& relative) { return std::string(EMIT_SOURCE_DIR) + "/" + relative; }
+std::string cli_path() { return EMIT_CLI_PATH; }
+std::string real_data_dir() { return EMIT_REAL_DATA_DIR; }
 
 const Sensor& dome_sensor() {
   static const Sensor sensor = load_sensor(source_path("examples/sensors/dome25.json"));

@@ -14,6 +14,9 @@ namespace emit::test {
 Mesh strip_mesh(double width_mm, double height_mm, int nx, int ny);
 
 std::string source_path(const std::string& relative);
+/// This build's emit command, and the folder of real skins' data sets (CMake's EMIT_REAL_DATA_DIR).
+std::string cli_path();
+std::string real_data_dir();
 
 /// The example dome (examples/sensors/dome25.json) and its reconstruction mesh (Gmsh), made once.
 const Sensor& dome_sensor();

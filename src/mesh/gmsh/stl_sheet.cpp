@@ -1,5 +1,4 @@
-#include "emit/mesh/stl_sheet.hpp"
-
+// An STL sheet read by Gmsh (mesh/stl_sheet.hpp read_stl_sheet, through ../gmsh_mesher.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -12,9 +11,10 @@
 #include "emit/mesh/sort_for_locality.hpp"
 #include "emit/sensor/border.hpp"
 #include "emit/sensor/height_field.hpp"
+#include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
 
-namespace emit {
+namespace emit::detail {
 
 namespace {
 
@@ -82,11 +82,11 @@ int node_at(Mesh& mesh, BorderLoop& b, double s_mm) {
 
 }  // namespace
 
-Mesh read_stl_sheet(const Sensor& sensor) {
+Mesh gmsh_read_stl_sheet(const Sensor& sensor) {
   const std::string& path = sensor.shape.mesh_path;
   const std::string file = quote_input(path, 120);
   if (!std::filesystem::is_regular_file(path)) throw IoError(file + ": no such STL file");
-  detail::GmshSession gmsh_session;
+  GmshSession gmsh_session;
   gmsh_session.run<InvalidInput>(file + ": not a valid STL file", [&] { gmsh::merge(path); });
   Mesh mesh = gmsh_session.extract_mesh(file, /*electrodes_required=*/false);
   BorderLoop border = border_of(mesh, file);
@@ -130,4 +130,4 @@ Mesh read_stl_sheet(const Sensor& sensor) {
   return sort_for_locality(mesh);
 }
 
-}  // namespace emit
+}  // namespace emit::detail

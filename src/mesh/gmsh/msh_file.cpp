@@ -1,5 +1,4 @@
-#include "emit/mesh/mesh_io.hpp"
-
+// Gmsh .msh files read and written by Gmsh (mesh/mesh_io.hpp, through ../gmsh_mesher.hpp).
 #include <filesystem>
 #include <fstream>
 
@@ -7,21 +6,22 @@
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
 
-namespace emit {
+namespace emit::detail {
 
-Mesh read_msh(const std::string& path) {
+Mesh gmsh_read_msh(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw IoError(path + ": no such mesh file");
   if (!std::ifstream(path)) throw IoError(path + ": cannot read mesh file");
-  detail::GmshSession gmsh_session;
+  GmshSession gmsh_session;
   gmsh_session.run<InvalidInput>(path + ": not a valid Gmsh mesh", [&] { gmsh::open(path); });
   return gmsh_session.extract_mesh(path);
 }
 
-void write_msh(const Mesh& mesh, const std::string& path) {
+void gmsh_write_msh(const Mesh& mesh, const std::string& path) {
   AtomicFile file(path, /*open_stream=*/false);
-  detail::GmshSession gmsh_session;
+  GmshSession gmsh_session;
   gmsh_session.run<IoError>(path + ": cannot write mesh", [&] {
     gmsh::model::add("emit");
     const int surface = gmsh::model::addDiscreteEntity(2);
@@ -57,4 +57,4 @@ void write_msh(const Mesh& mesh, const std::string& path) {
   file.commit();
 }
 
-}  // namespace emit
+}  // namespace emit::detail

@@ -1,0 +1,60 @@
+#include "gmsh_mesher.hpp"
+
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "emit/core/errors.hpp"
+#include "emit/mesh/mesh_io.hpp"
+#include "emit/mesh/stl_sheet.hpp"
+
+namespace emit {
+
+namespace detail {
+
+namespace {
+
+using Entry = const GmshMesher* (*)();
+
+/// The module where gmsh_mesher() looks for it, in turn.
+const GmshMesher* load_gmsh_mesher() {
+  std::vector<std::string> candidates;
+  Dl_info self{};
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): dladdr takes an address in this object
+  if (dladdr(reinterpret_cast<void*>(&load_gmsh_mesher), &self) != 0 && self.dli_fname != nullptr) {
+    const std::filesystem::path folder = std::filesystem::path(self.dli_fname).parent_path();
+    candidates.push_back((folder / gmsh_module_folder / gmsh_module).string());
+    candidates.push_back((folder / gmsh_module).string());
+  }
+  candidates.emplace_back(gmsh_module);
+  void* module = nullptr;
+  std::string errors;
+  for (const std::string& candidate : candidates) {
+    module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (module != nullptr) break;
+    errors += std::string(errors.empty() ? "" : "; ") + dlerror();
+  }
+  if (module == nullptr) throw IoError("meshing needs emit's Gmsh module, which could not be loaded: " + errors);
+  // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): dlsym's object pointer is the function
+  const auto entry = reinterpret_cast<Entry>(dlsym(module, gmsh_module_entry));
+  if (entry == nullptr) throw IoError(std::string(gmsh_module) + ": no " + gmsh_module_entry + " in it");
+  return entry();
+}
+
+}  // namespace
+
+const GmshMesher& gmsh_mesher() {
+  static const GmshMesher* const mesher = load_gmsh_mesher();  // once, thread-safe; a failure retries
+  return *mesher;
+}
+
+}  // namespace detail
+
+// The public entry points of mesh_io.hpp and stl_sheet.hpp, done by the module.
+Mesh read_msh(const std::string& path) { return detail::gmsh_mesher().read_msh(path); }
+void write_msh(const Mesh& mesh, const std::string& path) { detail::gmsh_mesher().write_msh(mesh, path); }
+Mesh read_stl_sheet(const Sensor& sensor) { return detail::gmsh_mesher().read_stl_sheet(sensor); }
+
+}  // namespace emit
