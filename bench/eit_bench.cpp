@@ -1,4 +1,4 @@
-// The per-frame path of a current-injection skin (issue 16), on the hydrogel skin's sensor
+// The per-frame path of a current-injection skin, on the hydrogel skin's sensor
 // (examples/sensors/hydrogel_hardman.json, 192 readings): the difference image's product by the
 // compact NOSER operator against the dense R that pyEIT's and EIDORS's users apply, in the same
 // run; and a press located with a learned press response (degree 6, as the hydrogel's 100

@@ -55,7 +55,7 @@ void BM_PressContact(benchmark::State& state) {
 
 // One frame: one factorisation, N solves (the regrounding trick).
 void BM_Frame(benchmark::State& state, const Mesh& (*mesh)()) {
-  const ForwardModel model(mesh(), sensor().sheet_resistance_ohm_per_sq);
+  ForwardModel model(mesh(), sensor().sheet_resistance_ohm_per_sq);
   const ContactLoad contact = press_contact_load(mesh(), centre_press, sensor().contact);
   for ([[maybe_unused]] auto _ : state) benchmark::DoNotOptimize(model.solve_frame(contact, sensor().drive_voltage_V));
   state.counters["triangles"] = static_cast<double>(mesh().triangle_count());

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What Python costs over C++ (issue 17's targets), each against its baseline in the same process,
+"""What Python costs over C++ (the targets below), each against its baseline in the same process,
 on the same frames and the same Reconstructor (Reconstructor.cpp_seconds_per_frame times the C++
 loop alone):
 

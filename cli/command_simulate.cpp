@@ -1,11 +1,9 @@
 // emit simulate: frames from the digital twin, for given presses or a press script.
-#include <algorithm>
 #include <array>
 #include <cstdio>
 
 #include "commands.hpp"
 #include "emit/core/errors.hpp"
-#include "emit/core/quote_input.hpp"
 #include "emit/jobs/simulate_job.hpp"
 
 namespace emit::cli {
@@ -27,25 +25,6 @@ struct SimulateArgs {
   std::vector<double> realistic_drive_V;
 };
 
-/// The realistic sheet's summary, for the user to compare a calibration with.
-void print_realistic(const RealisticSheet& sheet, const std::string& path) {
-  std::fprintf(stderr,
-               "realistic sheet: Rs x %.4f (%.1f ohm/sq), field x %.3f to x %.3f, drive %.4f V, blur %.2f mm\n"
-               "realistic sheet: electrode shifts %+.3f to %+.3f mm, series resistance %.1f to %.1f ohm; all in %s\n",
-               sheet.sheet_scale, sheet.twin_sensor.sheet_resistance_ohm_per_sq, sheet.field_min_factor,
-               sheet.field_max_factor, sheet.drive_voltage_V, sheet.blur_mm,
-               *std::min_element(sheet.shift_mm.begin(), sheet.shift_mm.end()),
-               *std::max_element(sheet.shift_mm.begin(), sheet.shift_mm.end()),
-               *std::min_element(sheet.series_ohm.begin(), sheet.series_ohm.end()),
-               *std::max_element(sheet.series_ohm.begin(), sheet.series_ohm.end()), path.c_str());
-}
-
-std::array<double, 2> pair_or_single(const std::vector<double>& values, const char* option) {
-  if (values.size() == 1) return {values[0], values[0]};
-  if (values.size() == 2) return {values[0], values[1]};
-  throw InvalidInput(std::string(option) + ": give one value or two (a range)");
-}
-
 void run_simulate(SimulateArgs a) {
   SimulateJob& job = a.job;
   const PressProfile profile = parse_press_profile(a.profile);
@@ -55,17 +34,7 @@ void run_simulate(SimulateArgs a) {
   }
   if (a.realistic->count() > 0) {
     RealisticSheetOptions& realistic = job.realistic.emplace(a.realistic_options);
-    if (!a.realistic_seed.empty()) {
-      std::size_t used = 0;
-      try {
-        realistic.seed = std::stoull(a.realistic_seed, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != a.realistic_seed.size() || a.realistic_seed[0] == '-')
-        throw InvalidInput("--realistic: the seed must be a whole number 0 or larger, got " +
-                           quote_input(a.realistic_seed));
-    }
+    if (!a.realistic_seed.empty()) realistic.seed = parse_seed("--realistic", a.realistic_seed);
     if (!a.realistic_drive_V.empty()) {
       const auto drive = pair_or_single(a.realistic_drive_V, "--realistic-drive-V");
       if (!(drive[0] > 0) || drive[1] < drive[0])
@@ -90,18 +59,7 @@ void run_simulate(SimulateArgs a) {
     }
   }
   job.twin.adc = !a.exact;
-  const SimulateReport r = run_simulate_job(job, stderr_progress());
-  std::fprintf(stderr, "twin mesh: %lld triangles, %lld nodes, min angle %.1f deg\n",
-               static_cast<long long>(r.twin_mesh.triangle_count), static_cast<long long>(r.twin_mesh.node_count),
-               r.twin_mesh.min_angle_deg);
-  std::printf("wrote %zu frames of %lld electrodes to %s and the presses to %s\n", r.frames.size(),
-              static_cast<long long>(r.frames.empty() ? 0 : r.frames[0].rows()), job.out_path.c_str(),
-              r.truth_path.c_str());
-  if (a.print_table)
-    for (const Frame& frame : r.frames) print_frame_table(frame);
-  else print_frames_summary(r.frames, r.presses);
-  if (!job.images_dir.empty()) std::printf("wrote %zu images to %s/\n", r.frames.size(), job.images_dir.c_str());
-  if (r.realistic) print_realistic(*r.realistic, r.sheet_path);
+  print_simulate_report(job, run_simulate_job(job, stderr_progress()), a.print_table);
 }
 
 }  // namespace

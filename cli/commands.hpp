@@ -1,6 +1,8 @@
 #pragma once
 // The emit command-line tool: one file per subcommand. A command parses its options into the
 // library's job, calls it, and prints what it returns; it holds no maths and no pipeline.
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,8 +15,15 @@
 #include "emit/sensor/press.hpp"
 
 namespace emit {
+struct EvalCase;
 struct RealisticEvaluation;
-}
+struct RealisticSheet;
+struct SimulateJob;
+struct SimulateReport;
+struct SheetEvalReport;
+struct RealEvalJob;
+struct RealEvalReport;
+}  // namespace emit
 
 namespace emit::cli {
 
@@ -43,6 +52,11 @@ const CLI::Validator& non_negative_number();
 const CLI::Validator& fraction_below_one();
 const CLI::Validator& positive_integer();
 const CLI::Validator& non_negative_integer();
+/// A seed given as `option`'s value: a whole number 0 or larger (not CLI11's unsigned parse, which
+/// takes -1). \throw InvalidInput naming the option.
+std::uint64_t parse_seed(const std::string& option, const std::string& text);
+/// One value (a, a) or two (a range). \throw InvalidInput naming the option for another count.
+std::array<double, 2> pair_or_single(const std::vector<double>& values, const std::string& option);
 
 /// The one-line message for a command line CLI11 refused: CLI11's own, except for a command that
 /// does not exist ("unknown command \"reconstuct\" (did you mean \"reconstruct\"?)").
@@ -55,10 +69,20 @@ std::string cache_dir_option(const std::string& cache_dir, bool no_cache);
 /// cmake/install_rules.cmake) when there is one, else the source tree's examples/sensors.
 std::string examples_dir();
 
-/// `emit eval --realistic`'s table for one sheet: each figure beside issue 14's target
+/// `emit eval --realistic`'s table for one sheet: each figure beside its target
 /// (realistic_eval_table.cpp).
 void print_realistic_evaluation(const RealisticEvaluation& evaluation);
+/// `emit eval`'s table for one sheet: each method's errors beside the paper's (eval_tables.cpp).
+void print_sheet_evaluation(const EvalCase& eval_case, const SheetEvalReport& report, bool sweep);
+/// `emit eval --real`'s report: the held-out error and its curve (eval_tables.cpp).
+void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report);
 
+/// The realistic sheet's summary on stderr, for the user to compare a calibration with; `path`: the
+/// file holding all of it.
+void print_realistic_sheet(const RealisticSheet& sheet, const std::string& path);
+/// What `emit simulate` did: the twin's mesh (stderr), the files written, and the frames as a
+/// summary or, with `table`, each in full.
+void print_simulate_report(const SimulateJob& job, const SimulateReport& report, bool table);
 /// A short table of frames: presses and the largest readings.
 void print_frames_summary(const std::vector<Frame>& frames, const PressSequence& presses);
 /// One frame as an N×N table of volts (rows: grounded electrode, columns: sensed electrode).

@@ -1,5 +1,5 @@
 // The table `emit eval --realistic` prints: each figure of the realistic round, with the nominal
-// file and after the sensor's calibration, beside issue 14's target (eval/realistic_evaluation.hpp).
+// file and after the sensor's calibration, beside its target (eval/realistic_evaluation.hpp).
 #include <cstdio>
 #include <string>
 
@@ -41,7 +41,7 @@ void print_realistic_evaluation(const RealisticEvaluation& e) {
       k.reference_frames, k.calibration_presses, k.test_presses, e.radius_mm, e.triangles);
   if (k.calibration_iterations > 0)
     std::printf("  the sensor calibration stopped after at most %d iterations\n", k.calibration_iterations);
-  std::printf("  %-52s %-14s %-20s %-14s\n", "contact fitting", "nominal file", "calibrated", "issue 14");
+  std::printf("  %-52s %-14s %-20s %-14s\n", "contact fitting", "nominal file", "calibrated", "target");
   print_row("position, mean", format("%.3f mm", n.position_mm.mean), format("%.3f mm", c.position_mm.mean),
             format("<= %.1f mm", T::position_mean_mm), c.position_mm.mean <= T::position_mean_mm);
   print_row("position, p95", format("%.3f mm", n.position_mm.p95), format("%.3f mm", c.position_mm.p95),

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   g++ cmake make pkg-config             # toolchain
+  ccache                                # compiles reused across clones (CMakeLists.txt)
   libgmsh-dev                           # meshing (Gmsh's C++ API)
   libeigen3-dev                         # dense and sparse linear algebra
   libcli11-dev nlohmann-json3-dev       # command line, JSON

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The soak test of `emit live` (issue 13: nothing lost, nothing crashes, nothing unbounded).
+# The soak test of `emit live`: nothing lost, nothing crashes, nothing unbounded.
 #
 #   scripts/soak.sh [MINUTES]      (default 30; a fraction is fine: 0.34 is the suite's short run)
 #

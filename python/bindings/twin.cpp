@@ -62,7 +62,7 @@ applies the sensor's ADC (quantisation, noise, clipping) unless adc=False.)")
           py::arg("presses"), "A (frames, N, N) array: one frame per list of presses.")
       .def(
           "exact_frame",
-          [](const Twin& twin, const std::vector<Press>& presses) {
+          [](Twin& twin, const std::vector<Press>& presses) {
             Frame frame;
             {
               const EmitCall call;

@@ -26,7 +26,7 @@ struct Blocks {
   std::vector<double> shift_mm;       ///< each electrode's slide along the border
 };
 constexpr double series_unit_ohm = 100;
-// The priors: the plausible range of a real sheet (issue 14), one σ each.
+// The priors: the plausible range of a real sheet (twin/realistic_sheet.hpp), one σ each.
 constexpr double theta_prior_std = 1.0;  // a factor e over half the sheet
 constexpr double log_drive_prior_std = 0.1;
 constexpr double series_prior_std = 3.0;  // 300 Ω

@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/fem/electrode_dofs.hpp"
 #include "emit/fem/stiffness.hpp"
 #include "emit/fem/supernodal_cholesky.hpp"
@@ -166,6 +167,7 @@ double normal_equations_seconds(const Matrix& J, double lambda2) {
 }  // namespace
 
 PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
+  options.validate();
   Sensor sensor = sensor_in;
   PipelineTiming timing;
   const Mesh mesh = timed_mesh(sensor, options, timing);
@@ -205,6 +207,7 @@ PipelineTiming time_pipeline(const Sensor& sensor_in, const PipelineTimingOption
 }
 
 PipelineTiming time_eit_pipeline(const Sensor& sensor_in, const PipelineTimingOptions& options) {
+  options.validate();
   if (!sensor_in.excitation) throw InvalidInput("bench: a current-injection case needs a sensor with an excitation");
   Sensor sensor = sensor_in;
   PipelineTiming timing;
@@ -256,4 +259,9 @@ BaselineTiming time_baselines(const Sensor& sensor_in, const PipelineTimingOptio
   return timing;
 }
 
+void PipelineTimingOptions::validate() const {
+  option_check::at_least("PipelineTimingOptions", "target_triangles", target_triangles, 1);
+  option_check::non_negative("PipelineTimingOptions", "element_size_mm", element_size_mm);
+  option_check::positive("PipelineTimingOptions", "seconds_per_figure", seconds_per_figure);
+}
 }  // namespace emit

@@ -40,7 +40,7 @@ void RealisticEvalOptions::validate() const {
   at_least(counts.presses_per_indenter, 1, "presses_per_indenter");
   at_least(counts.multi_press_frames, 1, "multi_press_frames");
   at_least(counts.calibration_iterations, 0, "calibration_iterations");
-  validate_realistic_sheet_options(sheet);
+  sheet.validate();
 }
 
 namespace {

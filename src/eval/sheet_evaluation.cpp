@@ -14,6 +14,7 @@
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/calibrate/contact_law_calibration.hpp"
 #include "emit/calibrate/sensor_calibration.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/eval/linear_robustness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/mesh/sheet_file.hpp"
@@ -38,7 +39,7 @@ std::vector<EvalCase> standard_eval_cases(const std::string& dir) {
       {"30 x 30 mm sheet", load_sensor(dir + "/square30.json"), 3.0, 1.0, 2.5, "paper: 1.74 mm", true},
       {"circle, r = 40 mm", load_sensor(dir + "/circle40.json"), 8.0, 2.0, 5.0, "paper: -", false},
       {"120 x 120 mm sheet", load_sensor(dir + "/square120_32.json"), 12.0, 4.0, 5.0, "paper: -", false, 2},
-      // Issue 15's cap: presses of r = 4 mm at least 6 mm from the rim along the surface (a
+      // The cap: presses of r = 4 mm at least 6 mm from the rim along the surface (a
       // margin of 5 mm seen from +z is 7.1 mm along it); the paper's 3.49 mm on its 60 mm sheet is
       // 5.8 % of the size: 2.3 mm of the rim's 40 mm.
       {"dome, R 25 mm, a 20 mm", load_sensor(dir + "/dome25.json"), 4.0, 1.5, 4.0, "paper: 5.8 % = 2.3 mm", true},
@@ -124,7 +125,7 @@ void evaluate_automatic_lambda(const EvalCase& c, const Runs& runs, Reconstructi
   model.op = family.compact_operator_for(result.auto_lambda2, model.options.rank_cutoff);
   Reconstructor tested(model, LinearCalibration::uncalibrated(c.sensor));
   FrameOptions untested_options;
-  untested_options.false_alarm_rate = 0;  // as before issue 14: every region above the threshold
+  untested_options.false_alarm_rate = 0;  // as the paper method first stood: every region above the threshold
   untested_options.min_contact_cells = 0;
   Reconstructor untested(model, LinearCalibration::uncalibrated(c.sensor), untested_options);
   result.auto_position = localisation_errors(tested, runs.grid, 0.5).image_centroid;
@@ -282,6 +283,7 @@ std::string file_stem(const std::string& name) {
 }  // namespace
 
 SheetEvaluation evaluate_sheet(const EvalCase& eval_case, const EvalOptions& options, const Progress& progress) {
+  options.validate();
   SheetEvaluation evaluation;
   progress.say("  simulating");
   const Runs runs = simulate_case(eval_case, options);
@@ -352,4 +354,8 @@ std::vector<std::string> write_sweep_plots(const EvalCase& eval_case, const Shee
   return {stem + "_error_vs_lambda.png", stem + "_l_curve.png"};
 }
 
+void EvalOptions::validate() const {
+  if (methods.empty()) option_check::fail("EvalOptions", "methods", "one method or more", "none");
+  for (const double l : lambda2) option_check::positive("EvalOptions", "lambda2", l);
+}
 }  // namespace emit

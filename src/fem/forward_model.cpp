@@ -19,8 +19,8 @@ struct ForwardModel::Impl {
   ElectrodeDofs dofs;
   SparseMatrix stiffness_dof;               ///< K in dof space [S]
   std::optional<CoupledAssembler> driving;  ///< a resistive driving layer; none: an equipotential
-  mutable SparseCholesky cholesky;
-  std::vector<double> series_ohm;  ///< per electrode; empty: grounded directly
+  SparseCholesky cholesky;                  ///< the grounded pattern analysed once; each solve factorises into it
+  std::vector<double> series_ohm;           ///< per electrode; empty: grounded directly
 
   void set_mesh(Mesh new_mesh) {
     if (new_mesh.electrode_count() < 2) throw InvalidInput("the mesh needs at least 2 electrodes");
@@ -45,7 +45,7 @@ struct ForwardModel::Impl {
   }
 
   /// Dof potentials, dof_count by N: column l is the solution with electrode l grounded.
-  Matrix solve_dofs(const ContactLoad& contact, double E) const {
+  Matrix solve_dofs(const ContactLoad& contact, double E) {
     const int n = dofs.dof_count, N = dofs.electrode_count;
     if (contact.empty()) return Matrix::Zero(n, N);
     const auto [F, drive] = system_for(contact);
@@ -125,7 +125,7 @@ void ForwardModel::set_series_resistance(std::vector<double> ohm) {
   impl_->series_ohm = std::move(ohm);
 }
 
-Frame ForwardModel::solve_frame(const ContactLoad& contact, double drive_voltage_V) const {
+Frame ForwardModel::solve_frame(const ContactLoad& contact, double drive_voltage_V) {
   const int N = electrode_count();
   const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);
   Frame frame = U.topRows(N).transpose();  // frame(l, m) = potential of electrode m, ground l
@@ -135,7 +135,7 @@ Frame ForwardModel::solve_frame(const ContactLoad& contact, double drive_voltage
   return frame;
 }
 
-Matrix ForwardModel::solve_potentials(const ContactLoad& contact, double drive_voltage_V) const {
+Matrix ForwardModel::solve_potentials(const ContactLoad& contact, double drive_voltage_V) {
   const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);
   Matrix nodal(impl_->mesh.node_count(), electrode_count());
   for (Index v = 0; v < nodal.rows(); ++v) nodal.row(v) = U.row(impl_->dofs.dof_of_node[v]);

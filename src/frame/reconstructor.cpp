@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/model/image_noise.hpp"
 
 namespace emit {
@@ -21,13 +22,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
       pressure_(model.mesh.triangle_count()),
       selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
       operator_scratch_(model.op.scratch()) {
-  if (!(options.threshold_fraction > 0 && options.threshold_fraction < 1))
-    throw InvalidInput("threshold must be a fraction between 0 and 1, got " +
-                       std::to_string(options.threshold_fraction));
-  if (!(options.false_alarm_rate >= 0 && options.false_alarm_rate < 1))
-    throw InvalidInput("false-alarm rate must be in [0, 1), got " + std::to_string(options.false_alarm_rate));
-  if (!(options.min_contact_cells >= 0))
-    throw InvalidInput("min contact cells must be 0 or more, got " + std::to_string(options.min_contact_cells));
+  options.validate();
   double sheet_area_mm2 = 0;
   for (Index t = 0; t < model.mesh.triangle_count(); ++t) sheet_area_mm2 += model.mesh.triangle_area_mm2(t);
   const double cell_mm2 = sheet_area_mm2 / std::max(1, model.measurements.size());
@@ -143,4 +138,13 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
   return fitted_;
 }
 
+void FrameOptions::validate() const {
+  if (!(threshold_fraction > 0 && threshold_fraction < 1))
+    option_check::fail("FrameOptions", "threshold_fraction", "a fraction in (0, 1)",
+                       std::to_string(threshold_fraction));
+  option_check::non_negative("FrameOptions", "min_contact_area_mm2", min_contact_area_mm2);
+  option_check::non_negative("FrameOptions", "min_contact_cells", min_contact_cells);
+  if (!(false_alarm_rate >= 0 && false_alarm_rate < 1))
+    option_check::fail("FrameOptions", "false_alarm_rate", "in [0, 1)", std::to_string(false_alarm_rate));
+}
 }  // namespace emit

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 
 namespace emit {
 
@@ -47,10 +48,8 @@ Reference average_reference(const std::vector<Frame>& frames) {
 }
 
 void ReferenceOptions::validate() const {
-  if (capture_frames < 1)
-    throw InvalidInput("reference: capture_frames must be at least 1, got " + std::to_string(capture_frames));
-  if (!(drift_rate >= 0 && drift_rate <= 1))
-    throw InvalidInput("reference: drift_rate must be in [0, 1], got " + std::to_string(drift_rate));
+  option_check::at_least("ReferenceOptions", "capture_frames", capture_frames, 1);
+  option_check::within("ReferenceOptions", "drift_rate", drift_rate, 0, 1);
 }
 
 ReferenceTracker::ReferenceTracker(ReferenceOptions options) : options_(options) { options_.validate(); }

@@ -47,7 +47,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
                 {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path},
                  {"--record", job.record_path},
                  {"--mcap", job.mcap_path}});
-  if (!job.dds_prefix.empty()) check_dds_options({job.dds_prefix, job.dds_domain});
+  if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain}.validate();
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");

@@ -82,7 +82,7 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
     }
   report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv") : job.truth_path;
   if (job.realistic) {
-    validate_realistic_sheet_options(*job.realistic);
+    job.realistic->validate();
     report.sheet_path = job.sheet_path.empty() ? beside_out(job.out_path, "_sheet.json") : job.sheet_path;
   }
   std::vector<NamedPath> outputs{{"--out", job.out_path}, {"--truth", report.truth_path}};

@@ -39,11 +39,10 @@ Sequence borrowed(T* data, std::size_t count) {
 
 }  // namespace
 
-void check_dds_options(const DdsOptions& options) {
-  if (options.domain < 0 || options.domain > 232)
-    throw InvalidInput("--dds-domain " + std::to_string(options.domain) +
-                       ": a DDS domain is a whole number from 0 to 232");
-  const std::string& p = options.prefix;
+void DdsOptions::validate() const {
+  if (domain < 0 || domain > 232)
+    throw InvalidInput("--dds-domain " + std::to_string(domain) + ": a DDS domain is a whole number from 0 to 232");
+  const std::string& p = prefix;
   bool ok = !p.empty() && std::isdigit(static_cast<unsigned char>(p[0])) == 0 && p.find("//") == std::string::npos &&
             p.back() != '/';
   for (const char c : p) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/');
@@ -85,7 +84,7 @@ struct DdsPublisher::Impl {
 
 DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_name, const Mesh& mesh)
     : impl_(std::make_unique<Impl>()) {
-  check_dds_options(options);
+  options.validate();
   Impl& s = *impl_;
   s.sensor_name = sensor_name;
   s.participant = checked(dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),

@@ -1,6 +1,7 @@
 #include "emit/live/live_loop.hpp"
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 
 namespace emit {
@@ -17,13 +18,10 @@ constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in th
 
 LiveLoop::LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& options)
     : source_(source),
-      options_(options),
+      options_((options.validate(), options)),  // checked before anything is built for it
       reconstructor_(pipeline.reconstructor(options.frame)),
       reference_(options.reference),
-      no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {
-  if (options.poll.count() <= 0) throw InvalidInput("live: the poll interval must be positive");
-  if (!(options.max_seconds >= 0)) throw InvalidInput("live: the time limit must be 0 (none) or positive");
-}
+      no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {}
 
 bool LiveLoop::command(const std::string& name) {
   if (name != "recapture") return false;
@@ -104,4 +102,10 @@ void LiveLoop::publish(LiveFrame& frame) {
   for (FramePublisher* publisher : publishers_) publisher->publish(frame);
 }
 
+void LiveOptions::validate() const {
+  reference.validate();
+  frame.validate();
+  option_check::non_negative("LiveOptions", "max_seconds", max_seconds);
+  option_check::at_least("LiveOptions", "poll", poll.count(), 1);
+}
 }  // namespace emit

@@ -7,6 +7,7 @@
 namespace emit {
 
 std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options) {
+  options.validate();
   if (spec == "sim" || spec.rfind("sim:", 0) == 0) {
     if (options.loop)
       throw InvalidInput("source \"" + spec + "\": only a recording (file:PATH) can be replayed in a loop");

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/core/quote_input.hpp"
 #include "emit/mesh/cylinder.hpp"
 #include "emit/mesh/flatness.hpp"
@@ -80,9 +81,7 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
                          ": a curved surface whose sensor was read without it (mesh/sheet_file.hpp load_sheet_sensor)");
     return mesh;
   }
-  if (!(options.element_size_mm > 0) || !(options.electrode_edge_size_factor > 0))
-    throw InvalidInput("mesh: element size and edge size factor must be positive");
-  if (options.smoothing_steps < 0) throw InvalidInput("mesh: smoothing steps must be 0 or more");
+  options.validate();
   check_triangle_estimate(sensor, options, estimated_triangle_count(sensor, options));
   // A cap: its disc, at the size that the wrapping's stretch brings back to the element size.
   const bool cap = sensor.shape.kind == ShapeKind::spherical_cap;
@@ -96,4 +95,10 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   return mesh;
 }
 
+void MeshOptions::validate() const {
+  option_check::positive("MeshOptions", "element_size_mm", element_size_mm);
+  option_check::positive("MeshOptions", "electrode_edge_size_factor", electrode_edge_size_factor);
+  option_check::at_least("MeshOptions", "smoothing_steps", smoothing_steps, 0);
+  option_check::positive("MeshOptions", "max_triangles", max_triangles);
+}
 }  // namespace emit

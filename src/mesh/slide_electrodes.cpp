@@ -5,6 +5,7 @@
 #include <string>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 
 namespace emit {
 
@@ -82,6 +83,7 @@ void check_shifts(const Sensor& sensor, const std::vector<double>& shift_mm) {
 
 Mesh slide_electrodes(const Mesh& mesh, const Sensor& sensor, const std::vector<double>& shift_mm,
                       const SlideOptions& options) {
+  options.validate();
   check_shifts(sensor, shift_mm);
   if (mesh.electrode_count() != static_cast<int>(sensor.electrodes.size()))
     throw InvalidInput("sliding electrodes: the mesh has " + std::to_string(mesh.electrode_count()) +
@@ -143,4 +145,8 @@ Sensor with_electrodes_slid(const Sensor& sensor, const std::vector<double>& shi
   return out;
 }
 
+void SlideOptions::validate() const {
+  option_check::non_negative("SlideOptions", "rigid_mm", rigid_mm);
+  option_check::positive("SlideOptions", "reach_mm", reach_mm);
+}
 }  // namespace emit

@@ -13,6 +13,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   auto say = [&](const std::string& stage) {
     if (progress) progress(stage);
   };
+  options.validate();  // before the mesh and the Jacobian are made for it
   ReconstructionModel model;
   model.options = options;
   model.uncalibrated = LinearCalibration::uncalibrated(sensor);

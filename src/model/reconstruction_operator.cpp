@@ -10,6 +10,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/large_matrix.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/fem/sparse_cholesky.hpp"
 #include "emit/model/lambda_rule.hpp"
 #include "emit/model/symmetric_eigen.hpp"
@@ -83,11 +84,13 @@ void check_lambda2(double lambda2) {
 }  // namespace
 
 Matrix build_reconstruction_operator(const Matrix& J, const Mesh& mesh, const OperatorOptions& options) {
+  options.validate();
   const OperatorFamily family(J, mesh, options.prior, options.noser_exponent);
   return family.operator_for(family.lambda2_for(options));
 }
 
 CompactOperator build_compact_operator(Matrix J, const Mesh& mesh, const OperatorOptions& options) {
+  options.validate();
   const OperatorFamily family(std::move(J), mesh, options.prior, options.noser_exponent);
   return family.compact_operator_for(family.lambda2_for(options), options.rank_cutoff);
 }
@@ -177,4 +180,10 @@ CompactOperator OperatorFamily::compact_operator_for(double lambda2, double rela
                          lambda2);
 }
 
+void OperatorOptions::validate() const {
+  option_check::zero_or_positive("OperatorOptions", "lambda2", lambda2, "chosen from the spectrum");
+  option_check::positive("OperatorOptions", "relative_lambda2", relative_lambda2);
+  option_check::non_negative("OperatorOptions", "noser_exponent", noser_exponent);
+  option_check::within("OperatorOptions", "rank_cutoff", rank_cutoff, 0, 1);
+}
 }  // namespace emit

@@ -1,6 +1,7 @@
 #include "emit/pipeline/pipeline.hpp"
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/sensor/sensor.hpp"
 
@@ -9,6 +10,7 @@ namespace emit {
 namespace {
 
 OperatorOptions linear_options(const PipelineOptions& options) {
+  options.validate();  // a λ² below 0 or not a number is refused, not taken for the default
   OperatorOptions linear = operator_options(options.method);
   if (options.lambda2 > 0) linear.lambda2 = options.lambda2;
   return linear;
@@ -90,4 +92,8 @@ std::vector<std::vector<Contact>> Pipeline::reconstruct_batch(const FrameOptions
                                  model_.measurements.electrode_count, threads);
 }
 
+void PipelineOptions::validate() const {
+  option_check::zero_or_positive("PipelineOptions", "lambda2", lambda2, "the method's");
+  for (const int electrode : excluded) option_check::at_least("PipelineOptions", "excluded", electrode, 0);
+}
 }  // namespace emit

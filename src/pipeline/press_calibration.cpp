@@ -5,6 +5,7 @@
 #include "emit/calibrate/contact_law_calibration.hpp"
 #include "emit/calibrate/pressure_calibration.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
@@ -71,6 +72,7 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
                                               const Reference& reference, const std::vector<Frame>& frames,
                                               const PressSequence& truth,
                                               const std::function<void(const std::string&)>& progress) {
+  options.validate();
   if (truth.size() != frames.size())
     throw InvalidInput("calibration: " + std::to_string(truth.size()) + " frames of presses for " +
                        std::to_string(frames.size()) + " frames");
@@ -102,4 +104,11 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
   return result;
 }
 
+void PressCalibrationOptions::validate() const {
+  option_check::zero_or_positive("PressCalibrationOptions", "lambda2", lambda2, "the method's");
+  if (!(threshold_fraction > 0 && threshold_fraction < 1))
+    option_check::fail("PressCalibrationOptions", "threshold_fraction", "a fraction in (0, 1)",
+                       std::to_string(threshold_fraction));
+  sensor.validate();
+}
 }  // namespace emit

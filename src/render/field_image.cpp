@@ -6,6 +6,7 @@
 
 #include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "field_drawing.hpp"
 
 namespace emit {
@@ -169,6 +170,7 @@ void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Ci
 
 Image render_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
                    const FieldImageOptions& options, FieldLayout* layout) {
+  options.validate();
   detail::check_field_inputs(mesh, nodal_values, /*check_z=*/false, "render_field");
   const Bounds sheet = sheet_bounds(mesh);
   const detail::ValueRange range = detail::value_range(nodal_values, options, "render_field");
@@ -185,4 +187,13 @@ Image render_field(const Mesh& mesh, const Vector& nodal_values, const std::vect
   return image;
 }
 
+void FieldImageOptions::validate() const {
+  option_check::within("FieldImageOptions", "width_px", width_px, 1, 16384);
+  // NaN: the field's own; a value given is a number, and the range is not empty.
+  if (std::isinf(min_value)) option_check::fail("FieldImageOptions", "min_value", "finite or NaN", "inf");
+  if (std::isinf(max_value)) option_check::fail("FieldImageOptions", "max_value", "finite or NaN", "inf");
+  if (min_value >= max_value)
+    option_check::fail("FieldImageOptions", "max_value", "above min_value (" + std::to_string(min_value) + ")",
+                       std::to_string(max_value));
+}
 }  // namespace emit

@@ -9,6 +9,7 @@
 
 #include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 
 namespace emit {
 
@@ -521,6 +522,7 @@ void draw_legend(Image& image, const PlotLayout& l, const std::vector<PlotSeries
 }  // namespace
 
 Image render_line_plot(const std::vector<PlotSeries>& series, const PlotOptions& options, PlotLayout* layout) {
+  options.validate();
   std::vector<std::vector<DataPoint>> points;
   std::size_t drawn = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
@@ -543,4 +545,8 @@ Image render_line_plot(const std::vector<PlotSeries>& series, const PlotOptions&
   return image;
 }
 
+void PlotOptions::validate() const {
+  option_check::within("PlotOptions", "width_px", width_px, 1, 16384);
+  option_check::within("PlotOptions", "height_px", height_px, 1, 16384);
+}
 }  // namespace emit

@@ -29,7 +29,8 @@ std::string format_line(const char* format, double a, double b = 0, double c = 0
 
 }  // namespace
 
-void validate_realistic_sheet_options(const RealisticSheetOptions& o) {
+void RealisticSheetOptions::validate() const {
+  const RealisticSheetOptions& o = *this;
   const auto check = [](bool ok, const char* message) {
     if (!ok) throw InvalidInput(message);
   };
@@ -47,7 +48,7 @@ void validate_realistic_sheet_options(const RealisticSheetOptions& o) {
 
 RealisticSheet make_realistic_sheet(const Sensor& nominal, const RealisticSheetOptions& options,
                                     const TwinOptions& base) {
-  validate_realistic_sheet_options(options);
+  options.validate();
   if (!nominal.border) throw InvalidInput("a realistic sheet needs an analytic border, not a mesh file");
   RealisticSheet sheet;
   // One stream of draws, in a fixed order, so a seed is one sheet; each part that draws many

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/sensor/adc.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/adc_noise.hpp"
@@ -33,7 +34,8 @@ Vector sheet_conductance_S(const Mesh& mesh, double sheet_resistance_ohm_per_sq,
 }
 
 ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
-  require_emit_protocol(sensor, "sensor \"" + sensor.name + "\"");  // before meshing
+  options.validate();  // before meshing
+  require_emit_protocol(sensor, "sensor \"" + sensor.name + "\"");
   Mesh mesh = generate_mesh(sensor, options.mesh ? *options.mesh : twin_mesh_options(sensor, options.mesh_seed));
   const Vector conductance = sheet_conductance_S(mesh, sensor.sheet_resistance_ohm_per_sq, options);
   std::optional<DrivingLayer> driving;
@@ -49,12 +51,7 @@ ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
 }  // namespace
 
 Twin::Twin(Sensor sensor, const TwinOptions& options)
-    : sensor_(std::move(sensor)), options_(options), model_(twin_model(sensor_, options)), rng_(options.noise_seed) {
-  if (!(std::abs(options.sheet_resistance_variation) < 1))
-    throw InvalidInput("sheet resistance variation must be a fraction below 1");
-  if (!(options.cover_blur_mm >= 0) || !std::isfinite(options.cover_blur_mm))
-    throw InvalidInput("cover blur must be finite and >= 0 mm");
-}
+    : sensor_(std::move(sensor)), options_(options), model_(twin_model(sensor_, options)), rng_(options.noise_seed) {}
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
   std::vector<Press> on_sheet = presses;
@@ -71,7 +68,7 @@ ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
   return press_contact_load(mesh(), on_sheet, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
 }
 
-Frame Twin::exact_frame(const std::vector<Press>& presses) const {
+Frame Twin::exact_frame(const std::vector<Press>& presses) {
   return model_.solve_frame(contact_of(presses), sensor_.drive_voltage_V);
 }
 
@@ -91,8 +88,20 @@ Frame Twin::frame(const std::vector<Press>& presses, std::vector<std::uint16_t>*
   return f;
 }
 
-Matrix Twin::potentials(const std::vector<Press>& presses) const {
+Matrix Twin::potentials(const std::vector<Press>& presses) {
   return model_.solve_potentials(contact_of(presses), sensor_.drive_voltage_V);
 }
 
+void TwinOptions::validate() const {
+  if (mesh) mesh->validate();
+  option_check::within("TwinOptions", "quadrature_levels", quadrature_levels, 0, 10);
+  option_check::at_least("TwinOptions", "dead_electrode", dead_electrode, -1);
+  if (!(std::abs(sheet_resistance_variation) < 1))
+    option_check::fail("TwinOptions", "sheet_resistance_variation", "a fraction in (-1, 1)",
+                       std::to_string(sheet_resistance_variation));
+  for (const double ohm : series_resistance_ohm)
+    option_check::non_negative("TwinOptions", "series_resistance_ohm", ohm);
+  option_check::non_negative("TwinOptions", "cover_blur_mm", cover_blur_mm);
+  option_check::non_negative("TwinOptions", "driving_sheet_resistance_ohm_per_sq", driving_sheet_resistance_ohm_per_sq);
+}
 }  // namespace emit

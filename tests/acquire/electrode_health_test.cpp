@@ -44,7 +44,7 @@ TEST(ElectrodeHealth, HealthyFramesHaveNoDeadElectrode) {
   EXPECT_TRUE(find_dead_electrodes({twin.frame({})}, sensor.adc).empty());  // no signal, no verdict
 }
 
-// Issue 13: volts below 0 or above the ADC's reference were read without a word (volts in mV, or
+// Volts below 0 or above the ADC's reference used to be read without a word (volts in mV, or
 // another board's frames). The rail tolerance is max(2 steps, 5 σ) = 5 mV on the default ADC.
 TEST(ElectrodeHealth, ReadingsAnAdcCannotGiveAreAnError) {
   const Sensor sensor = default_sensor();
@@ -64,7 +64,7 @@ TEST(ElectrodeHealth, ReadingsAnAdcCannotGiveAreAnError) {
   EXPECT_THROW(check_readings_in_range(frame, sensor.adc, "f.csv:1"), InvalidInput);
 }
 
-// Issue 13: a pressed frame given as the reference was used without a word.
+// A pressed frame given as the reference was once taken without a word.
 TEST(ElectrodeHealth, APressedReferenceLooksPressed) {
   const Sensor sensor = default_sensor();
   Twin twin(sensor);

@@ -1,4 +1,4 @@
-// The serial path end to end (issue 6, "what it must show"): the firmware core's Scanner, on a
+// The serial path end to end: the firmware core's Scanner, on a
 // host board that reads the digital twin, writes packets v1 to a pseudo-terminal; the host opens
 // the other end as "serial:/dev/pts/N", decodes, and reconstructs the presses the twin was given.
 // Then: garbage injected mid-stream loses only the frames it touches; a pulled cable is retried
@@ -139,8 +139,8 @@ TEST(SerialEndToEnd, TwinFramesCrossAPtyAndReconstructToThePresses) {
     const Press& press = presses[k][0];
     const double error_mm = std::hypot(strongest.x_mm - press.x_mm, strongest.y_mm - press.y_mm);
     std::printf("frame %zu: press %.0f, %.0f -> %.3f mm off\n", k, press.x_mm, press.y_mm, error_mm);
-    // contact_fitter_test: single presses on the twin come out 0.3 mm off on average (issue 4's
-    // target) with the same noisy untouched reference; a single one within 0.5 mm.
+    // contact_fitter_test: single presses on the twin come out 0.3 mm off on average (the 60 mm
+    // sheet's target) with the same noisy untouched reference; a single one within 0.5 mm.
     EXPECT_LT(error_mm, 0.5) << "frame " << k;
     // Anything else found beside the press is faint (the same noise bound as untouched frames).
     EXPECT_LT(force_N - strongest.force_N, 0.1) << "frame " << k;

@@ -38,7 +38,7 @@ struct Sheet30 {
   MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
 };
 
-/// The sheet alone (quadratic, as issue 4 made it): the electrodes and the drive held nominal.
+/// The sheet alone (quadratic, as first calibrated): the electrodes and the drive held nominal.
 SensorCalibration calibrate(const Sheet30& s, const SimulatedRun& run) {
   SensorCalibrationOptions sheet_only;
   sheet_only.sheet_terms = SheetCorrection::quadratic_terms;

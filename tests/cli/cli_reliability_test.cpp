@@ -1,6 +1,6 @@
-// End to end, issue 13's findings that need more than one bad command line (cli_test.cpp's
-// CliBadInput holds the rest): a signal mid-run, a failing live source, warnings that let the run
-// go on, and options after the command.
+// End to end, the cases of docs/bad-input.md that need more than one bad command line
+// (cli_test.cpp's CliBadInput holds the rest): a signal mid-run, a failing live source, warnings
+// that let the run go on, and options after the command.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>

@@ -85,7 +85,7 @@ TEST(Cli, TwoFingerAndMovingScripts) {
   EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
 }
 
-// Issue 14: a realistic sheet with three spherical fingers, and what it drew beside the frames.
+// A realistic sheet with three spherical fingers, and what it drew beside the frames.
 TEST(Cli, RealisticSheetWithThreeFingers) {
   const std::string dir = test::temp_folder("cli_realistic");
   const auto r = run_emit("simulate --sensor " + source_path("examples/sensors/square30.json") +
@@ -168,9 +168,9 @@ void write_zero_reference(const std::string& path) {
 
 // A curved .msh is a sensor (sensor/height_field.hpp): the dome meshed to a file, pressed at
 // (3, 4) and fitted, is found on the dome's surface there, z = √(25² − 25) − 15 = 9.49 mm (the
-// file is both twin and reconstruction mesh: the bound is issue 15's 0.3 mm). The sleeve, whose
-// sides are vertical and whose underside +z sees through its top, is refused in one line, naming
-// where.
+// file is both twin and reconstruction mesh: the bound is the curved sheets' target, 0.3 mm). The
+// sleeve, whose sides are vertical and whose underside +z sees through its top, is refused in one
+// line, naming where.
 TEST(Cli, ACurvedMeshFileIsASensorAndAFoldedOneIsRefused) {
   const std::string dir = test::temp_folder("cli_curved_msh");
   for (const std::string sheet : {"dome25", "sleeve"})
@@ -207,7 +207,7 @@ TEST(Cli, ACurvedMeshFileIsASensorAndAFoldedOneIsRefused) {
 
 // Contact fitting on a curved sheet, checked on frames nobody here simulated: the independent
 // implementation's dome frames (80k triangles; without a press the probing layer carries no
-// current, so the reference is all zeros). Issue 15's targets: single presses within 0.3 mm in
+// current, so the reference is all zeros). The targets: single presses within 0.3 mm in
 // 3D on average, both of two presses within 2 mm. Measured: 0.009 and 0.13 mm; the pair 0.016
 // and 0.46 mm (the weak 0.05 N/mm² press beside a 0.3 N/mm² one). Each contact is a point of the
 // sphere with its outward normal.
@@ -243,7 +243,7 @@ TEST(Cli, FitsContactsOnTheDomesIndependentFrames) {
 }
 
 // A sleeve as a user runs it: a press given with its z (the cylinder's underside, on the chart's
-// seam) is simulated, and contact fitting finds it within issue 15's 0.3 mm, on the cylinder with
+// seam) is simulated, and contact fitting finds it within the 0.3 mm target, on the cylinder with
 // the radial normal; the truth file carries the press's z.
 TEST(Cli, SimulatesAndFitsAPressUnderASleeve) {
   const std::string dir = test::temp_folder("cli_sleeve");
@@ -331,7 +331,7 @@ TEST(Cli, CalibrateThenReconstruct) {
   auto contacts = parse_contacts_line(test::read_text(d + "/c.jsonl"), &frame);
   EXPECT_EQ(frame, 0);
   ASSERT_EQ(contacts.size(), 1u);
-  // Contact fitting: issue 4's targets, p95 0.6 mm and a pressure error of 0.02 N/mm².
+  // Contact fitting: the targets, p95 0.6 mm and a pressure error of 0.02 N/mm².
   EXPECT_LE(std::hypot(contacts[0].x_mm - 21, contacts[0].y_mm - 37), 0.6);
   EXPECT_NEAR(contacts[0].pressure_N_per_mm2, 12 / (std::numbers::pi * 25), 0.02);
   // Reported with the calibration presses' indenter (radius 5 mm): the force is the press's, to
@@ -372,7 +372,7 @@ TEST(Cli, CalibrateThenReconstruct) {
 
 // A sheet 20 % more resistive on one side than the other (the reconstruction is told the nominal
 // one): `emit calibrate` fits the variation from the calibration presses, and a press elsewhere
-// is found within issue 4's 0.2 mm for the 30 mm sheet; without the correction it is millimetres off.
+// is found within the 30 mm sheet's target of 0.2 mm; without the correction it is millimetres off.
 // On the 30 mm sheet meshed at 1 mm instead of its 0.6 mm (a test's size: the twin still meshes
 // it twice as finely, and the 0.2 mm holds there, 0.01-0.04 mm measured); the electrodes' places,
 // whose fit slides the mesh and costs most, are fitted by `emit eval --realistic` (below).
@@ -389,7 +389,7 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
                 .exit_code,
             0);
   ASSERT_EQ(run_emit("simulate" + twin + " --press 9,20,2.5,3 --out " + d + "/one.csv").exit_code, 0);
-  // The sheet alone (a quadratic field, as issue 4 made it): 12 presses pin its range.
+  // The sheet alone (a quadratic field, as first calibrated): 12 presses pin its range.
   auto r = run_emit("calibrate" + sensor + " --reference " + d + "/ref.csv --frames " + d + "/cal.csv --truth " + d +
                     "/cal_presses.csv --out " + d +
                     "/calib.json --sheet-terms 5 --no-electrodes "
@@ -422,8 +422,8 @@ TEST(Cli, CalibrationCorrectsANonUniformSheet) {
   EXPECT_NE(full.find("\"determined\": true"), std::string::npos) << full;
 }
 
-// emit eval as a user runs it, on one sheet: contact fitting meets issue 4's target for the 30 mm
-// sheet (0.2 mm) on the twin, and the plots are drawn.
+// emit eval as a user runs it, on one sheet: contact fitting meets the 30 mm
+// sheet's target (0.2 mm) on the twin, and the plots are drawn.
 TEST(Cli, EvalMeasuresContactFitting) {
   const std::string d = test::temp_folder("cli_eval");
   const auto r = run_emit("eval --quick --sheet 30 --methods fit --no-mismatches --plots " + d + "/plots");
@@ -447,12 +447,13 @@ int read_row(const std::string& text, const std::string& label, const char* patt
 }
 
 // emit eval --realistic as a user runs it (--quick): the README's round on realistic sheet 3 in one
-// command, every figure beside issue 14's target. The bounds: the calibrated position meets the
-// issue's target, 0.3 mm mean and 0.6 mm p95 (it measures 0.070 and 0.110 mm here, 0.060 and
+// command, every figure beside its target. The bounds: the calibrated position meets its
+// target, 0.3 mm mean and 0.6 mm p95 (it measures 0.070 and 0.110 mm here, 0.060 and
 // 0.118 mm with the full counts); the nominal file misplaces presses by more than 1 mm (2.6 mm
-// measured: what the calibration fixes); the same indenter's force within the issue's 10 % (1.0 %
-// measured) and other indenters' within its 15 % (10.1 %: their areas' (A_cal/A)^(1/6)); no false
-// contact on single presses (none measured; one would be a regression). About 55 s in Release.
+// measured: what the calibration fixes); the same indenter's force within the target of 10 %
+// (1.0 % measured) and other indenters' within that of 15 % (10.1 %: their areas' (A_cal/A)^(1/6));
+// no false contact on single presses (none measured; one would be a regression). About 55 s in
+// Release.
 TEST(Cli, EvalRealisticRunsTheRoundAgainstTheTargets) {
   const auto r = run_emit("eval --realistic 3 --quick");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -583,7 +584,7 @@ TEST(Cli, DemoWritesFramesAndPicturesThenGoesLive) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/demo/live.emitrec"));
   EXPECT_EQ(read_frames_csv(dir + "/demo/frames.csv", 16).size(), 4u);
   for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/demo/frame_" + std::to_string(f) + ".png").height(), 100);
-  // It found every press, two fingers included, where issue 4 wants it (p95 0.6 mm).
+  // It found every press, two fingers included, within the target (p95 0.6 mm).
   const PressSequence truth = read_presses_csv(dir + "/demo/presses.csv");
   std::istringstream lines(test::read_text(dir + "/demo/contacts.jsonl"));
   std::string line;
@@ -712,7 +713,7 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
   std::ofstream(dir + "/text.csv") << csv_row(256, "volts", 3);
   std::ofstream(dir + "/short.csv") << csv_row(255, "0", -1);
   std::ofstream(dir + "/ref8.csv") << csv_row(64, "0", -1);
-  // Issue 13's inputs.
+  // Inputs emit once mishandled (docs/bad-input.md says what it does now).
   std::ofstream(dir + "/selfx.json")
       << R"({"shape":{"type":"polygon","points_mm":[[0,0],[60,0],[60,60],[30,-20],[0,60]]},"electrodes":{"count":8,"width_mm":3}})";
   std::ofstream(dir + "/huge.json")
@@ -794,7 +795,7 @@ INSTANTIATE_TEST_SUITE_P(
                "needs --reference, --frames, --truth and --out"},
         BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
         BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads: must be a whole number 1 or larger, got \"0\""},
-        // Issue 13: data lost.
+        // Runs that used to lose data.
         BadRun{"contacts over the frames", "reconstruct --reference DIR/ref.csv --frames OUT --contacts OUT --no-cache",
                "is the same file as --frames"},
         BadRun{"truth over the frames", "simulate --script none --frames 2 --out OUT --truth OUT",
@@ -879,7 +880,7 @@ std::string hydrogel_folder() {
 }
 
 // emit eval --real as a user runs it on the real hydrogel skin (Hardman et al. 2023): calibrated on
-// its first 100 presses, the held-out presses 440–549 are located within issue 16's target of
+// its first 100 presses, the held-out presses 440–549 are located within the target of
 // 5 mm mean (4.68 mm measured; the data set's kNN floor is 8.1 mm with 440 presses, the authors'
 // own method 11–14 mm); every later press is written as a contact, and the curve is drawn.
 TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {

@@ -86,7 +86,7 @@ TEST(AtomicFile, MissingFolderIsAnErrorNamingIt) {
 namespace emit {
 namespace {
 
-// Issue 13: Ctrl-C during `emit reconstruct` left a hidden ".NAME.tmpPID.jsonl" behind. A child
+// Ctrl-C during `emit reconstruct` used to leave a hidden ".NAME.tmpPID.jsonl" behind. A child
 // process opens an AtomicFile, writes, and is killed by SIGINT with the cleanup installed: the
 // temporary file is gone, the target untouched, and the child died of the signal (re-raised).
 TEST(AtomicFile, ASignalRemovesTheTemporaryFileAndStillEndsTheProcess) {

@@ -44,7 +44,7 @@ EvalCase coarse_30mm_case() {
 }
 
 // No λ² given: the rule's (model/lambda_rule.hpp) on the coarse 30 mm sheet, against a sweep of
-// 16 a decade around it. Targets (issue 14): within 15 % of the sweep's best error; false
+// 16 a decade around it. Targets: within 15 % of the sweep's best error; false
 // contacts on at most 5 % of single presses and of no-press frames; the same error (±10 %)
 // with the reference from ten frames one of which is very noisy, and from any one frame alone.
 TEST(SheetEvaluation, AutomaticLambdaNearTheSweepsBest) {

@@ -30,7 +30,7 @@ double strip_exact_V(double g, double H) { return E * (1.0 - 1.0 / std::cosh(std
 double strip_frame_V(int cells_per_mm, int ground, double g) {
   const double W = 4, H = 20;
   const Mesh mesh = test::strip_mesh(W, H, static_cast<int>(W * cells_per_mm), static_cast<int>(H * cells_per_mm));
-  const ForwardModel model(mesh, Rs);
+  ForwardModel model(mesh, Rs);
   const ContactLoad contact = contact_load_from_elements(mesh, Vector::Constant(mesh.triangle_count(), g));
   const Frame frame = model.solve_frame(contact, E);
   return frame(ground, 1 - ground);
@@ -67,7 +67,7 @@ TEST(ForwardModel, StripWithResistiveDrivingLayerMatchesAnalyticSolution) {
     DrivingLayer layer{Vector::Constant(mesh.triangle_count(), 1.0 / Rd), {}};
     for (int node = 0; node < mesh.node_count(); ++node)
       if (std::abs(mesh.nodes_mm(node, 1) - (ground == 0 ? 0.0 : H)) < 1e-9) layer.feed_nodes.push_back(node);
-    const ForwardModel model(mesh, Vector::Constant(mesh.triangle_count(), 1.0 / Rs), layer);
+    ForwardModel model(mesh, Vector::Constant(mesh.triangle_count(), 1.0 / Rs), layer);
     EXPECT_NEAR(model.solve_frame(contact, E)(ground, 1 - ground), exact, 2e-3 * E) << "ground " << ground;
   }
 }
@@ -84,7 +84,7 @@ TEST(ForwardModel, NearlyIdealDrivingLayerGivesTheEquipotentialFrame) {
 }
 
 TEST(ForwardModel, ZeroFrameWithoutContact) {
-  const ForwardModel model(test::strip_mesh(4, 4, 4, 4), Rs);
+  ForwardModel model(test::strip_mesh(4, 4, 4, 4), Rs);
   const Frame frame = model.solve_frame(ContactLoad{}, E);
   EXPECT_EQ(frame.cwiseAbs().maxCoeff(), 0.0);
 }

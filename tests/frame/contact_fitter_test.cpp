@@ -75,7 +75,7 @@ TEST(ContactFitter, FindsSinglePressesOnTheTwinToATenthOfAMillimetre) {
     // The fit explains the frame down to about the readings' noise (1 mV): the model is right.
     EXPECT_LT(r.rms_misfit_V, 2.5 * fitter.noise_V());
   }
-  // issue 4's target for the 60 mm sheet: a mean of 0.3 mm (the paper's method: ~3.3 mm).
+  // The 60 mm sheet's target: a mean of 0.3 mm (the paper's method: ~3.3 mm).
   EXPECT_LT(total_mm / static_cast<double>(presses.size()), 0.3);
 }
 
@@ -94,7 +94,7 @@ TEST(ContactFitter, FindsTwoPressesAsTwoContacts) {
     double nearest = 1e9;
     for (const FittedContact& c : r.contacts)
       nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
-    EXPECT_LT(nearest, 0.5) << "press at " << p.x_mm << ", " << p.y_mm;  // issue 4: within 2 mm, 95 % of frames
+    EXPECT_LT(nearest, 0.5) << "press at " << p.x_mm << ", " << p.y_mm;  // target: within 2 mm in 95 % of frames
   }
 }
 
@@ -117,7 +117,7 @@ TEST(ContactFitter, GivesAStrongSinglePressOneContact) {
                 chi2_per_measurement(r, fitter), error);
     // Above the noise bound: the model-error test, not the noise, keeps it to one contact.
     EXPECT_GT(chi2_per_measurement(r, fitter), ContactFitter::noise_chi2_per_measurement);
-    EXPECT_LT(error, 0.3);  // issue 4's single-press target
+    EXPECT_LT(error, 0.3);  // the single-press target
   }
 }
 
@@ -161,7 +161,7 @@ TEST(ContactFitter, FindsTwoClosePressesOnTheSmallSheet) {
       for (const FittedContact& c : r.contacts)
         nearest = std::min(nearest, std::hypot(c.disc.x_mm - p.x_mm, c.disc.y_mm - p.y_mm));
       std::printf("  press %.2f, %.2f: nearest contact %.3f mm\n", p.x_mm, p.y_mm, nearest);
-      EXPECT_LT(nearest, 2.0);  // issue 4: within 2 mm
+      EXPECT_LT(nearest, 2.0);  // the target: within 2 mm
     }
   }
 }
@@ -179,7 +179,7 @@ TEST(ContactFitter, TracksAMovingPressAndLetsGoWhenTheFramesChange) {
     r = fitter.track(s.dV({press}), previous);
     ASSERT_TRUE(r.tracked) << "frame " << i;
     ASSERT_EQ(r.contacts.size(), 1u);
-    // The cold fit's accuracy on this sheet: a tenth of a millimetre (and well under issue 4's 0.3).
+    // The cold fit's accuracy on this sheet: a tenth of a millimetre (and well under the 0.3 mm target).
     EXPECT_LT(std::hypot(r.contacts[0].disc.x_mm - press.x_mm, r.contacts[0].disc.y_mm - press.y_mm), 0.2)
         << "frame " << i;
   }

@@ -21,12 +21,12 @@ Press press_at(const Shape& shape, const Vector2& chart_mm) { return press_at_ch
 
 // The sleeve R = 15 mm, L = 60 mm, 8 electrodes on each rim: presses at the top, the side, the
 // bottom (the chart's seam, v = 0 = 2πR) and just either side of it are found where they are.
-// The target is issue 15's for the cap, 0.3 mm; the twin's mesh is finer and different.
+// The target is the spherical cap's, 0.3 mm; the twin's mesh is finer and different.
 TEST(CylinderFit, SleeveFitsPressesAllRoundAndAcrossTheSeam) {
   const Sensor sensor = load_sensor(test::source_path("examples/sensors/sleeve.json"));
   Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
   Reconstructor reconstructor = pipeline.reconstructor();
-  const Twin twin(sensor);
+  Twin twin(sensor);
   reconstructor.set_reference({twin.exact_frame({}), 1});
   const double round_mm = 2 * std::numbers::pi * 15;
   for (const double v : {round_mm / 2, round_mm / 4, 0.0, 1.5, round_mm - 1.5}) {
@@ -59,7 +59,7 @@ TEST(CylinderFit, APatchFitsWhereItsUnrolledRectangleFits) {
   flat.shape.height_mm = patch.shape.radius_mm * patch.shape.angle_deg * std::numbers::pi / 180;
   Pipeline on_patch(patch, {Method::fit, 0, "", {}}), on_flat(flat, {Method::fit, 0, "", {}});
   Reconstructor patch_fit = on_patch.reconstructor(), flat_fit = on_flat.reconstructor();
-  const Twin patch_twin(patch), flat_twin(flat);
+  Twin patch_twin(patch), flat_twin(flat);
   patch_fit.set_reference({patch_twin.exact_frame({}), 1});
   flat_fit.set_reference({flat_twin.exact_frame({}), 1});
   for (const Vector2& c : {Vector2(30, 20.9), Vector2(12, 8), Vector2(47, 33)}) {

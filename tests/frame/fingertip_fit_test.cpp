@@ -21,13 +21,13 @@ namespace {
 Vector3 capsule_normal(const Vector3& p) { return p.x() <= 0 ? Vector3(0, p.y(), p.z()).normalized() : p.normalized(); }
 
 // Presses of r = 2.5 mm at least 2.5 mm from the border. The twin's mesh is another (twice as
-// fine, graded); the bound is issue 15's for the cap, 0.3 mm. The fitted normal is the
+// fine, graded); the bound is the spherical cap's target, 0.3 mm. The fitted normal is the
 // reconstruction triangle's: on edges h ≤ 1 mm of a radius of 9 mm it turns by at most h/R.
 TEST(FingertipFit, PressesAreFoundWhereTheyAreOnTheCadSkin) {
   const Sensor sensor = load_sheet_sensor(test::source_path("examples/sensors/fingertip.json"));
   Pipeline pipeline(sensor, {Method::fit, 0, "", {}});
   Reconstructor reconstructor = pipeline.reconstructor();
-  const Twin twin(sensor);
+  Twin twin(sensor);
   reconstructor.set_reference({twin.exact_frame({}), 1});
   for (const Vector2& c : {Vector2(0, 0), Vector2(-8, 4), Vector2(5, -3), Vector2(-11, -5), Vector2(3, 4.5)}) {
     const Press press = press_at_chart(sensor.shape, c, 2.5, 2);

@@ -140,7 +140,7 @@ TEST(FramePredictor, AgreesWithTheSparseForwardModel) {
   const Mesh& mesh = default_mesh();
   const Sensor sensor = default_sensor();
   const DenseGreenFunction green = dense_green_function(mesh, sensor.sheet_resistance_ohm_per_sq);
-  const ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
+  ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
   FramePredictor predictor(mesh, green);
   // One press in the middle, two presses, and one touching electrode 1's border.
   for (const std::vector<Press>& presses :
@@ -218,7 +218,7 @@ TEST(FramePredictor, SeriesResistanceAgreesWithADirectSolve) {
   const DenseGreenFunction green = dense_green_function(mesh, sensor.sheet_resistance_ohm_per_sq);
   FramePredictor predictor(mesh, green);
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> resistance(1.0, 300.0);  // the 0–300 Ω; > 0 for 1/R
+  std::uniform_real_distribution<double> resistance(1.0, 300.0);  // a realistic sheet's 0–300 Ω; > 0 for 1/R
   std::vector<double> ohm(16);
   for (double& r : ohm) r = resistance(rng);
   predictor.set_series_resistance(ohm);

@@ -19,7 +19,7 @@
 namespace emit {
 namespace {
 
-// The yardstick: the paper's algorithm on such a twin (16 electrodes, 12-bit ADC, 1 mV
+// The yardstick: the paper's algorithm on such a twin (16 electrodes, 12-bit ADC, 1 mV
 // noise, a finer and different twin mesh) gives about 3.3 ± 1.6 mm on the 60 mm sheet; within
 // 20 % of that means the pipeline is the paper's. Much larger is a bug; much smaller, an
 // inverse crime.

@@ -75,7 +75,7 @@ TEST(FramesCsv, WritingIntoAMissingFolderLeavesNothing) {
 namespace emit {
 namespace {
 
-// Issue 13: an empty frames file exited 0 and replaced a good contacts file with an empty one.
+// An empty frames file used to exit 0 and replace a good contacts file with an empty one.
 TEST(FramesCsv, AFileWithoutFramesIsAnError) {
   const std::string path = test::temp_folder("frames_csv_empty") + "/empty.csv";
   std::ofstream(path) << "\n  \n";
@@ -103,7 +103,7 @@ TEST(FramesCsv, TheStreamingReaderGivesTheSameFramesAndTheirLines) {
   EXPECT_EQ(reader.frames_read(), 2);
 }
 
-// Issue 13: a line of semicolons was echoed whole (4 KB) and binary bytes raw.
+// A line of semicolons used to be echoed whole (4 KB) and binary bytes raw.
 TEST(FramesCsv, MessagesQuoteAShortEscapedPieceOfTheLine) {
   const std::string path = test::temp_folder("frames_csv_quote") + "/f.csv";
   std::ofstream(path, std::ios::binary) << std::string(4096, ';') << "\n";

@@ -48,7 +48,7 @@ TEST(LineReader, ALineBeyondTheBoundIsAnErrorNamingTheLine) {
   }
 }
 
-// Issue 13: `emit reconstruct --frames /dev/zero` grew to 5 GB in 13 s. Now one line's bound.
+// `emit reconstruct --frames /dev/zero` used to grow to 5 GB in 13 s. Now one line's bound.
 TEST(LineReader, DevZeroStopsAtTheBound) { EXPECT_THROW(all_lines("/dev/zero"), InvalidInput); }
 
 TEST(LineReader, AMissingFileIsAnIoError) { EXPECT_THROW(LineReader("/nonexistent/x.csv", "frames file"), IoError); }

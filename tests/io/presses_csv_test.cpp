@@ -56,7 +56,7 @@ TEST(PressesCsv, ErrorsNameTheLine) {
   EXPECT_EQ(error_of(dir + "/row.csv"), dir + "/row.csv:4" + expected + "\"1,1,2,three,4\"");
   std::ofstream(dir + "/negative.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n-1,1,2,3,4\n";
   EXPECT_EQ(error_of(dir + "/negative.csv"), dir + "/negative.csv:2" + expected + "\"-1,1,2,3,4\"");
-  // Issue 13: a seventh column was read as if it were not there.
+  // A seventh column used to be read as if it were not there.
   std::ofstream(dir + "/extra.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,2,3,4,0.14,99\n";
   EXPECT_EQ(error_of(dir + "/extra.csv"), dir + "/extra.csv:2" + expected + "\"0,1,2,3,4,0.14,99\"");
   // Fuzzing (tests/fuzz/corpus/presses_csv_fuzz/accepted_nan_negative.csv): NaN, infinity and a

@@ -42,7 +42,7 @@ TEST(GenerateMesh, TheTriangleEstimateIsCloseToGmshsCount) {
   }
 }
 
-// Issue 13: `emit mesh --element-size-mm 1e-6` took 12 GB in 55 s. Now refused at once, saying
+// `emit mesh --element-size-mm 1e-6` used to take 12 GB in 55 s. Now refused at once, saying
 // how to raise the limit.
 TEST(GenerateMesh, BeyondTheTriangleLimitIsRefusedBeforeMeshing) {
   const Sensor sensor = default_sensor();

@@ -57,7 +57,7 @@ TEST(SlideElectrodes, GivesTheRemeshedSheetsFrames) {
   const Mesh remeshed = generate_mesh(with_electrodes_slid(sensor, shift), options);
   const std::vector<Press> press{{11, 17, 2.5, 3}};
   const auto frame = [&](const Mesh& m) {
-    const ForwardModel model(m, sensor.sheet_resistance_ohm_per_sq);
+    ForwardModel model(m, sensor.sheet_resistance_ohm_per_sq);
     return model.solve_frame(press_contact_load(m, press, sensor.contact), sensor.drive_voltage_V);
   };
   const Frame nominal = frame(mesh), by_sliding = frame(slid), by_remeshing = frame(remeshed);

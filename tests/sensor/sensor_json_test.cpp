@@ -3,6 +3,7 @@
 
 #include <fstream>
 #include <numbers>
+#include <regex>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -244,7 +245,7 @@ INSTANTIATE_TEST_SUITE_P(
                   j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {1, 1}, {2, 2}}}};
                 },
                 "zero area"},
-        // Issue 13: Gmsh threw a std::string from inside an OpenMP region (rc 134) on this one.
+        // Gmsh used to throw a std::string from inside an OpenMP region (rc 134) on this one.
         BadCase{"self-intersecting polygon",
                 [](json& j) {
                   j["shape"] = {{"type", "polygon"}, {"points_mm", {{0, 0}, {60, 0}, {60, 60}, {30, -20}, {0, 60}}}};
@@ -257,7 +258,7 @@ INSTANTIATE_TEST_SUITE_P(
                   j["electrodes"] = {{"count", 8}, {"width_mm", 1}};
                 },
                 "must not cross or touch itself"},
-        // Issue 13: the width's rounding was reported as electrodes "touching".
+        // The width's rounding used to be reported as electrodes "touching".
         BadCase{"electrode wider than the border", [](json& j) { j["electrodes"]["width_mm"] = 1e300; },
                 "longer than the whole border"},
         BadCase{"adc bits out of range",
@@ -276,6 +277,24 @@ INSTANTIATE_TEST_SUITE_P(
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return name;
     });
+
+// sensor_json.hpp lists the keys a description may have: every key the parser reads (through its
+// readers' number, value, has, ... calls in sensor_json.cpp and excitation.cpp) is in that list.
+TEST(Sensor, TheHeadersListOfKeysHasEveryKeyTheParserReads) {
+  std::string header = test::read_text(test::source_path("include/emit/sensor/sensor_json.hpp"));
+  header = header.substr(0, header.find("#include"));
+  const std::regex key_read(R"re(\b(?:has|integer_or|number|number_or|point|string|value)\("([A-Za-z_]+)")re");
+  int keys = 0;
+  for (const char* source : {"src/sensor/sensor_json.cpp", "src/sensor/excitation.cpp"}) {
+    const std::string text = test::read_text(test::source_path(source));
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), key_read); it != std::sregex_iterator();
+         ++it, ++keys) {
+      const std::string key = (*it)[1];
+      EXPECT_TRUE(std::regex_search(header, std::regex("\\b" + key + "\\b"))) << source << " reads \"" << key << "\"";
+    }
+  }
+  EXPECT_GT(keys, 30) << "the parser's readers were not found: has the regex gone stale?";
+}
 
 TEST(Sensor, MissingFileIsAnIoError) { EXPECT_THROW(load_sensor("/nonexistent/sensor.json"), IoError); }
 

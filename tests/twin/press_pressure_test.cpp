@@ -107,7 +107,7 @@ TEST(PressContact, VanishingBlurGivesTheFlatDiscsFrame) {
   MeshOptions options;
   options.element_size_mm = 1.5;
   const Mesh mesh = generate_mesh(sensor, options);
-  const ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
+  ForwardModel model(mesh, sensor.sheet_resistance_ohm_per_sq);
   const Press press{12, 17, 4, 8};
   const Frame exact = model.solve_frame(press_contact_load(mesh, {press}, sensor.contact), 3.3);
   std::vector<double> errors;

@@ -86,7 +86,7 @@ TEST(Twin, MirrorSymmetryToRoundOff) {
 // the conformance criterion bounds by 1 % of the largest potential for each of the two frames.
 TEST(Twin, MirrorSymmetryWithinDiscretisationError) {
   const Sensor sensor = default_sensor();
-  const Twin twin(sensor, exact_twin());
+  Twin twin(sensor, exact_twin());
   const Frame a = twin.exact_frame({{21, 37, 5, 10}});
   const Frame b = twin.exact_frame({{39, 37, 5, 10}});
   const int mirror[16] = {3, 2, 1, 0, 15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4};
@@ -97,7 +97,7 @@ TEST(Twin, MirrorSymmetryWithinDiscretisationError) {
 }
 
 TEST(Twin, ZeroFrameWhenNothingPresses) {
-  const Twin twin(default_sensor(), exact_twin());
+  Twin twin(default_sensor(), exact_twin());
   EXPECT_EQ(twin.exact_frame({}).cwiseAbs().maxCoeff(), 0.0);
   // below the separator's minimum pressure (0.002 N/mm² over 78.5 mm² is 0.157 N)
   EXPECT_EQ(twin.exact_frame({{30, 30, 5, 0.1}}).cwiseAbs().maxCoeff(), 0.0);
@@ -106,7 +106,7 @@ TEST(Twin, ZeroFrameWhenNothingPresses) {
 // More force, lower contact resistance, every electrode pulled closer to the drive: by the
 // maximum principle ∂u/∂g ≥ 0, strictly where the sheet is connected to the contact.
 TEST(Twin, ResponseGrowsWithForce) {
-  const Twin twin(default_sensor(), exact_twin());
+  Twin twin(default_sensor(), exact_twin());
   Frame previous = twin.exact_frame({{25, 33, 5, 1}});
   for (double force : {2.0, 4.0, 8.0, 16.0}) {
     const Frame frame = twin.exact_frame({{25, 33, 5, force}});
@@ -120,7 +120,7 @@ TEST(Twin, ResponseGrowsWithForce) {
 }
 
 TEST(Twin, PressOffTheSheetIsRejected) {
-  const Twin twin(default_sensor(), exact_twin());
+  Twin twin(default_sensor(), exact_twin());
   EXPECT_THROW(twin.exact_frame({{70, 30, 5, 10}}), InvalidInput);
   EXPECT_THROW(twin.exact_frame({{30, 30, -1, 10}}), InvalidInput);
   EXPECT_THROW(twin.exact_frame({{30, 30, 5, std::nan("")}}), InvalidInput);
@@ -140,7 +140,7 @@ TEST_P(Conformance, AgreesWithTheIndependentImplementation) {
   const auto reference = read_frames_csv(base + "_frames.csv", 16);
   const PressSequence presses = read_presses_csv(base + "_presses.csv");
   ASSERT_EQ(reference.size(), presses.size());
-  const Twin twin(sensor, exact_twin());
+  Twin twin(sensor, exact_twin());
   for (std::size_t f = 0; f < presses.size(); ++f) {
     const Frame frame = twin.exact_frame(presses[f]);
     const double largest = reference[f].cwiseAbs().maxCoeff();
@@ -168,7 +168,7 @@ TEST(CurvedTwin, ConformancePressesLieOnTheSurface) {
 // under shifting both electrode numbers by one, to the discretisation error (the conformance 1 %).
 TEST(CurvedTwin, ApexPressIsSymmetricUnderTheRimsRotation) {
   const Sensor sensor = load_sensor(test::source_path("tests/data/conformance/dome25_sensor.json"));
-  const Twin twin(sensor, exact_twin());
+  Twin twin(sensor, exact_twin());
   const Frame f = twin.exact_frame({{0, 0, 4, 10}});
   double worst = 0;
   for (int l = 0; l < 16; ++l)
@@ -187,7 +187,7 @@ TEST(CurvedTwin, ACapOfAHugeSphereIsTheFlatDisc) {
   const Sensor cap =
       parse_sensor({{"shape", {{"type", "spherical_cap"}, {"sphere_radius_mm", 2e4}, {"base_radius_mm", 20}}},
                     {"electrodes", electrodes}});
-  const Twin flat_twin(flat, exact_twin()), cap_twin(cap, exact_twin());
+  Twin flat_twin(flat, exact_twin()), cap_twin(cap, exact_twin());
   for (const std::vector<Press>& presses :
        std::vector<std::vector<Press>>{{{3, 4, 4, 10}}, {{-8, 5, 3, 6}, {7, -6, 4, 12}}}) {
     const Frame a = flat_twin.exact_frame(presses), b = cap_twin.exact_frame(presses);
@@ -236,7 +236,7 @@ TEST(Conformance, TwinConvergesTowardsTheReferenceUnderRefinement) {
     TwinOptions options = exact_twin();
     options.mesh = twin_mesh_options(sensor);
     options.mesh->element_size_mm = h;
-    const Twin twin(sensor, options);
+    Twin twin(sensor, options);
     double worst = 0;
     for (std::size_t f = 0; f < presses.size(); ++f)
       worst = std::max(worst, (twin.exact_frame(presses[f]) - reference[f]).cwiseAbs().maxCoeff() /
@@ -263,7 +263,7 @@ TEST(Twin, PressOffAMeshFileSheetIsRejected) {
       parse_sensor(nlohmann::json::parse(R"({"shape": {"type": "mesh", "file": "sheet.msh"}})"), "sensor", dir);
   TwinOptions twin_options = exact_twin();
   twin_options.mesh = options;
-  const Twin twin(sensor, twin_options);
+  Twin twin(sensor, twin_options);
   EXPECT_EQ(twin.mesh().electrode_count(), 16);
   EXPECT_GT(twin.exact_frame({{30, 30, 5, 10}}).maxCoeff(), 0.1);
   EXPECT_THROW(twin.exact_frame({{61, 30, 5, 10}}), InvalidInput);

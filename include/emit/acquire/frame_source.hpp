@@ -1,6 +1,6 @@
 #pragma once
 /// \file frame_source.hpp
-/// Where live frames come from (issue 6): the digital twin with a scripted or random finger now;
+/// Where live frames come from: the digital twin with a scripted or random finger now;
 /// a recorded file and a serial port later. Every source hands out the same SourceFrame, so the
 /// live loop (live/live_loop.hpp) does not care which one it reads.
 #include <chrono>
@@ -33,6 +33,7 @@ struct SourceOptions {
   int untouched_frames = 15;
   /// A recording (file:) starts again after its last frame, its numbers going on (file_source.hpp).
   bool loop = false;
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 class FrameSource {

@@ -1,6 +1,6 @@
 #pragma once
 /// \file sensor_calibration.hpp
-/// Self-calibration of the sheet from presses at known places (issue 14: a real sheet is not its
+/// Self-calibration of the sheet from presses at known places (a real sheet is not its
 /// description). Contact fitting reads a contact's position from the shape of the frame, which the
 /// sheet shapes too. Given presses whose centres are known (the calibration presses of `emit
 /// calibrate`), it fits, to all their frames at once by Levenberg–Marquardt (Ceres):

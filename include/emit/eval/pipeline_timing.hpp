@@ -15,6 +15,7 @@ struct PipelineTimingOptions {
   double element_size_mm = 0;
   double seconds_per_figure = 0.3;  ///< each per-frame figure is the best of batches of this length
   std::string cache_dir;            ///< where the store/load round trip goes (a scratch folder)
+  void validate() const;            ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// Seconds for the offline stages, microseconds for the per-frame ones. A baseline not run is -1.
@@ -39,7 +40,7 @@ struct PipelineTiming {
 /// and its thresholded region look like a real press's. \throw InvalidInput for a bad size.
 PipelineTiming time_pipeline(const Sensor& sensor, const PipelineTimingOptions& options);
 
-/// The same for a current-injection skin (sensor.excitation; issue 16), the job pyEIT's and
+/// The same for a current-injection skin (sensor.excitation), the job pyEIT's and
 /// EIDORS's users run: the complete electrode model assembled and factorised on a uniform sheet
 /// (factorisation_s), the relative Jacobian ∂log V/∂σ by the adjoint method (jacobian_s, which
 /// includes the model), the NOSER operator at the automatic λ (operator_s); per frame, the

@@ -2,7 +2,7 @@
 /// \file realistic_evaluation.hpp
 /// `emit eval --realistic`: the round a user runs with a real sheet (README, "A realistic
 /// sheet"), on the twin's realistic sheet (twin/realistic_sheet.hpp: every way a real sheet departs
-/// from its description at once), measured against issue 14's targets. On one sheet:
+/// from its description at once), measured against its targets (RealisticTargets). On one sheet:
 ///
 /// 1. a realistic sheet drawn from a seed, its twin on a mesh of another seed than the
 ///    reconstruction's; a reference of no-press frames, calibration presses and test presses of
@@ -55,7 +55,7 @@ struct RealisticEvalOptions {
   void validate() const;  ///< \throw InvalidInput naming the count or the sheet's option
 };
 
-/// Issue 14's targets, the figures they bound.
+/// The realistic round's targets (README, "A realistic sheet"), the figures they bound.
 struct RealisticTargets {
   static constexpr double position_mean_mm = 0.3, position_p95_mm = 0.6;  ///< calibrated, test presses
   static constexpr double pressure_error_N_per_mm2 = 0.01;                ///< calibrated, mean |error|

@@ -39,6 +39,7 @@ struct EvalOptions {
   std::uint64_t seed = 1;       ///< the presses and the ADC's noise
   bool quick = false;           ///< a coarser grid and fewer presses: a smoke test
   bool mismatches = true;       ///< also the sensor-mismatch runs (paper method and fit)
+  void validate() const;        ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// One λ² of a linear method's sweep.

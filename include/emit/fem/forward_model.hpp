@@ -46,10 +46,12 @@ class ForwardModel {
   /// stays 0. \throw InvalidInput for a wrong count or a negative or non-finite value.
   void set_series_resistance(std::vector<double> ohm);
 
-  /// Electrode potentials for every grounding. An empty contact gives the zero frame.
-  Frame solve_frame(const ContactLoad& contact, double drive_voltage_V) const;
+  /// Electrode potentials for every grounding. An empty contact gives the zero frame. A solve
+  /// factorises into the model's own workspace (the stiffness and its analysis stay as they
+  /// are), so it is not const: one ForwardModel solves on one thread at a time.
+  Frame solve_frame(const ContactLoad& contact, double drive_voltage_V);
   /// Node potentials [V], #V by N: column l is the field with electrode l grounded.
-  Matrix solve_potentials(const ContactLoad& contact, double drive_voltage_V) const;
+  Matrix solve_potentials(const ContactLoad& contact, double drive_voltage_V);
 
  private:
   struct Impl;

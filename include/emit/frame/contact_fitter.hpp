@@ -24,7 +24,7 @@
 namespace emit {
 
 struct FitOptions {
-  int max_contacts = 4;  ///< fingers at once (a hand's: issue 14 measures three and four)
+  int max_contacts = 4;  ///< fingers at once (a hand's: `emit eval --realistic` measures three and four)
   double edge_mm = 0;    ///< the disc's rim smoothing half-width; 0: a quarter of the mesh size
   /// The model disc's radius, held. While the contact's resistance dwarfs the sheet's spreading
   /// resistance (the current-source regime, docs/physics.md, "Contact fitting"), a disc's field

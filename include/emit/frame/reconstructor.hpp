@@ -32,6 +32,7 @@ struct FrameOptions {
   /// frame of pure noise reports a contact with at most this probability. 0: no such test (nor
   /// without the model's reading noise).
   double false_alarm_rate = 0.01;
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 class Reconstructor {

@@ -21,15 +21,14 @@ namespace emit {
 struct DdsOptions {
   std::string prefix = "emit";  ///< a ROS name: letters, digits, _ and /, not starting with a digit
   int domain = 0;               ///< the DDS domain (ROS_DOMAIN_ID): 0 to 232
+  /// \throw InvalidInput naming the option when the prefix is not a ROS name or the domain is out
+  /// of range.
+  void validate() const;
 };
-
-/// \throw InvalidInput naming the option when the prefix is not a ROS name or the domain is out
-/// of range.
-void check_dds_options(const DdsOptions& options);
 
 class DdsPublisher : public FramePublisher {
  public:
-  /// Joins the domain and publishes the mesh. \throw InvalidInput (check_dds_options), IoError
+  /// Joins the domain and publishes the mesh. \throw InvalidInput (DdsOptions::validate), IoError
   /// when DDS cannot start (no network interface it can use).
   DdsPublisher(const DdsOptions& options, const std::string& sensor_name, const Mesh& mesh);
   ~DdsPublisher() override;

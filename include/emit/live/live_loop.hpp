@@ -50,6 +50,7 @@ struct LiveOptions {
   double max_seconds = 0;
   /// How long next() waits before the loop looks at commands and the stop flag again.
   std::chrono::milliseconds poll{50};
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 struct LiveStats {

@@ -26,6 +26,7 @@ struct MeshOptions {
   int smoothing_steps = 1;
   /// Refuse to mesh beyond this many triangles (estimated first; MeshSpec::max_triangles).
   double max_triangles = 1e6;
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// About how many triangles Gmsh makes for the sheet at options.element_size_mm: the sheet's area

@@ -11,7 +11,7 @@
 namespace emit {
 
 struct Mesh {
-  /// #V by 3 node positions in mm. Flat sheets have z = 0; a curved shell (a later issue) need not.
+  /// #V by 3 node positions in mm. Flat sheets have z = 0; a curved shell (dome, sleeve) need not.
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> nodes_mm;
   /// #F by 3 node indices per triangle, counter-clockwise seen from +z for flat sheets.
   Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> triangles;

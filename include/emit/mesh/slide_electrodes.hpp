@@ -1,10 +1,9 @@
 #pragma once
 /// \file slide_electrodes.hpp
-/// Electrodes moved along the border without remeshing: the mesh's nodes slide with them (issue
-/// 14: a painted electrode sits up to ±0.5 mm from its nominal place, and the calibration fits
-/// where). Remeshing for each trial position would change the mesh's topology, and the
-/// discretisation error with it, by far more than a finite difference's step; sliding keeps the
-/// topology, so a frame is a smooth function of the shifts.
+/// Electrodes moved along the border without remeshing: the mesh's nodes slide with them (a
+/// painted electrode sits up to ±0.5 mm from its nominal place, and the calibration fits where). Remeshing for each
+/// trial position would change the mesh's topology, and the discretisation error with it, by far more than a finite
+/// difference's step; sliding keeps the topology, so a frame is a smooth function of the shifts.
 ///
 /// Electrode e moves by shift_mm[e] along the border (counter-clockwise positive). Its nodes and
 /// every node within `rigid_mm` of it (along the border and into the sheet) move by the full shift;
@@ -22,6 +21,7 @@ namespace emit {
 struct SlideOptions {
   double rigid_mm = 0.6;  ///< moved by the full shift beyond the electrode's ends and depth
   double reach_mm = 3.0;  ///< then down to 0 over this much more
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// \param sensor  the sheet's border and its electrodes as `mesh` has them (an analytic border)

@@ -1,7 +1,7 @@
 #pragma once
 /// \file press_response.hpp
-/// A skin's response to a press, learned from presses of known place (issue 16, touch
-/// localisation on real skins; docs/physics.md, "Touch localisation from calibration presses").
+/// A skin's response to a press, learned from presses of known place (touch localisation on
+/// real skins; docs/physics.md, "Touch localisation from calibration presses").
 /// A frame of a current-injection skin is M readings; a press changes them from the unpressed
 /// reference taken just before it. Its relative change, normalised,
 ///   d = log(V / V_ref) / ‖log(V / V_ref)‖,

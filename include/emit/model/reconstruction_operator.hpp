@@ -31,6 +31,7 @@ struct OperatorOptions {
   /// Per frame, R is applied truncated to its singular values above this fraction of the
   /// largest (compact_operator.hpp); 0 keeps them all.
   double rank_cutoff = 1.0 / 4096;
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 std::string prior_name(Prior prior);

@@ -34,6 +34,7 @@ struct PipelineOptions {
   double lambda2 = 0;         ///< the linear operator's λ² (0: the method's, model/method.hpp)
   std::string cache_dir;      ///< the operator cache (empty: none; model/operator_cache.hpp)
   std::vector<int> excluded;  ///< dead electrodes left out (acquire/electrode_health.hpp)
+  void validate() const;      ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// The sensor's electrode count; a mesh-file sensor's electrodes are its file's (read here).

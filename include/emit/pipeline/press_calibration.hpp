@@ -28,6 +28,7 @@ struct PressCalibrationOptions {
   bool fit_sheet = true;            ///< contact fitting: fit the sheet, electrodes and drive too
   SensorCalibrationOptions sensor;  ///< contact fitting with fit_sheet: what to fit
   std::string cache_dir;            ///< the operator cache (empty: none)
+  void validate() const;            ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 struct PressCalibrationResult {

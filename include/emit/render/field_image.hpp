@@ -28,6 +28,7 @@ struct FieldImageOptions {
   std::string unit = "V";  ///< shown on the colour bar
   double min_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's minimum
   double max_value = std::numeric_limits<double>::quiet_NaN();  ///< NaN: the field's maximum
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// Sequential colour map (perceptually ordered, dark → bright) for t in [0, 1].

@@ -27,6 +27,7 @@ struct PlotOptions {
   std::string x_label;                  ///< drawn under the x axis' tick labels
   std::string y_label;                  ///< drawn above the y axis (the font cannot rotate)
   bool log_x = false, log_y = false;    ///< logarithmic axes, with decade ticks
+  void validate() const;                ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 /// Where a data point (x, y) lands in the picture, for tests that check colours. The plot area is

@@ -1,6 +1,6 @@
 #pragma once
 /// \file excitation.hpp
-/// A current-injection protocol (issue 16: the EIT skins of the paper's Table 1): which pairs of
+/// A current-injection protocol (the EIT skins of the paper's Table 1): which pairs of
 /// electrodes a current is driven between, in order, and which pairs are read, in the order a
 /// frame from the hardware lists them. The named patterns are the classic ones (pyEIT, EIDORS's
 /// mk_stim_patterns): a drive `skip-s` sources at electrode k and sinks at k + s + 1, k = 0 … N−1;

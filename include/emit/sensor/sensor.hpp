@@ -100,7 +100,7 @@ struct Sensor {
   std::vector<double> series_resistance_ohm;
   ContactLaw contact;
   AdcSpec adc;
-  /// A current-injection skin (issue 16): its drives and readings, the frame's order. Empty: the
+  /// A current-injection skin: its drives and readings, the frame's order. Empty: the
   /// EMIT protocol (ground each electrode in turn, read the others).
   std::optional<Excitation> excitation;
   MeshSpec mesh;

@@ -22,6 +22,9 @@ struct RealisticSheetOptions {
   double drive_voltage_high_V = 3.3;
   double blur_mm = 1.0;  ///< the cover's Gaussian blur of every press (0: none)
   std::uint64_t seed = 1;
+  /// \throw InvalidInput (one line naming the option) for a size out of range: sheet_scale in
+  /// [0, 1), field in [0, 1), shift >= 0, series >= 0, 0 < low <= high drive, blur >= 0.
+  void validate() const;
 };
 
 /// What was drawn, and the twin that simulates it.
@@ -36,10 +39,6 @@ struct RealisticSheet {
   double blur_mm = 0;
   std::string description;  ///< the above, for people: one fact a line
 };
-
-/// \throw InvalidInput (one line naming the option) for a size out of range: sheet_scale in
-/// [0, 1), field in [0, 1), shift >= 0, series >= 0, 0 < low <= high drive, blur >= 0.
-void validate_realistic_sheet_options(const RealisticSheetOptions& options);
 
 /// The realistic twin of `nominal` (which needs an analytic border: rectangle, circle, polygon).
 /// `base` carries the mesh seed, the noise and the ADC. \throw InvalidInput.

@@ -40,6 +40,7 @@ struct TwinOptions {
   /// A driving layer with this sheet resistance, fed along a bus bar at the bottom of the sheet
   /// (driving_layer.hpp); 0: an equipotential driving layer, as the reconstruction assumes.
   double driving_sheet_resistance_ohm_per_sq = 0;
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
 class Twin {
@@ -51,13 +52,13 @@ class Twin {
   const Mesh& mesh() const { return model_.mesh(); }
 
   /// The noise-free frame of the physics, before the ADC. \throw InvalidInput for a bad press.
-  Frame exact_frame(const std::vector<Press>& presses) const;
+  Frame exact_frame(const std::vector<Press>& presses);
   /// The frame as the board reads it (ADC applied if enabled). Each call draws fresh noise.
   /// `codes`, if given, gets the ADC's codes of it (N·N, ground-major; with the ADC off, those of
   /// the exact volts).
   Frame frame(const std::vector<Press>& presses, std::vector<std::uint16_t>* codes = nullptr);
   /// Node potentials, #V by N (column l: electrode l grounded), for pictures.
-  Matrix potentials(const std::vector<Press>& presses) const;
+  Matrix potentials(const std::vector<Press>& presses);
 
  private:
   ContactLoad contact_of(const std::vector<Press>& presses) const;

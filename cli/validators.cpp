@@ -1,0 +1,79 @@
+// What the commands' options must be (commands.hpp): number validators, seeds, ranges.
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+
+#include "commands.hpp"
+#include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
+
+namespace emit::cli {
+
+namespace {
+
+/// A validator accepting a whole number (integer) or any number, and `rule` holding for it.
+CLI::Validator number_validator(const std::string& name, bool integer, bool (*rule)(double), const std::string& what) {
+  return CLI::Validator(
+      [=](const std::string& text) -> std::string {
+        double value = 0;
+        char* end = nullptr;
+        value = std::strtod(text.c_str(), &end);
+        const bool whole = end != text.c_str() && *end == '\0' && std::isfinite(value);
+        if (whole && (!integer || value == std::floor(value)) && rule(value)) return {};
+        return "must be " + what + ", got " + quote_input(text);
+      },
+      name);
+}
+
+}  // namespace
+
+const CLI::Validator& positive_number() {
+  static const CLI::Validator v = number_validator(
+      "POSITIVE", false, [](double x) { return x > 0; }, "a positive number");
+  return v;
+}
+
+const CLI::Validator& non_negative_number() {
+  static const CLI::Validator v = number_validator(
+      "NONNEGATIVE", false, [](double x) { return x >= 0; }, "a number 0 or larger");
+  return v;
+}
+
+const CLI::Validator& fraction_below_one() {
+  static const CLI::Validator v = number_validator(
+      "FRACTION", false, [](double x) { return x >= 0 && x < 1; }, "a fraction from 0 up to (not including) 1");
+  return v;
+}
+
+const CLI::Validator& positive_integer() {
+  static const CLI::Validator v = number_validator(
+      "POSITIVE", true, [](double x) { return x > 0; }, "a whole number 1 or larger");
+  return v;
+}
+
+const CLI::Validator& non_negative_integer() {
+  static const CLI::Validator v = number_validator(
+      "NONNEGATIVE", true, [](double x) { return x >= 0; }, "a whole number 0 or larger");
+  return v;
+}
+
+std::uint64_t parse_seed(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  std::uint64_t seed = 0;
+  try {
+    seed = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || text[0] == '-')
+    throw InvalidInput(option + ": the seed must be a whole number 0 or larger, got " + quote_input(text));
+  return seed;
+}
+
+std::array<double, 2> pair_or_single(const std::vector<double>& values, const std::string& option) {
+  if (values.size() == 1) return {values[0], values[0]};
+  if (values.size() == 2) return {values[0], values[1]};
+  throw InvalidInput(option + ": give one value or two (a range)");
+}
+
+}  // namespace emit::cli
