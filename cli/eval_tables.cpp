@@ -73,7 +73,8 @@ void print_stats(const char* what, const ErrorStats& e) {
 
 }  // namespace
 
-void print_sheet_evaluation(const EvalCase& c, const SheetEvalReport& report, bool sweep) {
+void print_sheet_evaluation(const EvalCase& eval_case, const SheetEvalReport& report, bool sweep) {
+  const EvalCase& c = eval_case;
   const SheetEvaluation& e = report.evaluation;
   std::printf("  %zu single presses (r = %.1f mm), reconstruction mesh %ld triangles\n", e.grid_presses, c.radius_mm,
               e.triangles);

@@ -59,8 +59,9 @@ py::array_t<ContactRow> contact_rows(const std::vector<std::vector<Contact>>& pe
   return rows;
 }
 
-/// The pipeline and its reconstructor, and the reference frame. Calls are serialised (a Python
-/// thread may call while another one's call runs without the GIL).
+/// The pipeline and its reconstructor, and the reference. Calls on one object take turns (a
+/// Python thread may call while another one's call runs without the GIL); separate objects share
+/// nothing and run at once.
 class PythonReconstructor {
  public:
   PythonReconstructor(const Sensor& sensor, const PipelineOptions& pipeline_options, const FrameOptions& options,

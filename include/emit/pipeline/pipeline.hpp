@@ -3,14 +3,16 @@
 /// The one place that builds every model a method needs, from a sensor and options: the linear
 /// model (mesh, Jacobian, operator, from the cache where it can: model/reconstruction_model.hpp),
 /// and for contact fitting the fit model (its graded mesh and Green's function, on the calibrated
-/// sheet) and the fitter with the calibrated contact law. `emit reconstruct`, `emit live`, the
-/// Python bindings and the evaluation all reconstruct through it.
+/// sheet) and the fit's precompute with the calibrated contact law (frame/contact_fitter.hpp).
+/// Built once, it is read-only: each reconstructor it makes has its own scratch, so several run
+/// at once on as many threads. `emit reconstruct`, `emit live`, the Python bindings and the
+/// evaluation all reconstruct through it.
 ///
 /// Example:
 ///
-///     emit::Pipeline pipeline(sensor, {.method = emit::Method::fit, .cache_dir = emit::default_cache_dir()});
+///     const emit::Pipeline pipeline(sensor, {.method = emit::Method::fit, .cache_dir = emit::default_cache_dir()});
 ///     emit::Reconstructor reconstructor = pipeline.reconstructor();
-///     reconstructor.set_reference(reference);
+///     reconstructor.set_reference(emit::average_reference(untouched_frames));
 ///     for (const emit::Frame& frame : frames) use(reconstructor.process(frame));
 #include <functional>
 #include <memory>
