@@ -1,9 +1,12 @@
 // emit bench: the time of each stage, offline and per frame, at several mesh sizes and electrode
 // counts, with peak memory and naive baselines measured in the same run (jobs/bench_job.hpp).
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 
 #include "commands.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/jobs/bench_job.hpp"
 
 namespace emit::cli {
@@ -16,17 +19,15 @@ struct BenchArgs {
   bool no_baselines = false;
 };
 
-/// "6k" → 6000, "1.5k" → 1500, "24000" → 24000. \throw InvalidInput naming the value.
+/// "6k" → 6000, "1.5k" → 1500, "24000" → 24000: finite, from 1 to an int's largest (the job
+/// bounds it by the sensor's mesh.max_triangles). \throw InvalidInput naming the value.
 int parse_size(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    double value = std::stod(text, &used);
-    if (used < text.size() && (text.substr(used) == "k" || text.substr(used) == "K")) value *= 1000, ++used;
-    if (used != text.size() || !(value >= 1)) throw std::invalid_argument(text);
-    return static_cast<int>(value);
-  } catch (const std::exception&) {
-    throw InvalidInput("--sizes: \"" + text + "\" is not a triangle count (such as 6k or 24000)");
-  }
+  char* end = nullptr;
+  double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() && (*end == 'k' || *end == 'K')) value *= 1000, ++end;
+  if (end == text.c_str() || *end != '\0' || !(value >= 1 && value <= std::numeric_limits<int>::max()))
+    throw InvalidInput("--sizes: " + quote_input(text) + " is not a triangle count (such as 6k or 24000)");
+  return static_cast<int>(value);
 }
 
 std::string ratio_text(double baseline_s, double ours_s) {

@@ -90,7 +90,7 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
   cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger and moving scripts")
-      ->check(positive_number());
+      ->check(positive_integer());
   cmd->add_option("--spacing-mm", script.spacing_mm, "Grid pitch")->check(positive_number());
   cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(non_negative_number());
   cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());

@@ -3,6 +3,7 @@
 // library's job, calls it, and prints what it returns; it holds no maths and no pipeline.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,24 @@ const CLI::Validator& non_negative_number();
 const CLI::Validator& fraction_below_one();
 const CLI::Validator& positive_integer();
 const CLI::Validator& non_negative_integer();
+/// A thread count within core/limits.hpp's bound, said by its rule (limits::thread_count_rule).
+const CLI::Validator& threads_within_limit();
+/// A count of a real skin's presses: a whole number from 1 to io/real_dataset.hpp's bound.
+const CLI::Validator& press_count();
+/// A number handed to `check`, the library's own validation of it (an options struct's
+/// validate()), whose message the option's error then is: the CLI refuses a value as the Python
+/// module does, in the same words ("--lambda2: PipelineOptions::lambda2 must be 0 (the method's)
+/// or positive, got -1").
+CLI::Validator checked_by(const std::string& name, const std::function<void(double)>& check);
+/// checked_by the validate() of an `Options` whose `field` holds the number, the others their defaults.
+template <class Options>
+CLI::Validator checked_by(double Options::*field) {
+  return checked_by("NUMBER", [field](double x) {
+    Options options;
+    options.*field = x;
+    options.validate();
+  });
+}
 /// A seed given as `option`'s value: a whole number 0 or larger (not CLI11's unsigned parse, which
 /// takes -1). \throw InvalidInput naming the option.
 std::uint64_t parse_seed(const std::string& option, const std::string& text);

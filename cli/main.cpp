@@ -1,5 +1,6 @@
 // emit: electromechanical impedance tomography for soft tactile sensors.
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 #include <CLI/CLI.hpp>
@@ -24,8 +25,10 @@ int run(int argc, char** argv) {
   int threads = 1;
   emit::set_thread_count(threads);
   app.add_option("--threads", threads, "threads for the linear algebra (default 1)")
-      ->check(emit::cli::positive_integer())
-      ->each([](const std::string& count) { emit::set_thread_count(std::stoi(count)); });
+      ->check(emit::cli::threads_within_limit())
+      ->each([](const std::string& count) {
+        emit::set_thread_count(static_cast<int>(std::strtod(count.c_str(), nullptr)));
+      });
   emit::cli::add_mesh_command(app);
   emit::cli::add_simulate_command(app);
   emit::cli::add_reconstruct_command(app);

@@ -2,10 +2,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 
 #include "commands.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/limits.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/io/real_dataset.hpp"
 
 namespace emit::cli {
 
@@ -55,6 +58,35 @@ const CLI::Validator& non_negative_integer() {
   static const CLI::Validator v = number_validator(
       "NONNEGATIVE", true, [](double x) { return x >= 0; }, "a whole number 0 or larger");
   return v;
+}
+
+const CLI::Validator& threads_within_limit() {
+  static const CLI::Validator v = number_validator(
+      "THREADS", true, [](double x) { return x >= 1 && x <= limits::max_threads; }, limits::thread_count_rule());
+  return v;
+}
+
+const CLI::Validator& press_count() {
+  static const CLI::Validator v = number_validator(
+      "PRESSES", true, [](double x) { return x >= 1 && x <= static_cast<double>(max_real_dataset_values); },
+      "a whole number of presses from 1 to " + std::to_string(max_real_dataset_values) + " (the most a folder holds)");
+  return v;
+}
+
+CLI::Validator checked_by(const std::string& name, const std::function<void(double)>& check) {
+  return CLI::Validator(
+      [check](const std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return "must be a number, got " + quote_input(text);
+        try {
+          check(value);
+        } catch (const InvalidInput& e) {
+          return e.what();
+        }
+        return {};
+      },
+      name);
 }
 
 std::uint64_t parse_seed(const std::string& option, const std::string& text) {

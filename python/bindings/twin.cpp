@@ -7,6 +7,8 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "emit/core/limits.hpp"
+#include "emit/pipeline/pipeline.hpp"
 #include "emit/twin/twin.hpp"
 
 namespace emit::python {
@@ -14,8 +16,14 @@ namespace emit::python {
 namespace {
 
 /// The frames of each frame's presses, as one (frames, N, N) array.
+/// As many frames as one call may make (core/limits.hpp), the CLI's bound on `emit simulate`.
+void check_frames_held(const PressSequence& presses, int electrodes) {
+  limits::check_frames_held("presses", static_cast<double>(presses.size()), electrodes, "simulate them in parts");
+}
+
 py::array_t<double> frames_of(Twin& twin, const PressSequence& presses) {
   const py::ssize_t n = twin.sensor().electrode_count();
+  check_frames_held(presses, static_cast<int>(n));
   py::array_t<double> stack({static_cast<py::ssize_t>(presses.size()), n, n});
   double* out = stack.mutable_data();
   const EmitCall call;
@@ -78,6 +86,7 @@ applies the sensor's ADC (quantisation, noise, clipping) unless adc=False.)")
   m.def(
       "simulate",
       [](const Sensor& sensor, const PressSequence& presses, int mesh_seed, std::uint64_t noise_seed, bool adc) {
+        check_frames_held(presses, electrode_count_of(sensor));  // before the twin is meshed
         std::unique_ptr<Twin> twin;
         {
           const EmitCall call;

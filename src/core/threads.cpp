@@ -2,9 +2,7 @@
 
 #include <cblas.h>
 
-#include <string>
-
-#include "emit/core/errors.hpp"
+#include "emit/core/limits.hpp"
 
 namespace emit {
 
@@ -13,7 +11,7 @@ int current_count = 1;
 }  // namespace
 
 void set_thread_count(int count) {
-  if (count < 1) throw InvalidInput("thread count must be at least 1, got " + std::to_string(count));
+  limits::check_thread_count("the thread count", count);
   openblas_set_num_threads(count);
   current_count = count;
 }

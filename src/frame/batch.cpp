@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/limits.hpp"
 #include "emit/core/threads.hpp"
 
 namespace emit {
@@ -15,7 +16,7 @@ namespace {
 template <typename FrameAt>
 std::vector<std::vector<Contact>> batch(const ReconstructorFactory& make, const Reference& reference, std::size_t count,
                                         int threads, const FrameAt& frame) {
-  if (threads < 1) throw InvalidInput("batch needs at least 1 thread, got " + std::to_string(threads));
+  limits::check_thread_count("threads", threads);
   std::vector<std::vector<Contact>> contacts(count);
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
   // Contiguous slices: each worker's frames sit together in memory, and its results too.

@@ -76,6 +76,14 @@ ChildReport<Result> run_in_child(Work&& work, double& peak_MiB) {
 
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row, const Progress& progress) {
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
+  for (const int size : job.triangles)  // refused now, not after the sizes before it ran
+    if (!(size >= 1 && size <= sensor.mesh.max_triangles)) {
+      char message[160];
+      std::snprintf(message, sizeof message,
+                    "--sizes %d: a triangle count must be from 1 to the sensor's mesh.max_triangles, %g", size,
+                    sensor.mesh.max_triangles);
+      throw InvalidInput(message);
+    }
   // A current-injection skin is timed with its own electrodes and protocol.
   const bool eit = sensor.excitation.has_value();
   const std::vector<int> electrode_counts = eit ? std::vector<int>{sensor.electrode_count()} : job.electrodes;

@@ -1,15 +1,18 @@
 #include "emit/jobs/simulate_job.hpp"
 #include "emit/mesh/sheet_file.hpp"
 
+#include <cstdio>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/limits.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/presses_csv.hpp"
+#include "emit/pipeline/pipeline.hpp"
 #include "emit/render/field_image.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/pressure_map.hpp"
@@ -60,6 +63,17 @@ void write_potential_images(Twin& twin, const PressSequence& sequence, const std
   }
 }
 
+/// The script's frames within what a run holds (core/limits.hpp), before any is made.
+void check_script_size(const Sensor& sensor, const PressScript& script, int electrodes) {
+  const double frames = script_frame_count(sensor, script);
+  if (script.kind != PressScript::Kind::grid)
+    return limits::check_frames_held("--frames " + std::to_string(script.frames), frames, electrodes,
+                                     "simulate them in several runs (--seed)");
+  char what[96];
+  std::snprintf(what, sizeof what, "--spacing-mm %g (a grid over the sheet)", script.spacing_mm);
+  limits::check_frames_held(what, frames, electrodes, "give a larger spacing");
+}
+
 }  // namespace
 
 SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress) {
@@ -71,6 +85,8 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
   if (!job.presses.empty() && job.script) throw InvalidInput("give --press or --script, not both");
   if (job.presses.empty() && !job.script)
     throw InvalidInput("nothing to simulate: give --press x,y,r,F or --script NAME");
+  const int N = electrode_count_of(sensor);
+  if (job.script) check_script_size(sensor, *job.script, N);
   report.presses = job.script ? run_script(sensor, *job.script) : PressSequence{job.presses};
   for (std::size_t f = 0; f < report.presses.size(); ++f)
     for (std::size_t i = 0; i < report.presses[f].size(); ++i) {
@@ -88,7 +104,6 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
   std::vector<NamedPath> outputs{{"--out", job.out_path}, {"--truth", report.truth_path}};
   if (job.realistic) outputs.push_back({"the realistic sheet's description", report.sheet_path});
   check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}}, outputs);
-  const int N = static_cast<int>(sensor.electrodes.size());
   if (job.twin.dead_electrode >= N)
     throw InvalidInput("--dead-electrode " + std::to_string(job.twin.dead_electrode) + ": the sensor has " +
                        std::to_string(N) + " electrodes, 0 to " + std::to_string(N - 1));

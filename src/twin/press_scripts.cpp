@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -62,6 +63,13 @@ class Sampler {
   std::mt19937_64 rng_;
 };
 
+/// The grid's nodes out from the box's centre along x and y: (2 nx + 1)(2 ny + 1) in all.
+Vector2 grid_half_counts(const Eigen::AlignedBox2d& box, double spacing_mm) {
+  return {std::floor(0.5 * box.sizes().x() / spacing_mm), std::floor(0.5 * box.sizes().y() / spacing_mm)};
+}
+
+double grid_node_count(const Vector2& half_counts) { return (2 * half_counts.x() + 1) * (2 * half_counts.y() + 1); }
+
 }  // namespace
 
 PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter_mm, const PressStyle& style) {
@@ -70,8 +78,14 @@ PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter
   PressSequence frames;
   const auto& box = sampler.box();
   const Vector2 centre = box.center();
-  const int nx = static_cast<int>(std::floor(0.5 * box.sizes().x() / spacing_mm));
-  const int ny = static_cast<int>(std::floor(0.5 * box.sizes().y() / spacing_mm));
+  const Vector2 half_counts = grid_half_counts(box, spacing_mm);
+  // The counts' conversion's guard; a run's own bound (core/limits.hpp, simulate_job) is far below it.
+  if (!(grid_node_count(half_counts) <= std::numeric_limits<int>::max())) {
+    char message[96];
+    std::snprintf(message, sizeof message, "grid spacing %g mm: more presses than an int counts", spacing_mm);
+    throw InvalidInput(message);
+  }
+  const int nx = static_cast<int>(half_counts.x()), ny = static_cast<int>(half_counts.y());
   for (int j = -ny; j <= ny; ++j)
     for (int i = -nx; i <= nx; ++i) {
       const Vector2 node = centre + spacing_mm * Vector2(i, j);
@@ -176,6 +190,12 @@ PressScript::Kind parse_script_kind(const std::string& name) {
   if (name == "moving") return PressScript::Kind::moving;
   throw InvalidInput("--script: unknown script " + quote_input(name) +
                      " (none, grid, random, two-finger, three-finger, four-finger, moving)");
+}
+
+double script_frame_count(const Sensor& sensor, const PressScript& script) {
+  if (script.kind != PressScript::Kind::grid) return script.frames;
+  if (!(script.spacing_mm > 0)) return 0;  // grid_script says what is wrong
+  return grid_node_count(grid_half_counts(bounding_box(sheet_outline(sensor)), script.spacing_mm));
 }
 
 PressSequence run_script(const Sensor& sensor, const PressScript& script) {

@@ -30,7 +30,8 @@ TEST(Threads, SetReadBackAndSingleThreadedScope) {
   } catch (const InvalidInput& e) {
     message = e.what();
   }
-  EXPECT_EQ(message, "thread count must be at least 1, got 0");
+  EXPECT_EQ(message,
+            "the thread count must be a whole number from 1 to 256 (threads beyond the cores only cost memory), got 0");
   EXPECT_EQ(thread_count(), 2);
   set_thread_count(before);
 }

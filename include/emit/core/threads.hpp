@@ -6,7 +6,7 @@
 
 namespace emit {
 
-/// \throw InvalidInput unless count ≥ 1.
+/// \throw InvalidInput unless 1 ≤ count ≤ limits::max_threads (core/limits.hpp).
 void set_thread_count(int count);
 /// The count last set (1 until set).
 int thread_count();

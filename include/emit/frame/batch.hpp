@@ -17,7 +17,8 @@ namespace emit {
 using ReconstructorFactory = std::function<Reconstructor()>;
 
 /// Contacts of every frame, in order, with `threads` workers, each reconstructing against
-/// `reference`. \throw InvalidInput for threads < 1 or a bad frame; the first worker's error.
+/// `reference`. \throw InvalidInput for a thread count outside 1 … limits::max_threads (core/limits.hpp) or
+/// a bad frame; the first worker's error.
 std::vector<std::vector<Contact>> reconstruct_batch(const ReconstructorFactory& make, const Reference& reference,
                                                     const std::vector<Frame>& frames, int threads);
 

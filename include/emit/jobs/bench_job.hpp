@@ -35,7 +35,8 @@ struct BenchRow {
 
 /// Calls `on_row` as each case finishes (sizes within an electrode count, electrode counts in
 /// turn). \return how many cases failed (their rows say why). \throw InvalidInput (a bad sensor, a mesh-file sensor
-/// with another electrode count), IoError (no child process).
+/// with another electrode count, a size beyond the sensor's mesh.max_triangles: before any case),
+/// IoError (no child process).
 int run_bench_job(const BenchJob& job, const std::function<void(const BenchRow&)>& on_row,
                   const Progress& progress = {});
 

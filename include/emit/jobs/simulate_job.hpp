@@ -42,8 +42,9 @@ struct SimulateReport {
   std::string sheet_path;                   ///< where that went (realistic only)
 };
 
-/// \throw InvalidInput (neither or both of presses and script, a press off the sheet), IoError
-/// (an output folder that does not exist: before any work).
+/// \throw InvalidInput (neither or both of presses and script, a press off the sheet, a script of
+/// more frames than a run holds: core/limits.hpp, before any work), IoError (an output folder
+/// that does not exist: before any work).
 SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress = {});
 
 }  // namespace emit

@@ -21,6 +21,8 @@ struct PressStyle {
 };
 
 /// One press per frame on a square grid of pitch spacing_mm, each moved by up to ±jitter_mm.
+/// \throw InvalidInput for a spacing that is not positive, or so small that the grid's nodes
+/// overflow an int.
 PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter_mm, const PressStyle& style);
 /// One press per frame at a uniformly random place.
 PressSequence random_script(const Sensor& sensor, int frames, const PressStyle& style);
@@ -49,6 +51,11 @@ struct PressScript {
 /// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving". \throw InvalidInput naming the
 /// text.
 PressScript::Kind parse_script_kind(const std::string& name);
+
+/// How many frames run_script gives, at most, found without running it: `frames`, or a grid's
+/// nodes over the sheet's bounding box (those outside the margin are dropped after); 0 for a
+/// spacing that is not positive (grid_script refuses it).
+double script_frame_count(const Sensor& sensor, const PressScript& script);
 
 /// The script's presses, frame by frame (`none`: `frames` frames with no press).
 PressSequence run_script(const Sensor& sensor, const PressScript& script);
