@@ -83,8 +83,11 @@ void add_calibrate_command(CLI::App& app) {
   cmd->add_option("--method", a->method, "Reconstruction method the calibration is for")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
-  cmd->add_option("--lambda2", job.options.lambda2, "lambda^2 (default: the method's)")->check(positive_number());
-  cmd->add_option("--threshold", job.options.threshold_fraction, "Threshold fraction")->capture_default_str();
+  cmd->add_option("--lambda2", job.options.lambda2, "lambda^2 (default: the method's)")
+      ->check(checked_by(&PressCalibrationOptions::lambda2));
+  cmd->add_option("--threshold", job.options.threshold_fraction, "Threshold fraction")
+      ->check(checked_by(&PressCalibrationOptions::threshold_fraction))
+      ->capture_default_str();
   cmd->add_flag("!--no-sheet", job.options.fit_sheet,
                 "With --method fit: keep the nominal sensor (sheet, electrodes, drive) instead of fitting it from "
                 "the presses");

@@ -2,6 +2,7 @@
 // round on a realistic sheet beside its targets; --real, a real skin's presses (jobs/eval_job.hpp,
 // jobs/real_eval_job.hpp; their tables: eval_tables.cpp, realistic_eval_table.cpp).
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -59,15 +60,13 @@ void run_real(EvalArgs& args) {
   RealEvalJob& job = args.real;
   if (job.sensor_path.empty()) throw InvalidInput("--real: give the skin's description with --sensor FILE");
   job.options.test_from = static_cast<Index>(args.test_from);
-  if (!args.curve.empty()) {
-    job.options.curve.clear();
-    if (args.curve != std::vector<std::string>{"none"})
-      for (std::string n : args.curve) {
-        if (const std::string error = positive_integer()(n); !error.empty())
-          throw InvalidInput("--curve: " + error + " (or none)");
-        job.options.curve.push_back(std::stol(n));
-      }
-  }
+  if (!args.curve.empty()) job.options.curve.clear();
+  if (args.curve != std::vector<std::string>{"none"})
+    for (std::string n : args.curve) {
+      if (const std::string error = press_count()(n); !error.empty())
+        throw InvalidInput("--curve: give numbers or none; each " + error);
+      job.options.curve.push_back(static_cast<Index>(std::strtod(n.c_str(), nullptr)));
+    }
   job.plots_dir = args.plots_dir;
   print_real_evaluation(job, run_real_eval_job(job, stderr_progress(20)));
 }
@@ -126,11 +125,11 @@ void add_eval_command(CLI::App& app) {
       ->needs(real);
   cmd->add_option("--calibration-presses", a->real.options.calibration_presses,
                   "With --real: calibrate on this many first presses")
-      ->check(positive_integer())
+      ->check(press_count())
       ->capture_default_str()
       ->needs(real);
   cmd->add_option("--test-from", a->test_from, "With --real: the held-out presses begin here (default: the last fifth)")
-      ->check(positive_integer())
+      ->check(press_count())
       ->needs(real);
   cmd->add_option("--curve", a->curve,
                   "With --real: the numbers of calibration presses to measure the error against, or none "

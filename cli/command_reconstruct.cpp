@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "emit/core/threads.hpp"
 #include "emit/jobs/reconstruct_job.hpp"
+#include "emit/pipeline/pipeline.hpp"
 
 namespace emit::cli {
 
@@ -56,11 +57,12 @@ void add_reconstruct_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lambda2", job.lambda2,
                   "Regularisation lambda^2 (default: chosen from the operator's spectrum, docs/physics.md)")
-      ->check(positive_number());
+      ->check(checked_by(&PipelineOptions::lambda2));
   cmd->add_option("--threshold", job.threshold_fraction, "Threshold as a fraction of the image's maximum")
+      ->check(checked_by(&FrameOptions::threshold_fraction))
       ->capture_default_str();
   cmd->add_option("--min-area-mm2", job.min_contact_area_mm2, "Drop contacts smaller than this")
-      ->check(non_negative_number());
+      ->check(checked_by(&FrameOptions::min_contact_area_mm2));
   cmd->add_option("--images", job.images_dir, "Write a pressure map per frame (PNG) into this folder");
   cmd->add_option("--mcap", job.mcap_path,
                   "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");

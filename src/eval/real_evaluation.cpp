@@ -12,16 +12,28 @@
 
 namespace emit {
 
-void RealEvalOptions::validate(Index presses) const {
-  const Index held = test_from < 0 ? presses - presses / 5 : test_from;
-  if (held <= 0 || held >= presses)
-    throw InvalidInput("--test-from: must be between 1 and " + std::to_string(presses - 1) + " (the presses), got " +
-                       std::to_string(held));
-  if (calibration_presses < 2 * static_cast<Index>(fit.folds) || calibration_presses > held)
-    throw InvalidInput("--calibration-presses: must be between " + std::to_string(2 * fit.folds) + " and " +
+void RealEvalOptions::validate(Index presses, const std::string& folder) const {
+  fit.validate();
+  // The calibration's cross-validation takes 2 presses a fold at least; one press at least is held out.
+  const Index least = 2 * static_cast<Index>(fit.folds);
+  const auto held_from = [&](Index n) { return test_from < 0 ? n - n / 5 : test_from; };
+  Index needed = least + 1;
+  while (test_from < 0 && (needed / 5 < 1 || held_from(needed) < least)) ++needed;
+  const std::string folds = " (2 per fold of its " + std::to_string(fit.folds) + "-fold cross-validation)";
+  if (presses < needed)
+    throw InvalidInput(folder + ": " + std::to_string(presses) + " presses, too few: calibration takes at least " +
+                       std::to_string(least) + folds + " and the held-out presses" +
+                       (test_from < 0 ? " (the last fifth)" : "") + " 1 or more; the folder needs " +
+                       std::to_string(needed) + " presses or more");
+  if (test_from >= 0 && (test_from < least || test_from >= presses))
+    throw InvalidInput("--test-from: must be between " + std::to_string(least) + ", the least calibration takes" +
+                       folds + ", and " + std::to_string(presses - 1) + " (" + folder + "'s presses less one), got " +
+                       std::to_string(test_from));
+  const Index held = held_from(presses);
+  if (calibration_presses < least || calibration_presses > held)
+    throw InvalidInput("--calibration-presses: must be between " + std::to_string(least) + " and " +
                        std::to_string(held) + " (the presses before the held-out ones), got " +
                        std::to_string(calibration_presses));
-  fit.validate();
   if (grid_divisions < 2) throw InvalidInput("grid divisions: must be at least 2");
 }
 
@@ -91,7 +103,7 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
 
 RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, const RealEvalOptions& options,
                              const Progress& progress) {
-  options.validate(data.presses());
+  options.validate(data.presses(), data.folder);
   if (!sensor.excitation)
     throw InvalidInput("the sensor has no \"excitation\": emit eval --real needs a current-injection skin's protocol");
   const auto M = static_cast<Index>(sensor.excitation->readings.size());

@@ -1,6 +1,7 @@
 #include "emit/jobs/eval_job.hpp"
 
 #include "emit/core/errors.hpp"
+#include "emit/core/output_paths.hpp"
 #include "emit/core/quote_input.hpp"
 #include "emit/pipeline/pipeline.hpp"
 
@@ -18,6 +19,7 @@ std::vector<EvalSheet> eval_sheets(const std::string& examples_dir, const std::s
 
 SheetEvalReport run_sheet_eval_job(const EvalCase& eval_case, const EvalOptions& options, const std::string& plots_dir,
                                    const Progress& progress) {
+  if (!plots_dir.empty()) prepare_output_folder({"--plots", plots_dir});  // before minutes of work
   SheetEvalReport report;
   report.evaluation = evaluate_sheet(eval_case, options, progress);
   if (!plots_dir.empty()) report.plots = write_sweep_plots(eval_case, report.evaluation, plots_dir);

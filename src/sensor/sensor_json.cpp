@@ -36,6 +36,13 @@ std::string shown(const json& v) {
   return v.dump();
 }
 
+/// A length as a person writes it: "20", "2.5".
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 /// Reads one JSON object key by key and, on finish(), rejects keys nobody asked for. Every error
 /// names the full key path ("contact_law.gamma"), so the user knows exactly what to fix.
 class ObjectReader {
@@ -94,7 +101,7 @@ class ObjectReader {
   double check_number(const std::string& key, const json& v, Sign sign) const {
     if (!v.is_number()) fail(key_path(key), "must be a number, got " + shown(v));
     const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(key_path(key), "must be finite");
+    if (!std::isfinite(x)) fail(key_path(key), "must be a finite number, got " + number_text(x));
     if (sign == Sign::positive && !(x > 0)) fail(key_path(key), "must be positive, got " + v.dump());
     if (sign == Sign::non_negative && x < 0) fail(key_path(key), "must not be negative, got " + v.dump());
     return x;
@@ -104,13 +111,6 @@ class ObjectReader {
   std::string path_;
   std::set<std::string> used_;
 };
-
-/// A length as a person writes it: "20", "2.5".
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 Shape parse_shape(const json& j, const std::string& base_dir) {
   ObjectReader r(j, "shape");
@@ -300,7 +300,7 @@ std::vector<std::array<int, 2>> electrode_pairs(const json& v, int electrode_cou
 /// "excitation": a current-injection protocol (sensor/excitation.hpp). The frame's values are the
 /// readings in order: drive by drive, each drive's pairs as "measure" lists them (less those that
 /// touch the drive, if "skip_driving_electrodes"), or exactly "readings" ([drive, +, −] each).
-Excitation parse_excitation(const json& j, int electrode_count) {
+Excitation parse_excitation(const json& j, int electrode_count, double sheet_resistance_ohm_per_sq) {
   ObjectReader r(j, "excitation");
   Excitation e;
   e.current_A = r.number_or("current_A", e.current_A, Sign::positive);
@@ -364,7 +364,19 @@ Excitation parse_excitation(const json& j, int electrode_count) {
       if (!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0)
         ObjectReader::fail("excitation.contact_impedance_ohm_mm",
                            "must be a number of ohm mm, not negative, or a list of one per electrode; got " + shown(x));
-      return x.get<double>();
+      const double z = x.get<double>();
+      // z / R□ is the stretch of sheet whose resistance equals the contact's (sensor/excitation.hpp).
+      const double low = Excitation::min_contact_length_mm * sheet_resistance_ohm_per_sq,
+                   high = Excitation::max_contact_length_mm * sheet_resistance_ohm_per_sq;
+      if (z != 0 && !(z >= low * (1 - 1e-12) && z <= high * (1 + 1e-12)))  // the ends as written are in
+        ObjectReader::fail("excitation.contact_impedance_ohm_mm",
+                           "must be 0 (the shunt model) or from " + number_text(low) + " to " + number_text(high) +
+                               " (" + number_text(Excitation::min_contact_length_mm) + " to " +
+                               number_text(Excitation::max_contact_length_mm) + " mm of the sheet's " +
+                               number_text(sheet_resistance_ohm_per_sq) +
+                               " ohm/sq: less is a perfect contact, give 0; more cuts the electrode off), got " +
+                               number_text(z));
+      return z;
     };
     if (v.is_array()) {
       for (const json& x : v) e.contact_impedance_ohm_mm.push_back(ohm_mm(x));
@@ -472,7 +484,7 @@ void parse_sections(const json& j, Sensor& sensor, const std::string& base_dir) 
                          "a .msh sensor's electrodes are counted only when its file is read; "
                          "give the sheet as CAD or STL with its electrodes listed");
     const int count = file_electrodes ? static_cast<int>(shape.electrode_at_mm.size()) : sensor.electrode_count();
-    sensor.excitation = parse_excitation(r.value("excitation"), count);
+    sensor.excitation = parse_excitation(r.value("excitation"), count, sensor.sheet_resistance_ohm_per_sq);
   }
   if (r.has("mesh")) {
     ObjectReader m(r.value("mesh"), "mesh");

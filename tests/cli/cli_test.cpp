@@ -794,7 +794,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"calibrate without truth", "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --out OUT",
                "needs --reference, --frames, --truth and --out"},
         BadRun{"bench size not a count", "bench --sizes 6kk", "--sizes: \"6kk\" is not a triangle count"},
-        BadRun{"no threads", "--threads 0 mesh --out OUT", "--threads: must be a whole number 1 or larger, got \"0\""},
+        BadRun{"no threads", "--threads 0 mesh --out OUT",
+               "--threads: must be a whole number from 1 to 256 (threads beyond the cores only cost memory), got "
+               "\"0\""},
         // Runs that used to lose data.
         BadRun{"contacts over the frames", "reconstruct --reference DIR/ref.csv --frames OUT --contacts OUT --no-cache",
                "is the same file as --frames"},
@@ -817,6 +819,26 @@ INSTANTIATE_TEST_SUITE_P(
                "must not cross or touch itself"},
         BadRun{"tiny elements", "mesh --element-size-mm 1e-6 --out OUT", "beyond the limit of 1e+06"},
         BadRun{"a 100 m sheet", "simulate --sensor DIR/huge.json --press 30,30,5,10 --out OUT", "beyond the limit"},
+        BadRun{"threads beyond the limit", "--threads 1000000000 mesh --out OUT",
+               "--threads: must be a whole number from 1 to 256 (threads beyond the cores only cost memory), got "
+               "\"1000000000\""},
+        BadRun{"threads beyond an int", "--threads 99999999999 mesh --out OUT",
+               "--threads: must be a whole number from 1 to 256 (threads beyond the cores only cost memory), got "
+               "\"99999999999\""},
+        BadRun{"frames beyond memory", "simulate --script none --frames 1000000000 --out OUT",
+               "--frames 1000000000: 1000000000 frames of 16 electrodes, beyond the 131072 a run holds in memory (256 "
+               "MiB of readings); simulate them in several runs (--seed)"},
+        BadRun{"grid beyond memory", "simulate --script grid --spacing-mm 0.0078125 --out OUT",
+               "--spacing-mm 0.0078125 (a grid over the sheet): 58997761 frames of 16 electrodes, beyond the 131072 a "
+               "run holds in memory (256 MiB of readings); give a larger spacing"},
+        BadRun{"bench size not finite", "bench --sizes inf", "--sizes: \"inf\" is not a triangle count"},
+        BadRun{"bench size beyond the mesh limit", "bench --sizes 1.5k,2000k",
+               "--sizes 2000000: a triangle count must be from 1 to the sensor's mesh.max_triangles, 1e+06"},
+        BadRun{"curve beyond any folder", "eval --real DIR --sensor DIR/none.json --curve 20,99999999999999999999",
+               "--curve: give numbers or none; each must be a whole number of presses from 1 to 134217728 (the most a "
+               "folder holds), got \"99999999999999999999\""},
+        BadRun{"plots over a file", "eval --sheet 30 --quick --plots DIR/a_file",
+               "--plots DIR/a_file: cannot create the folder"},
         BadRun{"frames from dev zero",
                "reconstruct --reference DIR/ref.csv --frames /dev/zero --contacts OUT --no-cache",
                "/dev/zero:1: line longer than 1024 KiB"},
@@ -834,7 +856,10 @@ INSTANTIATE_TEST_SUITE_P(
                "unknown command \"reconstuct\" (did you mean \"reconstruct\"?)"},
         BadRun{"negative lambda",
                "reconstruct --reference DIR/ref.csv --frames DIR/ref.csv --contacts OUT --lambda2 -1",
-               "--lambda2: must be a positive number, got \"-1\""},
+               "--lambda2: PipelineOptions::lambda2 must be 0 (the method's) or positive, got -1"},
+        BadRun{"lambda not a number",
+               "calibrate --reference DIR/ref.csv --frames DIR/ref.csv --truth DIR/truth.csv --out OUT --lambda2 nan",
+               "--lambda2: PressCalibrationOptions::lambda2 must be 0 (the method's) or positive, got nan"},
         BadRun{"zero element size", "mesh --element-size-mm 0 --out OUT",
                "--element-size-mm: must be a positive number, got \"0\""},
         BadRun{"images where a file is",

@@ -160,11 +160,11 @@ TEST(OptionCheck, EveryOptionsStructChecksItself) {
          o.validate();
        },
        "PipelineTimingOptions::seconds_per_figure"},
-      {"RealEvalOptions", [] { RealEvalOptions{}.validate(550); },
+      {"RealEvalOptions", [] { RealEvalOptions{}.validate(550, "presses"); },
        [] {
          RealEvalOptions o;
          o.calibration_presses = 0;
-         o.validate(550);
+         o.validate(550, "presses");
        },
        ""},
       {"EvalOptions", [] { EvalOptions{}.validate(); },

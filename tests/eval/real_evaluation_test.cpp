@@ -109,5 +109,29 @@ TEST(RealEvaluation, RefusesFramesThatDoNotFitTheSensor) {
             "cubic: press 5: a value or its reference is not positive, or the frame equals its reference");
 }
 
+// A folder of too few presses for calibration and held-out presses is named, with the presses it
+// holds and needs (it said "--calibration-presses: must be between 20 and 4", of an option never
+// given); an explicit --test-from is held to the folder.
+TEST(RealEvaluation, AFolderOfTooFewPressesSaysWhatItNeeds) {
+  const RealDataset five = cubic_skin(5);
+  RealEvalOptions options;
+  EXPECT_EQ(test::error_of([&] { evaluate_real(five, ring_skin(), options); }),
+            "cubic: 5 presses, too few: calibration takes at least 20 (2 per fold of its 10-fold cross-validation) "
+            "and the held-out presses (the last fifth) 1 or more; the folder needs 24 presses or more");
+  options.test_from = 3;
+  EXPECT_EQ(test::error_of([&] { evaluate_real(five, ring_skin(), options); }),
+            "cubic: 5 presses, too few: calibration takes at least 20 (2 per fold of its 10-fold cross-validation) "
+            "and the held-out presses 1 or more; the folder needs 21 presses or more");
+  const RealDataset forty = cubic_skin(40);
+  options.test_from = 10;
+  EXPECT_EQ(test::error_of([&] { evaluate_real(forty, ring_skin(), options); }),
+            "--test-from: must be between 20, the least calibration takes (2 per fold of its 10-fold "
+            "cross-validation), and 39 (cubic's presses less one), got 10");
+  // 24 presses are enough: 20 to calibrate on, the last 4 held out.
+  options.test_from = -1;
+  options.calibration_presses = 20;
+  EXPECT_NO_THROW(options.validate(24, "cubic"));
+}
+
 }  // namespace
 }  // namespace emit

@@ -13,6 +13,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/sensor/excitation.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
@@ -107,6 +108,32 @@ TEST(CompleteElectrodeModel, TheShuntModelIsItsLimit) {
     previous = difference;
   }
   EXPECT_LT(previous, 1e-5);
+}
+
+// The contact impedances a sensor file may give (sensor/excitation.hpp: 1e-6 to 1e6 mm of the
+// sheet, z / R□) are ones the model solves: at the low end the readings are the shunt model's to
+// within 1e-6 (measured 4.7e-7: first order in z, as above), at the high end they are finite and
+// reciprocal to 1e-6 (measured 1e-9) though the electrodes are as good as cut off. Beyond, the
+// system loses the digits a double holds (1e-15 or 1e20 ohm mm at 5000 ohm/sq failed to factorise
+// or read 0 V).
+TEST(CompleteElectrodeModel, TheSensorsContactImpedanceRangeIsSolvable) {
+  const Mesh mesh = disc_mesh(3, 2.0);
+  const Vector sigma = Vector::Constant(mesh.triangle_count(), 1 / sheet_ohm_per_sq);
+  const Matrix p = drive(0, 5), q = drive(3, 11);
+  const Matrix shunt = CompleteElectrodeModel(mesh, sigma, std::vector<double>(16, 0.0)).electrode_potentials_V(p);
+  const double low = Excitation::min_contact_length_mm * sheet_ohm_per_sq;
+  const Matrix near_shunt = CompleteElectrodeModel(mesh, sigma, std::vector<double>(16, low)).electrode_potentials_V(p);
+  std::printf("z = %g ohm mm: |U - U_shunt| / |U_shunt| = %.3e\n", low, (near_shunt - shunt).norm() / shunt.norm());
+  EXPECT_LT((near_shunt - shunt).norm(), 1e-6 * shunt.norm());
+  const double high = Excitation::max_contact_length_mm * sheet_ohm_per_sq;
+  const CompleteElectrodeModel cut_off(mesh, sigma, std::vector<double>(16, high));
+  const Matrix Up = cut_off.electrode_potentials_V(p), Uq = cut_off.electrode_potentials_V(q);
+  ASSERT_TRUE(Up.allFinite() && Uq.allFinite());
+  const double pq = q.col(0).dot(Up.col(0)), qp = p.col(0).dot(Uq.col(0));
+  std::printf("z = %g ohm mm: reciprocity %.3e\n", high, std::abs(pq - qp) / std::abs(pq));
+  EXPECT_NEAR(pq, qp, 1e-6 * std::abs(pq));
+  // The driven electrodes' contacts take nearly all of the drive's voltage.
+  EXPECT_GT(p.col(0).dot(Up.col(0)), 1e3 * p.col(0).dot(shunt.col(0)));
 }
 
 TEST(CompleteElectrodeModel, BadInputIsRefused) {

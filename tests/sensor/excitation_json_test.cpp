@@ -98,5 +98,26 @@ TEST(ExcitationJson, MistakesAreNamedInOneLine) {
   EXPECT_EQ(error({{"measure", "adjacent"}}), "sensor: excitation.drive: missing");
 }
 
+// A contact impedance the model cannot hold (its system not positive definite at 1e-15 or 1e20
+// ohm mm: "is an electrode disconnected?", naming no key) is refused naming the key, the range for
+// this sheet and why; 0, the shunt model, and the range's ends are taken.
+TEST(ExcitationJson, AContactImpedanceIsWithinWhatTheModelResolves) {
+  const auto with = [](const json& z, double sheet_ohm_per_sq = 5000) {
+    json j = ring({{"drive", "opposite"}, {"contact_impedance_ohm_mm", z}});
+    j["probing_sheet_resistance_ohm_per_sq"] = sheet_ohm_per_sq;
+    return j;
+  };
+  const std::string range =
+      "sensor: excitation.contact_impedance_ohm_mm: must be 0 (the shunt model) or from 0.005 to 5e+09 (1e-06 to "
+      "1e+06 mm of the sheet's 5000 ohm/sq: less is a perfect contact, give 0; more cuts the electrode off), got ";
+  EXPECT_EQ(test::error_of([&] { parse_sensor(with(1e-15)); }), range + "1e-15");
+  EXPECT_EQ(test::error_of([&] { parse_sensor(with(1e20)); }), range + "1e+20");
+  EXPECT_EQ(test::error_of([&] { parse_sensor(with({1, 2, 3, 4, 5, 6, 7, 1e20})); }), range + "1e+20");
+  // The range follows the sheet: 1e-6 to 1e6 mm of it.
+  EXPECT_NE(test::error_of([&] { parse_sensor(with(1e-4, 1000)); }).find("from 0.001 to 1e+09"), std::string::npos);
+  for (const double z : {0.0, 0.005, 1.0, 5e9})
+    EXPECT_EQ(parse_sensor(with(z)).excitation->contact_impedance_ohm_mm[0], z) << z;
+}
+
 }  // namespace
 }  // namespace emit

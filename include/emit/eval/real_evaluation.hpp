@@ -7,6 +7,7 @@
 /// (frame/press_locator.hpp); the error is reported on the held-out presses from `test_from` on,
 /// and again for other numbers of calibration presses (the curve: what calibration buys).
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "emit/calibrate/press_response_fit.hpp"
@@ -30,8 +31,9 @@ struct RealEvalOptions {
   /// automatic λ), its centroid above half its largest magnitude (the paper's estimator).
   bool image = true;
 
-  /// \throw InvalidInput naming the option, given the data set's number of presses.
-  void validate(Index presses) const;
+  /// \throw InvalidInput naming the option, given the data set's number of presses; naming
+  /// `folder` and the presses it needs when it holds too few for calibration and held-out presses.
+  void validate(Index presses, const std::string& folder) const;
 };
 
 struct RealCurvePoint {

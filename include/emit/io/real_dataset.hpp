@@ -28,8 +28,11 @@ struct RealDataset {
   Index readings() const { return frames.cols(); }
 };
 
+/// The most values a folder's frames may hold, frames × M: 2^27, 1 GiB of doubles.
+inline constexpr std::size_t max_real_dataset_values = std::size_t{1} << 27;
+
 /// \throw IoError for a missing file, InvalidInput for a malformed one, naming "<path>:<line>".
 /// max_values bounds frames × M (the memory a folder may take).
-RealDataset read_real_dataset(const std::string& folder, std::size_t max_values = std::size_t{1} << 27);
+RealDataset read_real_dataset(const std::string& folder, std::size_t max_values = max_real_dataset_values);
 
 }  // namespace emit

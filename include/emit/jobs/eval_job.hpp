@@ -28,7 +28,8 @@ struct SheetEvalReport {
 };
 
 /// One sheet evaluated; its error-versus-λ² and L-curve plots into `plots_dir` unless empty.
-/// \throw InvalidInput (a bad option), IoError (a plot that cannot be written).
+/// \throw InvalidInput (a bad option), IoError (a plot that cannot be written; a plots folder
+/// that cannot be made, such as an existing file, before any work).
 SheetEvalReport run_sheet_eval_job(const EvalCase& eval_case, const EvalOptions& options, const std::string& plots_dir,
                                    const Progress& progress = {});
 

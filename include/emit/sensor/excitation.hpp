@@ -32,6 +32,14 @@ struct Excitation {
   /// Each electrode's contact impedance per length of its edge [Ω·mm] (complete electrode model;
   /// a contact of Ω·mm² on a sheet t mm thick is that over t); empty or 0: the shunt model.
   std::vector<double> contact_impedance_ohm_mm;
+  /// The range a contact impedance other than 0 must be in, as z / R□: the length of sheet whose
+  /// resistance (per mm of width) equals the contact's. Below a micrometre the contact is perfect
+  /// to any reading at a mm's resolution (the shunt model, 0, says so exactly); beyond a kilometre
+  /// the electrode is as good as cut off the sheet. Outside, the model's system loses the digits
+  /// a double holds (1e-15 or 1e20 Ω·mm at 5000 Ω/sq: "not positive definite"); inside, it
+  /// factorises (CompleteElectrodeModel.TheSensorsContactImpedanceRangeIsSolvable). The sensor's JSON
+  /// holds the key to it.
+  static constexpr double min_contact_length_mm = 1e-6, max_contact_length_mm = 1e6;
 
   /// The drives as currents [A], electrode_count × #drives: +current_A at the source, − at the sink.
   Matrix drive_currents_A(int electrode_count) const;
