@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "emit/acquire/electrode_health.hpp"
 #include "emit/core/errors.hpp"
 
 namespace emit::python {
@@ -16,7 +17,7 @@ std::string shape_text(const py::array& array) {
 
 }  // namespace
 
-FrameStack frame_stack(const py::handle& frames, Index electrodes, const std::string& what) {
+FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what) {
   const py::array given = py::array::ensure(frames);
   if (!given) throw InvalidInput(what + ": expected a numpy array (or a nested list) of numbers");
   const py::ssize_t n = electrodes;
@@ -42,6 +43,10 @@ FrameStack frame_stack(const py::handle& frames, Index electrodes, const std::st
                          std::to_string(l) + ", " + std::to_string(m) + "] is not a finite number (" +
                          std::to_string(values[i]) + ")");
     }
+  // The readings' range as the commands check a frames file's (acquire/electrode_health.hpp).
+  for (std::size_t f = 0; f < stack.count; ++f)
+    if (const std::string problem = reading_out_of_range(stack.view(f), adc); !problem.empty())
+      throw InvalidInput(what + ": " + (single ? "" : "frame " + std::to_string(f) + ": ") + problem);
   return stack;
 }
 

@@ -2,8 +2,8 @@
 /// \file arrays.hpp
 /// numpy arrays in and out of the bindings: frames read in place where their layout allows
 /// (C-ordered float64; anything else is converted once, as numpy's own functions do), checked for
-/// shape and finiteness with one-line messages; results handed to numpy without a copy, the array
-/// owning the C++ buffer.
+/// shape, finiteness and the ADC's range with one-line messages; results handed to numpy without
+/// a copy, the array owning the C++ buffer.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "emit/core/types.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit::python {
 
@@ -36,8 +37,10 @@ struct FrameStack {
 };
 
 /// \throw InvalidInput "<what>: expected an (N, N) or (frames, N, N) array with N = 16, got shape (3, 4)",
-/// or naming the first value that is not a finite number.
-FrameStack frame_stack(const py::handle& frames, Index electrodes, const std::string& what);
+/// or naming the first value that is not a finite number, or the first reading the sensor's ADC
+/// cannot give, as the commands say it of a frames file ("frames: frame 2: ground 0, sense 5
+/// reads 1200 V, outside the ADC's 0 to 3.3 V (sensor "adc")"; acquire/electrode_health.hpp).
+FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what);
 
 /// The values of `vector`, moved into a numpy array that owns them (no copy).
 py::array_t<double> to_numpy(Vector&& vector);

@@ -56,8 +56,8 @@ the contact law and sheet as contact fitting sees them. Made by emit.calibrate o
          const std::string& method, double lambda2, double threshold_fraction, bool fit_sheet,
          const std::string& cache_dir) {
         const Index n = electrode_count_of(sensor);
-        const FrameStack references = frame_stack(reference, n, "reference");
-        const FrameStack stack = frame_stack(frames, n, "frames");
+        const FrameStack references = frame_stack(reference, n, sensor.adc, "reference");
+        const FrameStack stack = frame_stack(frames, n, sensor.adc, "frames");
         PressCalibrationOptions options;
         options.method = parse_method(method);
         options.lambda2 = lambda2;

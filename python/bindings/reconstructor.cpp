@@ -14,6 +14,7 @@
 #include "bindings.hpp"
 #include "calibration.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/limits.hpp"
 #include "emit/frame/batch.hpp"
 #include "emit/pipeline/pipeline.hpp"
 
@@ -68,10 +69,12 @@ class PythonReconstructor {
                       const std::optional<PythonCalibration>& calibration)
       : options_(options),
         electrodes_(electrode_count_of(sensor)),
+        adc_(sensor.adc),
         pipeline_(std::make_unique<Pipeline>(sensor, pipeline_options, calibration_of(calibration))),
         reconstructor_(pipeline_->reconstructor(options_)) {}
 
   Index electrodes() const { return electrodes_; }
+  const AdcSpec& adc() const { return adc_; }
   const Pipeline& pipeline() const { return *pipeline_; }
   const Reconstructor& reconstructor() const { return reconstructor_; }
   std::mutex& mutex() { return mutex_; }
@@ -136,6 +139,7 @@ class PythonReconstructor {
 
   FrameOptions options_;
   Index electrodes_;
+  AdcSpec adc_;                         ///< the sensor's: the range its frames' readings must be in
   std::unique_ptr<Pipeline> pipeline_;  ///< before the reconstructor, which refers to it
   Reconstructor reconstructor_;
   Reference reference_;
@@ -210,6 +214,8 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
              options.threshold_fraction = threshold_fraction;
              options.min_contact_area_mm2 = min_contact_area_mm2;
              options.track_contacts = track_contacts;
+             pipeline.validate();  // the library's rules, as the CLI's options say them, before any work
+             options.validate();
              const EmitCall call;
              return std::make_unique<PythonReconstructor>(sensor, pipeline, options, calibration);
            }),
@@ -220,7 +226,7 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
       .def(
           "set_reference",
           [](PythonReconstructor& self, const py::handle& frames) {
-            const FrameStack stack = frame_stack(frames, self.electrodes(), "reference");
+            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "reference");
             const EmitCall call;
             const std::lock_guard lock(self.mutex());
             self.set_reference(stack);
@@ -229,7 +235,8 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
       .def(
           "reconstruct",
           [](PythonReconstructor& self, const py::handle& frames, int threads, bool pressure) -> py::object {
-            const FrameStack stack = frame_stack(frames, self.electrodes(), "frames");
+            limits::check_thread_count("threads", threads);
+            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "frames");
             if (stack.single) {
               std::vector<Contact> found;
               Vector image;
@@ -267,7 +274,8 @@ the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangle
       .def(
           "cpp_seconds_per_frame",
           [](PythonReconstructor& self, const py::handle& frames, bool batch, int threads, int repeats) {
-            const FrameStack stack = frame_stack(frames, self.electrodes(), "frames");
+            limits::check_thread_count("threads", threads);
+            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "frames");
             if (repeats < 1) throw InvalidInput("repeats must be at least 1, got " + std::to_string(repeats));
             const EmitCall call;
             const std::lock_guard lock(self.mutex());

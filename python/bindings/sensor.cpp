@@ -18,15 +18,11 @@
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "json_value.hpp"
 
 namespace emit::python {
 
 namespace {
-
-nlohmann::json json_of(const py::handle& object) {
-  const py::module_ json = py::module_::import("json");
-  return nlohmann::json::parse(json.attr("dumps")(object).cast<std::string>());
-}
 
 py::object python_of(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
 
@@ -46,14 +42,15 @@ same keys as a dict) or Sensor.default() (the paper's 60 x 60 mm sheet, 16 elect
             nlohmann::json j;
             try {
               j = json_of(description);
-            } catch (const py::error_already_set& e) {
-              throw InvalidInput("sensor dict: not JSON-like (" + std::string(e.what()) + ")");
+            } catch (const InvalidInput& e) {
+              throw InvalidInput(std::string("sensor dict: ") + e.what());
             }
             return with_sheet_surface(parse_sensor(j, "sensor dict", base_dir));
           },
           py::arg("description"), py::arg("base_dir") = ".",
           "A sensor from a dict with a sensor file's keys; a mesh or CAD file is found relative to base_dir.\n"
-          "Raises InvalidInput naming an unknown or wrong key.")
+          "Raises InvalidInput naming an unknown or wrong key (a value NaN, infinite or beyond a double,\n"
+          "text that is not Unicode, a value of no JSON kind), as Sensor.load names a file's.")
       .def_static("default", &default_sensor, "The built-in sensor: the paper's 60 x 60 mm sheet, 16 electrodes.")
       .def(
           "to_dict", [](const Sensor& sensor) { return python_of(sensor_to_json(sensor)); },

@@ -82,7 +82,7 @@ void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, c
     }
 }
 
-void check_readings_in_range(const Frame& frame, const AdcSpec& adc, const std::string& where) {
+std::string reading_out_of_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc) {
   const double tolerance = rail_tolerance_V(adc);
   for (Index l = 0; l < frame.rows(); ++l)
     for (Index m = 0; m < frame.cols(); ++m) {
@@ -90,10 +90,16 @@ void check_readings_in_range(const Frame& frame, const AdcSpec& adc, const std::
       if (v >= -tolerance && v <= adc.vref_V + tolerance) continue;
       char text[160];
       std::snprintf(text, sizeof text,
-                    ": ground %lld, sense %lld reads %.4g V, outside the ADC's 0 to %.4g V (sensor \"adc\")",
+                    "ground %lld, sense %lld reads %.4g V, outside the ADC's 0 to %.4g V (sensor \"adc\")",
                     static_cast<long long>(l), static_cast<long long>(m), v, adc.vref_V);
-      throw InvalidInput(where + text);
+      return text;
     }
+  return {};
+}
+
+void check_readings_in_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc, const std::string& where) {
+  if (std::string problem = reading_out_of_range(frame, adc); !problem.empty())
+    throw InvalidInput(where + ": " + problem);
 }
 
 bool looks_pressed(const Frame& frame, const AdcSpec& adc) { return has_signal(frame, rail_tolerance_V(adc)); }

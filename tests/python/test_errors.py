@@ -2,6 +2,8 @@
 the right kind), and nothing changed by the call that failed."""
 
 import json
+import subprocess
+import time
 
 import numpy as np
 import pytest
@@ -105,3 +107,103 @@ def test_saving_into_a_missing_folder_writes_nothing(tmp_path):
     # Saved and read back, the same coefficients (to the digits JSON keeps).
     calibration.save(str(tmp_path / "again.json"))
     assert json.loads((tmp_path / "again.json").read_text()) == pytest.approx({"a1": 0.1, "a2": 0.0, "a3": 0.0})
+
+
+# What JSON text cannot hold went through json.dumps and came back as the JSON library's
+# RuntimeError; now each is emit.InvalidInput naming the key, as Sensor.load names a file's.
+@pytest.mark.parametrize("value, shown", [(float("nan"), "nan"), (float("inf"), "inf"), (-float("inf"), "-inf"),
+                                          (10**400, "inf"), (-10**400, "-inf")])
+def test_a_dict_number_json_cannot_hold_names_its_key(sensor, value, shown):
+    description = sensor.to_dict()
+    description["shape"]["width_mm"] = value
+    with pytest.raises(emit.InvalidInput,
+                       match=rf"^sensor dict: shape\.width_mm: must be a finite number, got {shown}$"):
+        emit.Sensor.from_dict(description)
+
+
+def test_a_dict_value_that_is_not_json_names_its_key(sensor):
+    def refused(change):
+        description = sensor.to_dict()
+        change(description)
+        with pytest.raises(emit.InvalidInput) as error:
+            emit.Sensor.from_dict(description)
+        return str(error.value)
+
+    assert refused(lambda d: d.update(name="\ud800")) == \
+        r'sensor dict: name: "\ud800" is not Unicode text (a lone surrogate)'
+    assert refused(lambda d: d["shape"].update({"\udc80": 1})) == \
+        r'sensor dict: shape: the key "\udc80" is not Unicode text (a lone surrogate)'
+    assert refused(lambda d: d["shape"].update({3: 1})) == \
+        "sensor dict: shape.3: a key must be a string (this one is of type int)"
+    assert refused(lambda d: d["adc"].update(bits=object())) == \
+        "sensor dict: adc.bits: a value of type object is not JSON (a dict, list, tuple, str, number, bool or None is)"
+    nested = []
+    for _ in range(100):
+        nested = [nested]
+    assert refused(lambda d: d.update(name=nested)) == "sensor dict: name" + "[0]" * 64 + ": nested deeper than 64 levels"
+    # numpy's scalars and tuples are numbers and lists, as json.dumps took them (or better).
+    description = sensor.to_dict()
+    description["shape"]["width_mm"] = np.float32(60)
+    description["adc"]["bits"] = np.int64(12)
+    description["electrodes"] = tuple(description["electrodes"])
+    assert emit.Sensor.from_dict(description).electrode_count == 16
+
+
+def _cli_error(cli, *arguments):
+    run = subprocess.run([cli, *arguments], capture_output=True, text=True, timeout=60)
+    assert run.returncode in (1, 2), run.stderr
+    return run.stderr.strip().splitlines()[-1]
+
+
+def _write_frames(path, frames):
+    np.savetxt(path, np.asarray(frames).reshape(-1, 256), delimiter=",", fmt="%.17g")
+
+
+# The options' rules are the library's, said in the same words from Python and from the CLI
+# (Python took lambda2=nan, -1 or -inf as "automatic" where the CLI refused them in its own words).
+@pytest.mark.parametrize("text, value", [("-1", -1.0), ("nan", float("nan")), ("-inf", -float("inf"))])
+def test_lambda2_is_refused_as_the_cli_refuses_it(sensor, reference, cli, tmp_path, text, value):
+    with pytest.raises(emit.InvalidInput) as error:
+        emit.Reconstructor(sensor, method="paper", lambda2=value)
+    assert str(error.value) == f"PipelineOptions::lambda2 must be 0 (the method's) or positive, got {text}"
+    _write_frames(tmp_path / "ref.csv", reference)
+    cli_line = _cli_error(cli, "reconstruct", "--reference", str(tmp_path / "ref.csv"), "--frames",
+                          str(tmp_path / "ref.csv"), "--contacts", str(tmp_path / "c.jsonl"), "--lambda2=" + text)
+    assert cli_line.startswith("emit: --lambda2: " + str(error.value)), cli_line
+    with pytest.raises(emit.InvalidInput, match=r"^PressCalibrationOptions::lambda2 must be 0 \(the method's\) or "
+                                                r"positive, got "):
+        emit.calibrate(sensor, reference, reference[:1], [[]], method="paper", lambda2=value)
+
+
+# Frames in millivolts, or scaled by 1e300, were taken from Python and refused by the CLI: now the
+# same check, in the same words after where it is.
+@pytest.mark.parametrize("scale", [1e3, 1e300])
+def test_frames_no_adc_can_give_are_refused_as_the_cli_refuses_them(paper, twin, reference, cli, tmp_path, scale):
+    frame = twin.frame([emit.Press(30, 30)]) * scale
+    with pytest.raises(emit.InvalidInput) as error:
+        paper.reconstruct(frame)
+    message = str(error.value)
+    assert message.startswith("frames: ground ") and message.endswith("outside the ADC's 0 to 3.3 V (sensor \"adc\")")
+    with pytest.raises(emit.InvalidInput, match=r"^frames: frame 1: ground "):
+        paper.reconstruct(np.stack([reference[0], frame]))
+    with pytest.raises(emit.InvalidInput, match=r"^reference: ground "):
+        paper.set_reference(frame)
+    _write_frames(tmp_path / "ref.csv", reference)
+    _write_frames(tmp_path / "scaled.csv", frame)
+    cli_line = _cli_error(cli, "reconstruct", "--reference", str(tmp_path / "ref.csv"), "--frames",
+                          str(tmp_path / "scaled.csv"), "--contacts", str(tmp_path / "c.jsonl"), "--no-cache")
+    assert cli_line == "emit: " + str(tmp_path / "scaled.csv") + ":1: " + message[len("frames: "):], cli_line
+    assert paper.reconstruct(reference[0]) == []  # the reference held is untouched
+
+
+# The sizes a user can ask for (core/limits.hpp) are refused before any work, in the CLI's words.
+def test_threads_and_frames_beyond_the_limits(sensor, paper, reference):
+    start = time.monotonic()
+    for threads in (4096, 0, -1):
+        with pytest.raises(emit.InvalidInput, match=r"^threads must be a whole number from 1 to 256 \(threads beyond "
+                                                    rf"the cores only cost memory\), got {threads}$"):
+            paper.reconstruct(reference, threads=threads)
+    with pytest.raises(emit.InvalidInput, match=r"^presses: 131073 frames of 16 electrodes, beyond the 131072 a run "
+                                                r"holds in memory \(256 MiB of readings\); simulate them in parts$"):
+        emit.simulate(sensor, [[]] * 131073)
+    assert time.monotonic() - start < 5  # refused, not worked through (4096 threads took 17.6 s)

@@ -44,10 +44,14 @@ std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames
 void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
                          const std::string& source, std::size_t first_frame = 0);
 
-/// A reading an ADC of this spec cannot give: below 0 V or above its reference, by more than the
-/// rail tolerance (volts in another unit, another board's frames). \throw InvalidInput "<where>:
-/// ground l, sense m reads v V, outside the ADC's 0 … vref V (sensor "adc")".
-void check_readings_in_range(const Frame& frame, const AdcSpec& adc, const std::string& where);
+/// The first reading an ADC of this spec cannot give: below 0 V or above its reference, by more
+/// than the rail tolerance (volts in another unit, another board's frames, NaN): "ground l, sense
+/// m reads v V, outside the ADC's 0 to vref V (sensor "adc")"; empty when there is none. The one
+/// check of a frame's range, for files (check_readings_in_range) and arrays (the Python module).
+std::string reading_out_of_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc);
+
+/// \throw InvalidInput "<where>: " + reading_out_of_range(frame, adc) when that is not empty.
+void check_readings_in_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc, const std::string& where);
 
 /// A no-contact frame reads ~0 V everywhere; true if this one has a reading well above the noise
 /// (the "signal" of find_dead_electrodes): a reference that was pressed.
