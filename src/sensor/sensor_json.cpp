@@ -36,7 +36,7 @@ std::string shown(const json& v) {
   return v.dump();
 }
 
-/// A length as a person writes it: "20", "2.5".
+/// A number as a person writes it: "20", "2.5", "1e-15".
 std::string number_text(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);

@@ -79,7 +79,7 @@ PressSequence grid_script(const Sensor& sensor, double spacing_mm, double jitter
   const auto& box = sampler.box();
   const Vector2 centre = box.center();
   const Vector2 half_counts = grid_half_counts(box, spacing_mm);
-  // The counts' conversion's guard; a run's own bound (core/limits.hpp, simulate_job) is far below it.
+  // nx, ny as ints: a guard only, far above a run's own bound (core/limits.hpp, checked by simulate_job).
   if (!(grid_node_count(half_counts) <= std::numeric_limits<int>::max())) {
     char message[96];
     std::snprintf(message, sizeof message, "grid spacing %g mm: more presses than an int counts", spacing_mm);

@@ -15,8 +15,8 @@ namespace emit::limits {
 /// The most threads emit runs a computation on. Threads beyond the cores buy no speed (the work
 /// is arithmetic), and each costs memory: a batch worker its own reconstructor's scratch (up to a
 /// few MB on a 100k-triangle mesh), the BLAS its buffers. 256 is twice the cores of the largest
-/// two-socket servers of today (2 × 64): room for any machine emit runs on, and 256 workers on
-/// the default sensor cost 0.5 s and 30 MB more than one.
+/// two-socket servers of today (2 × 64): room for any machine emit runs on, while 256 workers
+/// reconstructing a frame of the default sensor cost 0.3–0.5 s and 10–30 MB more than one.
 inline constexpr int max_threads = 256;
 
 /// What a thread count must be, as messages say it: "a whole number from 1 to 256 (…)".
