@@ -1,5 +1,6 @@
 // emit live: frames from a source, reconstructed as they come, contacts out as JSON Lines and a
 // viewer in the browser. Parsing and printing only; the session is jobs/live_session.hpp.
+#include <array>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -10,29 +11,28 @@ namespace emit::cli {
 
 namespace {
 
-std::atomic<bool> stop_requested{false};  // set by SIGINT/SIGTERM: the loop finishes its frame and returns
+std::atomic<bool> stop_requested{false};  // set by SIGINT/TERM/HUP: the loop finishes its frame and returns
 extern "C" void request_stop(int) { stop_requested = true; }
 
-/// SIGINT and SIGTERM stop the loop gracefully while this lives; the old handlers come back after.
+/// SIGINT, SIGTERM and SIGHUP stop the loop gracefully while this lives (the recordings are
+/// closed and renamed into place); the old handlers come back after.
 class StopOnSignals {
  public:
   StopOnSignals() {
     struct sigaction action {};
     action.sa_handler = request_stop;
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
+    for (std::size_t k = 0; k < signals_.size(); ++k) sigaction(signals_[k], &action, &old_[k]);
   }
   StopOnSignals(const StopOnSignals&) = delete;  // one owner restores the old handlers, once
   StopOnSignals& operator=(const StopOnSignals&) = delete;
   ~StopOnSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
+    for (std::size_t k = 0; k < signals_.size(); ++k) sigaction(signals_[k], &old_[k], nullptr);
   }
 
  private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
+  static constexpr std::array<int, 3> signals_{SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> old_{};
 };
 
 struct LiveArgs {
@@ -61,6 +61,12 @@ void run_live(const LiveJob& job) {
   stop_requested = false;
   const StopOnSignals signals;
   const LiveStats stats = session.run(stop_requested);
+  if (stats.contacts_reader_left)
+    std::fprintf(stderr, "emit: the reader of --contacts %s went away; stopped after %llu frames\n",
+                 job.contacts_path.c_str(), static_cast<unsigned long long>(stats.frames));
+  else if (stats.contacts_dropped > 0)
+    std::fprintf(stderr, "emit: %llu contacts lines dropped while no one read --contacts %s\n",
+                 static_cast<unsigned long long>(stats.contacts_dropped), job.contacts_path.c_str());
   std::fprintf(say,
                "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
                "(from a frame's arrival to its contacts written and published); %llu missed (gaps in the "
@@ -99,7 +105,9 @@ void add_live_command(CLI::App& app) {
                   "with the Cyclone DDS RMW subscribes to /PREFIX/contacts)");
   cmd->add_option("--dds-domain", job.dds_domain, "The DDS domain (ROS_DOMAIN_ID), 0 to 232")->capture_default_str();
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
-  cmd->add_option("--contacts", job.contacts_path, "Contacts out as JSON Lines: a file, or - for stdout");
+  cmd->add_option("--contacts", job.contacts_path,
+                  "Contacts out as JSON Lines: a file (FILE.partial until the end), a FIFO (readers may come and go), "
+                  "or - for stdout (the run ends when its reader goes)");
   cmd->add_option("--method", a->method,
                   "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))

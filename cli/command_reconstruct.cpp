@@ -22,16 +22,19 @@ void run_reconstruct(ReconstructArgs args) {
   job.cache_dir = cache_dir_option(job.cache_dir, args.no_cache);
   job.threads = thread_count();
   const ReconstructReport r = run_reconstruct_job(job, stderr_progress(20));
+  FILE* say = job.contacts_path == "-" ? stderr : stdout;  // stdout may carry the contacts
   std::fprintf(stderr, "model ready in %.2f s (%ld triangles, %d measurements%s)\n", r.model_seconds, r.triangles,
                r.measurements, r.operator_from_cache ? ", operator from the cache" : "");
   char lambda[48] = "";
   if (is_linear(job.method)) std::snprintf(lambda, sizeof lambda, " (lambda2 = %g)", r.lambda2);
-  std::printf("reconstructed %zu frames (%.0f frames/s%s) with the %s method%s; contacts in %s\n", r.frames,
-              r.frames_per_s, job.images_dir.empty() ? "" : ", with images", args.method.c_str(), lambda,
-              job.contacts_path.c_str());
+  std::fprintf(say, "reconstructed %zu frames (%.0f frames/s%s) with the %s method%s; contacts in %s\n", r.frames,
+               r.frames_per_s, job.images_dir.empty() ? "" : ", with images", args.method.c_str(), lambda,
+               job.contacts_path.c_str());
   if (!job.mcap_path.empty())
-    std::printf("recorded frames, contacts and pressure images to %s (MCAP, ROS 2 messages)\n", job.mcap_path.c_str());
-  if (!r.calibrated) std::printf("note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
+    std::fprintf(say, "recorded frames, contacts and pressure images to %s (MCAP, ROS 2 messages)\n",
+                 job.mcap_path.c_str());
+  if (!r.calibrated)
+    std::fprintf(say, "note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }
 
 }  // namespace
@@ -48,7 +51,8 @@ void add_reconstruct_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--frames", job.frames_path, "Frames to reconstruct (CSV)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame)")->required();
+  cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame); - for stdout")
+      ->required();
   cmd->add_option("--calibration", job.calibration_path, "Pressure calibration (JSON from 'emit calibrate')")
       ->check(CLI::ExistingFile);
   cmd->add_option("--method", a->method,

@@ -1,4 +1,5 @@
 // emit: electromechanical impedance tomography for soft tactile sensors.
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -6,8 +7,8 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/core/threads.hpp"
 #include "emit/core/version.hpp"
 
@@ -15,6 +16,9 @@ namespace {
 
 int run(int argc, char** argv) {
   emit::remove_temporary_files_on_signals();  // Ctrl-C leaves no hidden half-written file behind
+  // A reader that goes away (`| head`) is a failed write (EPIPE) each output reports, or `emit
+  // live` stops on, closing its recordings: never a silent death.
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
       "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};

@@ -4,17 +4,29 @@
 #   scripts/soak.sh [MINUTES]      (default 30; a fraction is fine: 0.34 is the suite's short run)
 #
 # Records the twin's figure-eight finger once (`emit live --source sim --record`), then replays the
-# recording in a loop at full speed for MINUTES (`--source file:REC --loop --fps 0`), serving the
-# viewer (`--serve`) and writing the contacts, while viewers come and go (build/emit_ws_client: one
+# recording in a loop at full speed for MINUTES (`--source file:REC --loop --fps 0`) with every
+# output on: serving the viewer (`--serve`) while viewers come and go (build/emit_ws_client: one
 # reads for STAY_S seconds, leaves, politely or not in turn, and comes back PAUSE_S later; another
-# connects and never reads, a stuck tab). Every SAMPLE_S seconds it reads emit's VmRSS and VmHWM
+# connects and never reads, a stuck tab); the contacts into a FIFO whose reader does the same
+# (reads for STAY_S seconds, goes away, comes back PAUSE_S later: emit drops the lines no one
+# reads and goes on); the MCAP recording (`--mcap`) into a FIFO read by tests/mcap/stream_check.mjs,
+# which checks it as it streams and keeps only counts (30 minutes of MCAP are ~10 GB); the board's
+# frames into a recording (`--record`, a file), replayed at the end; and DDS (`--dds`) publishing
+# on a domain of its own. Every SAMPLE_S seconds it reads emit's VmRSS and VmHWM
 # (/proc/PID/status). At the end it prints the figures and exits non-zero if
 #   - memory grew: RSS after the warm-up more than RSS_GROWTH_MIB above the RSS at the warm-up's
 #     end (1 minute, or a quarter of a shorter run), or a slope above RSS_SLOPE_MIB_PER_H over the
 #     run's second half (when it is 10 minutes or longer: a shorter half's slope is the allocator's
 #     noise divided by a short time);
-#   - a frame was lost: emit's own count of gaps in the frame numbers, and the contacts' frame
-#     numbers, which must run on by one from the first to the last, as many as emit says it made;
+#   - a frame was lost: emit's own count of gaps in the frame numbers; the MCAP's messages (as
+#     many frames, contacts and pressure images as emit says it made, numbered on by one, and
+#     the footer at the end: a whole file); the recording, replayed by `emit live --source file:`
+#     (every frame emit was given, none missing);
+#   - the contacts' reader saw something wrong: within a visit, frame numbers that do not run on
+#     by one but for one jump (the lines dropped while no one read; a new reader first gets what
+#     the last one left in the pipe), more than two cut lines (where a reader came and went),
+#     frame numbers that go back between visits, fewer than two visits with lines, or no line
+#     dropped (the reader never really went away);
 #   - latency drifted: the last segment's (minute's) median above the first's by more than
 #     LATENCY_P50_FACTOR × + 0.5 ms, or its p99 by more than LATENCY_P99_FACTOR × + 2 ms;
 #   - emit or a viewer failed (a viewer that got no frame, frames out of order, a refused connection).
@@ -23,7 +35,10 @@
 # Environment: BUILD (the build folder with emit and emit_ws_client; default build), OUT (where the
 # recording, logs and samples go; default a fresh folder under ${TMPDIR:-/tmp}), EMIT_CACHE_DIR
 # (the operator cache; default OUT/cache), METHOD (fit), RECORD_FRAMES (1500: 30 s of the script at
-# 50 frames/s, lifts included), and the bounds and intervals named above.
+# 50 frames/s, lifts included), DDS_DOMAIN (73; the suite's DDS test uses 71), and the bounds and
+# intervals named above. The MCAP check needs node and BUILD/mcap-test (CMake puts it there with
+# node and npm; `npm ci` is run in it if its modules are missing); without them only the MCAP's
+# closing magic is checked, and the script says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -43,6 +58,8 @@ record_frames=${RECORD_FRAMES:-1500}
 sample_s=${SAMPLE_S:-5}
 stay_s=${STAY_S:-3}
 pause_s=${PAUSE_S:-1}
+dds_domain=${DDS_DOMAIN:-73}
+capture_frames=10  # the reference's capture (ReferenceOptions::capture_frames): recorded, not reconstructed
 seconds=$(awk -v m="$minutes" 'BEGIN { s = m * 60; if (s < 10) { print "x"; exit } printf "%d", s }')
 [ "$seconds" != x ] || { echo "soak: run for 10 s or more (MINUTES ≥ 0.17)" >&2; exit 2; }
 # The warm-up and the segments latency is compared over: a minute, or a quarter of a shorter run.
@@ -74,27 +91,57 @@ if [ ! -s "$recording" ]; then
     { cat "$out/record.log" >&2; exit 1; }
 fi
 
-# 2. emit live, replaying it in a loop at full speed; the contacts through a FIFO into a checker
-#    that keeps no more than a counter (a 30-minute run's contacts would be hundreds of MB).
-fifo=$out/contacts.fifo
-rm -f "$fifo"
-mkfifo "$fifo"
-awk '
-  { if (match($0, /"frame": [0-9]+/) == 0) { bad++; next }
-    f = substr($0, RSTART + 9, RLENGTH - 9) + 0
-    if (n == 0) first = f
-    else if (f != last + 1) { gaps++; if (gaps <= 5) printf "gap: frame %d after %d\n", f, last > "/dev/stderr" }
-    last = f; n++ }
-  END { printf "lines %d first %d last %d gaps %d unreadable %d\n", n, first, last, gaps + 0, bad + 0 }
-' <"$fifo" >"$out/contacts_check.txt" &
-checker=$!
-pids+=("$checker")
+# 2. The MCAP's reader: tests/mcap/stream_check.mjs on a FIFO (counts only), or, without node
+#    and its modules, the last 8 bytes (the closing magic).
+mcap_fifo=$out/mcap.fifo
+contacts_fifo=$out/contacts.fifo
+rm -f "$mcap_fifo" "$contacts_fifo" "$out/replay.emitrec"
+mkfifo "$mcap_fifo" "$contacts_fifo"
+mcap_tools=$build/mcap-test
+if command -v node >/dev/null && [ -f "$mcap_tools/stream_check.mjs" ] && [ ! -d "$mcap_tools/node_modules/@mcap/core" ] &&
+  command -v npm >/dev/null; then
+  (cd "$mcap_tools" && npm ci --no-audit --no-fund >"$out/npm.log" 2>&1) || echo "soak: npm ci in $mcap_tools failed ($out/npm.log)"
+fi
+if command -v node >/dev/null && [ -d "$mcap_tools/node_modules/@mcap/core" ]; then
+  node "$mcap_tools/stream_check.mjs" "$mcap_fifo" >"$out/mcap_check.txt" 2>&1 &
+else
+  echo "soak: no node or $mcap_tools/node_modules: the MCAP is checked for its closing magic only"
+  tail -c 8 <"$mcap_fifo" >"$out/mcap_tail.bin" &
+fi
+mcap_checker=$!
+pids+=("$mcap_checker")
+
+# 3. emit live, replaying the recording in a loop at full speed, every output on.
 echo "soak: emit live --source file:$recording --loop --fps 0 --method $method for $seconds s; files in $out"
 : >"$out/emit.log"
 "$emit" live --source "file:$recording" --loop --fps 0 --method "$method" --seconds "$seconds" \
-  --serve 127.0.0.1:0 --contacts "$fifo" >"$out/emit.log" 2>&1 &
+  --serve 127.0.0.1:0 --contacts "$contacts_fifo" --mcap "$mcap_fifo" --record "$out/replay.emitrec" \
+  --dds soak --dds-domain "$dds_domain" >"$out/emit.log" 2>&1 &
 emit_pid=$!
 pids+=("$emit_pid")
+
+# 4. The contacts' reader: reads for STAY_S seconds, goes away for PAUSE_S, comes back, until emit
+#    ends; each visit keeps no more than counters (a 30-minute run's contacts are hundreds of MB):
+#    its lines, first and last frame, jumps, cut lines and steps back.
+: >"$out/contacts_visits.txt"
+(
+  visit=0
+  while kill -0 "$emit_pid" 2>/dev/null; do
+    visit=$((visit + 1))
+    { timeout "$stay_s" sh -c 'exec cat <"$0"' "$contacts_fifo" || true; } | awk -v visit="$visit" '
+      { if (match($0, /^\{"frame": [0-9]+, .*\}$/) == 0) { bad++; next }
+        f = substr($0, 11) + 0
+        if (n == 0) first = f
+        else if (f <= last) back++
+        else if (f != last + 1) gaps++
+        last = f; n++ }
+      END { printf "visit %d lines %d first %d last %d gaps %d cut %d back %d\n", visit, n, first, last, gaps + 0, bad + 0, back + 0 }
+    ' >>"$out/contacts_visits.txt"
+    sleep "$pause_s"
+  done
+) &
+contacts_reader=$!
+pids+=("$contacts_reader")
 
 port=
 for _ in $(seq 600); do  # the models are built (or read from the cache) before the viewer is up
@@ -106,7 +153,7 @@ done
 [ -n "$port" ] || { echo "soak: emit did not start serving" >&2; cat "$out/emit.log" >&2; exit 1; }
 start=$(date +%s.%N)
 
-# 3. The viewers, for the run less a moment (they must not see emit stop as a failure).
+# 5. The viewers, for the run less a moment (they must not see emit stop as a failure).
 client_s=$((seconds - 3))
 "$client" "127.0.0.1:$port" --seconds "$client_s" --stay-s "$stay_s" --pause-s "$pause_s" \
   --latency-log "$out/latency.txt" >"$out/reader.txt" 2>"$out/reader.err" &
@@ -117,7 +164,7 @@ pids+=("$reader")
 stalled=$!
 pids+=("$stalled")
 
-# 4. emit's memory every SAMPLE_S seconds while it runs: elapsed s, VmRSS kB, VmHWM kB.
+# 6. emit's memory every SAMPLE_S seconds while it runs: elapsed s, VmRSS kB, VmHWM kB.
 : >"$out/rss.txt"
 while kill -0 "$emit_pid" 2>/dev/null; do
   status=$(cat "/proc/$emit_pid/status" 2>/dev/null) || break
@@ -130,29 +177,68 @@ set +e
 wait "$emit_pid"; emit_status=$?
 wait "$reader"; reader_status=$?
 wait "$stalled"; stalled_status=$?
-wait "$checker"
+wait "$mcap_checker"; mcap_status=$?
+wait "$contacts_reader"
 set -e
 trap - EXIT
 
-# 5. The figures.
+# 7. The recording, replayed: every frame emit was given (the reference's capture included), none
+#    missing.
+replay_status=0
+"$emit" live --source "file:$out/replay.emitrec" --fps 0 --method paper >"$out/replay.log" 2>&1 || replay_status=$?
+
+# 8. The figures.
 fail=0
 problem() { echo "soak: FAIL: $*"; fail=1; }
 echo
 echo "== emit"
-grep -E '^(source|live|reconstructing)' "$out/emit.log" || true
+grep -E '^(source|dds|live|reconstructing|recorded)' "$out/emit.log" || true
 [ "$emit_status" -eq 0 ] || problem "emit exited with status $emit_status (log: $out/emit.log)"
+grep -q '^dds: publishing rt/soak/' "$out/emit.log" || problem "emit did not publish on DDS"
 stats=$(grep '^live: ' "$out/emit.log" || true)
 frames=$(sed -n 's/^live: \([0-9]*\) frames.*/\1/p' <<<"$stats")
 missed=$(sed -n 's/.*; \([0-9]*\) missed.*/\1/p' <<<"$stats")
 [ -n "$frames" ] || { problem "emit printed no statistics"; frames=0; }
 [ "${missed:-x}" = 0 ] || problem "emit missed ${missed:-?} frames (gaps in the source's frame numbers)"
 
-echo "== contacts"
-cat "$out/contacts_check.txt"
-read -r _ lines _ first _ last _ gaps _ unreadable <"$out/contacts_check.txt"
-[ "$gaps" -eq 0 ] && [ "$unreadable" -eq 0 ] || problem "the contacts' frame numbers have $gaps gaps, $unreadable unreadable lines"
-[ "$lines" -eq "$frames" ] || problem "$lines contact lines for $frames frames"
-[ "$lines" -eq 0 ] || [ $((last - first + 1)) -eq "$lines" ] || problem "frames $first..$last are not $lines"
+echo "== contacts (a FIFO whose reader comes and goes)"
+dropped=$(sed -n 's/^emit: \([0-9]*\) contacts lines dropped while no one read.*/\1/p' "$out/emit.log")
+dropped=${dropped:-0}
+awk -v frames="$frames" -v dropped="$dropped" '
+  $4 > 0 { visits++; lines += $4
+           if ($10 > 1 || $12 > 2 || $14 > 0) { bad++; printf "FAIL visit %d: %d jumps, %d cut lines, %d steps back\n", $2, $10, $12, $14 } 
+           if (seen && $6 <= last) { bad++; printf "FAIL visit %d starts at frame %d, not after %d\n", $2, $6, last }
+           seen = 1; last = $8 }
+  END { printf "%d visits with lines, %d lines read, %d dropped while no one read, of %d frames\n", visits, lines, dropped, frames
+        if (visits < 2) print "FAIL fewer than two visits got lines"
+        if (dropped == 0) print "FAIL no line was dropped: did the reader go away?"
+        if (lines + dropped > frames) printf "FAIL %d lines read and dropped of %d frames\n", lines + dropped, frames }
+' "$out/contacts_visits.txt" | tee "$out/contacts_summary.txt"
+! grep -q FAIL "$out/contacts_summary.txt" || problem "the contacts (above; every visit in $out/contacts_visits.txt)"
+
+echo "== recordings"
+if [ -f "$out/mcap_check.txt" ]; then
+  cat "$out/mcap_check.txt"
+  [ "$mcap_status" -eq 0 ] || problem "the MCAP stream (above)"
+  for topic in frames contacts pressure; do
+    count=$(sed -n "s|.*/emit/$topic \([0-9]*\) .*|\1|p" "$out/mcap_check.txt")
+    [ "${count:-x}" = "$frames" ] || problem "the MCAP has ${count:-no} /emit/$topic messages for $frames frames"
+  done
+else
+  magic=$(od -An -tx1 "$out/mcap_tail.bin" | tr -d ' \n')
+  echo "mcap: closing magic $magic"
+  [ "$magic" = 894d434150300d0a ] || problem "the MCAP does not end with its closing magic"
+fi
+recorded=$(sed -n 's/^recorded \([0-9]*\) frames to .*/\1/p' "$out/emit.log")
+grep '^live: ' "$out/replay.log" | sed 's/^/replay: /' || true
+replayed=$(sed -n 's/^live: \([0-9]*\) frames.*/\1/p' "$out/replay.log")
+replay_missed=$(sed -n 's/^live: .*; \([0-9]*\) missed.*/\1/p' "$out/replay.log")
+echo "recording: ${recorded:-?} frames recorded; replayed: ${replayed:-?} reconstructed + $capture_frames for the reference"
+[ "$replay_status" -eq 0 ] || problem "replaying the recording failed (log: $out/replay.log)"
+[ "${recorded:-x}" = $((frames + capture_frames)) ] || problem "${recorded:-no} frames recorded for $frames reconstructed + $capture_frames"
+[ "${replayed:-x}" = "$frames" ] && [ "${replay_missed:-x}" = 0 ] ||
+  problem "the recording replayed ${replayed:-no} frames (${replay_missed:-?} missed) for $frames"
+[ ! -e "$out/replay.emitrec.partial" ] || problem "the recording was left as .partial"
 
 echo "== viewers"
 cat "$out/reader.txt" "$out/stalled.txt"
@@ -205,6 +291,7 @@ else
 fi
 
 echo
-echo "soak: $minutes min: $frames frames, ${missed:-?} missed, $visits viewer visits; files in $out"
+echo "soak: $minutes min: $frames frames, ${missed:-?} missed, $visits viewer visits, $dropped contacts lines dropped" \
+  "while the FIFO had no reader; files in $out"
 [ "$fail" -eq 0 ] && echo "soak: PASS" || echo "soak: FAIL"
 exit "$fail"

@@ -32,7 +32,9 @@ the contact law and sheet as contact fitting sees them. Made by emit.calibrate o
           [](const PythonCalibration& calibration, const std::string& path) {
             write_calibration(path, calibration.calibration);
           },
-          py::arg("path"), "Writes it as JSON, replacing `path` only once the whole file is written.")
+          py::arg("path"),
+          "Writes it as JSON, replacing `path` only once the whole file is written (a device or FIFO is written "
+          "into directly, never replaced). Raises IoError naming it.")
       .def_property_readonly(
           "kind",
           [](const PythonCalibration& c) {

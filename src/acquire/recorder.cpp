@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 
 #include "emit/acquire/recording.hpp"
 #include "emit/core/errors.hpp"
@@ -11,13 +10,11 @@
 namespace emit {
 namespace fw = emit::firmware;
 
-Recorder::Recorder(std::string path, const Sensor& sensor)
-    : path_(std::move(path)),
-      partial_path_(path_ + ".partial"),
-      electrode_count_(sensor.electrode_count()),
-      packet_(fw::packet_size(electrode_count_)) {
-  stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
-  if (!stream_) throw IoError(partial_path_ + ": cannot create the recording");
+Recorder::Recorder(const std::string& path, const Sensor& sensor)
+    : Recorder(OutputFile({"", path}, {.partial = true}), sensor) {}
+
+Recorder::Recorder(OutputFile file, const Sensor& sensor)
+    : file_(std::move(file)), electrode_count_(sensor.electrode_count()), packet_(fw::packet_size(electrode_count_)) {
   RecordingHeader header;
   header.electrode_count = electrode_count_;
   header.adc_bits = sensor.adc.bits;
@@ -27,8 +24,8 @@ Recorder::Recorder(std::string path, const Sensor& sensor)
           .count());
   std::array<std::uint8_t, recording_header_size> bytes{};
   encode_recording_header(header, bytes.data());
-  stream_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!stream_) throw IoError(partial_path_ + ": cannot write the recording's header");
+  file_.stream().write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  file_.check();
 }
 
 Recorder::~Recorder() {
@@ -40,7 +37,7 @@ Recorder::~Recorder() {
 
 void Recorder::record(const RawFrame& frame) {
   if (frame.electrode_count != electrode_count_)
-    throw InvalidInput(path_ + ": cannot record a frame of " + std::to_string(frame.electrode_count) +
+    throw InvalidInput(path() + ": cannot record a frame of " + std::to_string(frame.electrode_count) +
                        " electrodes; the recording has " + std::to_string(electrode_count_));
   fw::PacketHeader header;
   header.electrode_count = static_cast<std::uint8_t>(frame.electrode_count);
@@ -52,22 +49,18 @@ void Recorder::record(const RawFrame& frame) {
 }
 
 void Recorder::write_packet(const fw::PacketHeader& header, const std::uint16_t* counts) {
-  if (closed_) throw IoError(path_ + ": the recording is closed");
+  if (closed_) throw IoError(path() + ": the recording is closed");
   const std::size_t size = fw::encode_packet(header, counts, packet_.data(), packet_.size());
-  if (size != packet_.size()) throw InvalidInput(path_ + ": a frame with an impossible packet header");
-  stream_.write(reinterpret_cast<const char*>(packet_.data()), static_cast<std::streamsize>(size));
-  if (!stream_) throw IoError(partial_path_ + ": write failed (disk full?)");
+  if (size != packet_.size()) throw InvalidInput(path() + ": a frame with an impossible packet header");
+  file_.stream().write(reinterpret_cast<const char*>(packet_.data()), static_cast<std::streamsize>(size));
+  file_.check();
   ++frames_;
 }
 
 void Recorder::close() {
   if (closed_) return;
   closed_ = true;
-  stream_.close();
-  if (!stream_) throw IoError(partial_path_ + ": could not finish writing the recording");
-  std::error_code ec;
-  std::filesystem::rename(partial_path_, path_, ec);
-  if (ec) throw IoError(partial_path_ + ": cannot rename to " + path_ + ": " + ec.message());
+  file_.commit();
 }
 
 }  // namespace emit

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 
 namespace emit {
 
@@ -168,11 +168,15 @@ nlohmann::json to_json(const SensorCalibration& r) {
 }  // namespace
 
 void write_calibration(const std::string& path, const Calibration& calibration, const SensorCalibration* report) {
-  AtomicFile file(path);
+  OutputFile file({"", path});
+  write_calibration(file.stream(), calibration, report);
+  file.commit();
+}
+
+void write_calibration(std::ostream& out, const Calibration& calibration, const SensorCalibration* report) {
   nlohmann::json j = std::visit([](const auto& c) { return to_json(c); }, calibration);
   if (report) j["report"] = to_json(*report);
-  file.stream() << j.dump(2) << '\n';
-  file.commit();
+  out << j.dump(2) << '\n';
 }
 
 }  // namespace emit

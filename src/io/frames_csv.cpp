@@ -8,15 +8,19 @@
 #include <cstring>
 #include <string_view>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/io/csv_numbers.hpp"
 
 namespace emit {
 
 void write_frames_csv(const std::string& path, const std::vector<Frame>& frames) {
-  AtomicFile file(path);
-  auto& out = file.stream();
+  OutputFile file({"", path});
+  write_frames_csv(file.stream(), frames);
+  file.commit();
+}
+
+void write_frames_csv(std::ostream& out, const std::vector<Frame>& frames) {
   char number[32];
   for (const Frame& frame : frames) {
     for (Index i = 0; i < frame.size(); ++i) {
@@ -28,7 +32,6 @@ void write_frames_csv(const std::string& path, const std::vector<Frame>& frames)
     }
     out << '\n';
   }
-  file.commit();
 }
 
 FramesCsvReader::FramesCsvReader(const std::string& path, int electrode_count)

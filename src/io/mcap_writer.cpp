@@ -2,12 +2,8 @@
 
 #include <zlib.h>
 
-#include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <filesystem>
 
-#include "emit/core/errors.hpp"
 #include "emit/core/version.hpp"
 
 namespace emit {
@@ -47,19 +43,15 @@ class Fields {
 
 }  // namespace
 
-McapWriter::McapWriter(std::string path, std::string_view profile)
-    : path_(std::move(path)),
-      partial_path_(path_ + ".partial"),
-      crc_(static_cast<std::uint32_t>(crc32(0, nullptr, 0))) {
-  const std::filesystem::path folder = std::filesystem::path(path_).parent_path();
-  if (!folder.empty() && !std::filesystem::is_directory(folder))
-    throw IoError(path_ + ": cannot write: folder " + folder.string() + " does not exist");
-  stream_.open(partial_path_, std::ios::binary | std::ios::trunc);
-  if (!stream_) throw IoError(partial_path_ + ": cannot write (" + std::strerror(errno) + ")");
+McapWriter::McapWriter(OutputFile file, std::string_view profile)
+    : file_(std::move(file)), crc_(static_cast<std::uint32_t>(crc32(0, nullptr, 0))) {
   write(magic, sizeof magic);
   Fields(scratch_).string(profile).string(std::string("emit ") + version());
   record(header_op, scratch_);
 }
+
+McapWriter::McapWriter(const std::string& path, std::string_view profile)
+    : McapWriter(OutputFile({"", path}, {.partial = true}), profile) {}
 
 McapWriter::~McapWriter() = default;  // the stream closes; PATH.partial stays as it is
 
@@ -90,7 +82,7 @@ void McapWriter::write_message(std::uint16_t channel_id, std::uint32_t sequence,
   std::memcpy(head + 23, &publish_time_ns, 8);
   write(head, sizeof head);
   write(data.data(), data.size());
-  check("a message");
+  check();
 }
 
 void McapWriter::close() {
@@ -101,12 +93,7 @@ void McapWriter::close() {
   Fields(scratch_).put(std::uint64_t{0}).put(std::uint64_t{0}).put(std::uint32_t{0});  // no summary
   record(footer_op, scratch_);
   write(magic, sizeof magic);
-  stream_.flush();
-  check("the end");
-  stream_.close();
-  std::error_code error;
-  std::filesystem::rename(partial_path_, path_, error);
-  if (error) throw IoError(path_ + ": cannot rename " + partial_path_ + " to it (" + error.message() + ")");
+  file_.commit();
 }
 
 void McapWriter::record(std::uint8_t opcode, std::span<const std::uint8_t> content) {
@@ -114,16 +101,14 @@ void McapWriter::record(std::uint8_t opcode, std::span<const std::uint8_t> conte
   write(&opcode, 1);
   write(&length, 8);
   write(content.data(), content.size());
-  check("a record");
+  check();
 }
 
 void McapWriter::write(const void* bytes, std::size_t size) {
-  stream_.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(size));
+  file_.stream().write(static_cast<const char*>(bytes), static_cast<std::streamsize>(size));
   crc_ = static_cast<std::uint32_t>(crc32(crc_, static_cast<const Bytef*>(bytes), static_cast<uInt>(size)));
 }
 
-void McapWriter::check(const char* what) {
-  if (!stream_) throw IoError(partial_path_ + ": could not write " + what + " (" + std::strerror(errno) + ")");
-}
+void McapWriter::check() const { file_.check(); }
 
 }  // namespace emit

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/core/quote_input.hpp"
 #include "emit/io/line_reader.hpp"
 
@@ -20,6 +20,12 @@ const char* const header_with_z = "frame,x_mm,y_mm,z_mm,radius_mm,force_N,pressu
 }  // namespace
 
 void write_presses_csv(const std::string& path, const PressSequence& sequence) {
+  OutputFile file({"", path});
+  write_presses_csv(file.stream(), sequence);
+  file.commit();
+}
+
+void write_presses_csv(std::ostream& out, const PressSequence& sequence) {
   // The profile column only when some press is not flat, so files of flat presses stay as they were.
   // Likewise the z column only where some press is off the plane (a curved sheet).
   bool profiles = false, heights = false;
@@ -28,8 +34,6 @@ void write_presses_csv(const std::string& path, const PressSequence& sequence) {
       profiles = profiles || p.profile != PressProfile::flat;
       heights = heights || p.z_mm != 0;
     }
-  AtomicFile file(path);
-  auto& out = file.stream();
   out << (heights ? header_with_z : header) << (profiles ? ",profile" : "") << '\n';
   char row[256];
   for (std::size_t f = 0; f < sequence.size(); ++f)
@@ -44,7 +48,6 @@ void write_presses_csv(const std::string& path, const PressSequence& sequence) {
       if (profiles) out << ',' << profile_name(p.profile);
       out << '\n';
     }
-  file.commit();
 }
 
 PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) {

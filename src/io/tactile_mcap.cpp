@@ -12,8 +12,12 @@ std::uint16_t add_topic(McapWriter& mcap, const std::string& topic, const Ros2Me
 
 }  // namespace
 
-TactileMcap::TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns)
-    : mcap_(std::move(path), "ros2"), sensor_name_(std::move(sensor_name)) {
+TactileMcap::TactileMcap(const std::string& path, std::string sensor_name, const Mesh& mesh,
+                         std::uint64_t start_time_ns)
+    : TactileMcap(OutputFile({"", path}, {.partial = true}), std::move(sensor_name), mesh, start_time_ns) {}
+
+TactileMcap::TactileMcap(OutputFile file, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns)
+    : mcap_(std::move(file), "ros2"), sensor_name_(std::move(sensor_name)) {
   const std::string prefix = "/emit";
   const std::uint16_t mesh_channel = add_topic(mcap_, prefix + "/mesh", mesh_message());
   frames_channel_ = add_topic(mcap_, prefix + "/frames", tactile_state_message());

@@ -46,7 +46,7 @@ ContactLawFit fit_law_from_pairs(const std::string& path, std::size_t& pairs) {
   return fit_contact_law(pressure, resistance);
 }
 
-PressCalibrationResult calibrate_presses(const CalibrateJob& job, const Progress& progress) {
+PressCalibrationResult calibrate_presses(const CalibrateJob& job, OutputFile& out, const Progress& progress) {
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
   const int N = electrode_count_of(sensor);
@@ -62,7 +62,8 @@ PressCalibrationResult calibrate_presses(const CalibrateJob& job, const Progress
   for (const auto& presses : truth) single += presses.size() == 1;
   if (single == 0) throw InvalidInput(job.truth_path + ": no single presses to calibrate on");
   PressCalibrationResult result = calibrate_from_presses(sensor, job.options, reference, frames, truth, progress.stage);
-  write_calibration(job.out_path, result.calibration, result.sheet ? &*result.sheet : nullptr);
+  write_calibration(out.stream(), result.calibration, result.sheet ? &*result.sheet : nullptr);
+  out.commit();
   return result;
 }
 
@@ -74,15 +75,15 @@ CalibrateReport run_calibrate_job(const CalibrateJob& job, const Progress& progr
     throw InvalidInput("pressure calibration needs --reference, --frames, --truth and --out");
   if (!presses && job.contact_law_path.empty())
     throw InvalidInput("nothing to calibrate: give --frames (with --reference, --truth, --out) or --contact-law");
-  check_outputs({{"--sensor", job.sensor_path},
-                 {"--reference", job.reference_path},
-                 {"--frames", job.frames_path},
-                 {"--truth", job.truth_path},
-                 {"--contact-law", job.contact_law_path}},
-                {{"--out", job.out_path}});
+  auto [out] = open_outputs({{"--sensor", job.sensor_path},
+                             {"--reference", job.reference_path},
+                             {"--frames", job.frames_path},
+                             {"--truth", job.truth_path},
+                             {"--contact-law", job.contact_law_path}},
+                            {OutputRequest{{"--out", job.out_path}}});
   CalibrateReport report;
   if (!job.contact_law_path.empty()) report.contact_law = fit_law_from_pairs(job.contact_law_path, report.pairs);
-  if (presses) report.presses = calibrate_presses(job, progress);
+  if (presses) report.presses = calibrate_presses(job, out, progress);
   return report;
 }
 

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <filesystem>
 
-#include "emit/core/atomic_file.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
@@ -66,7 +66,7 @@ DemoReport run_demo_reconstruction(const std::string& out_dir, const std::string
   Reconstructor paper_reconstructor = paper.reconstructor();
   fit_reconstructor.set_reference(reference);
   paper_reconstructor.set_reference(reference);
-  AtomicFile contacts_file(out_dir + "/contacts.jsonl");
+  OutputFile contacts_file({"", out_dir + "/contacts.jsonl"});
   for (std::size_t f = 0; f < frames.size(); ++f) {
     report.fitted.push_back(fit_reconstructor.process(frames[f]));
     report.paper.push_back(paper_reconstructor.process(frames[f]));

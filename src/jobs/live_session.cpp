@@ -1,12 +1,10 @@
 #include "emit/jobs/live_session.hpp"
 #include "emit/mesh/sheet_file.hpp"
 
-#include <fstream>
-#include <iostream>
+#include <array>
 #include <optional>
 
 #include "emit/acquire/recorder.hpp"
-#include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/live/dds_publisher.hpp"
@@ -37,17 +35,21 @@ struct LiveSession::Impl {
   std::optional<Recorder> recorder;
   std::optional<McapPublisher> mcap;
   std::optional<DdsPublisher> dds;
-  std::ofstream contacts_file;
+  std::array<OutputFile, 3> outputs;  ///< --contacts, --record, --mcap (the last two moved to their writers)
 };
 
 LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
-  check_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
-                {{"--contacts", job.contacts_path == "-" ? "" : job.contacts_path},
-                 {"--record", job.record_path},
-                 {"--mcap", job.mcap_path}});
   if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain}.validate();
+  // Every output opened before any input is read: one that cannot be opened touches none. Each
+  // file grows as PATH.partial while the run lasts and is renamed to PATH at its end.
+  s.outputs =
+      open_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
+                   {OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
+                    OutputRequest{{"--record", job.record_path}, {.partial = true}},
+                    OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
+  auto& [contacts, record, mcap] = s.outputs;
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
@@ -73,19 +75,13 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
                      [&loop = *s.loop](const std::string& command) { loop.command(command); });
     s.loop->add_publisher(&*s.server);
   }
-  if (job.contacts_path == "-") {
-    s.loop->write_contacts_to(&std::cout);
-  } else if (!job.contacts_path.empty()) {
-    s.contacts_file.open(job.contacts_path);
-    if (!s.contacts_file) throw IoError(job.contacts_path + ": cannot write (does the folder exist?)");
-    s.loop->write_contacts_to(&s.contacts_file);
-  }
-  if (!job.record_path.empty()) s.loop->record_to(&s.recorder.emplace(job.record_path, s.sensor));
-  if (!job.mcap_path.empty())
-    s.loop->add_publisher(&s.mcap.emplace(job.mcap_path, s.sensor.name, s.pipeline->model().mesh));
+  if (contacts.given()) s.loop->write_contacts_to(&contacts);
+  if (mcap.given()) s.loop->add_publisher(&s.mcap.emplace(std::move(mcap), s.sensor.name, s.pipeline->model().mesh));
   if (!job.dds_prefix.empty())
     s.loop->add_publisher(
         &s.dds.emplace(DdsOptions{job.dds_prefix, job.dds_domain}, s.sensor.name, s.pipeline->model().mesh));
+  // Last: a Recorder's destructor renames its file into place, so nothing may fail after it.
+  if (record.given()) s.loop->record_to(&s.recorder.emplace(std::move(record), s.sensor));
 }
 
 LiveSession::~LiveSession() = default;
@@ -96,9 +92,12 @@ bool LiveSession::calibrated() const { return impl_->pipeline->calibrated(); }
 std::uint64_t LiveSession::recorded_frames() const { return impl_->recorder ? impl_->recorder->frames() : 0; }
 
 LiveStats LiveSession::run(const std::atomic<bool>& stop) {
-  LiveStats stats = impl_->loop->run(stop);  // not const: returned by move
-  if (impl_->recorder) impl_->recorder->close();
-  if (impl_->mcap) impl_->mcap->close();
+  Impl& s = *impl_;
+  LiveStats stats = s.loop->run(stop);  // not const: returned by move
+  if (s.recorder) s.recorder->close();
+  if (s.mcap) s.mcap->close();
+  // A reader that went away has had every line it could take: there is nothing left to flush.
+  if (OutputFile& contacts = s.outputs[0]; contacts.given() && !contacts.reader_gone()) contacts.commit();
   return stats;
 }
 

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/contacts_jsonl.hpp"
@@ -13,8 +12,7 @@ namespace emit {
 
 namespace {
 
-void write_contacts(const RealEvaluation& e, const std::string& path) {
-  AtomicFile file(path);
+void write_contacts(const RealEvaluation& e, std::ostream& out) {
   for (std::size_t k = 0; k < e.located.size(); ++k) {
     std::vector<Contact> contacts;
     if (const LocatedPress& p = e.located[k]; p.found) {
@@ -23,9 +21,8 @@ void write_contacts(const RealEvaluation& e, const std::string& path) {
       c.y_mm = p.position_mm.y();
       contacts.push_back(c);
     }
-    write_contacts_line(file.stream(), static_cast<long>(e.calibration_presses) + static_cast<long>(k), contacts);
+    write_contacts_line(out, static_cast<long>(e.calibration_presses) + static_cast<long>(k), contacts);
   }
-  file.commit();
 }
 
 std::string write_curve_plot(const RealEvalReport& report, const std::string& folder) {
@@ -56,12 +53,12 @@ std::string write_curve_plot(const RealEvalReport& report, const std::string& fo
 
 RealEvalReport run_real_eval_job(const RealEvalJob& job, const Progress& progress) {
   const auto in = [&](const char* name) { return (std::filesystem::path(job.folder) / name).string(); };
-  check_outputs({{"--real", in("frames.csv")},
-                 {"--real", in("references_per_frame.csv")},
-                 {"--real", in("reference.csv")},
-                 {"--real", in("truth.csv")},
-                 {"--sensor", job.sensor_path}},
-                {{"--contacts", job.contacts_path}});
+  auto [contacts] = open_outputs({{"--real", in("frames.csv")},
+                                  {"--real", in("references_per_frame.csv")},
+                                  {"--real", in("reference.csv")},
+                                  {"--real", in("truth.csv")},
+                                  {"--sensor", job.sensor_path}},
+                                 {OutputRequest{{"--contacts", job.contacts_path}}});
   if (!job.plots_dir.empty()) prepare_output_folder({"--plots", job.plots_dir});
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   if (!sensor.excitation)
@@ -73,7 +70,10 @@ RealEvalReport run_real_eval_job(const RealEvalJob& job, const Progress& progres
   RealEvalReport report;
   report.sensor_name = sensor.name;
   report.evaluation = evaluate_real(data, sensor, job.options, progress);
-  if (!job.contacts_path.empty()) write_contacts(report.evaluation, job.contacts_path);
+  if (contacts.given()) {
+    write_contacts(report.evaluation, contacts.stream());
+    contacts.commit();
+  }
   if (!job.plots_dir.empty()) report.plot_path = write_curve_plot(report, job.plots_dir);
   return report;
 }

@@ -7,7 +7,6 @@
 #include <optional>
 
 #include "emit/acquire/electrode_health.hpp"
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/frame/batch.hpp"
@@ -76,11 +75,14 @@ constexpr std::uint64_t mcap_frame_interval_ns = 20'000'000;
 }  // namespace
 
 ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress) {
-  check_outputs({{"--sensor", job.sensor_path},
-                 {"--reference", job.reference_path},
-                 {"--frames", job.frames_path},
-                 {"--calibration", job.calibration_path}},
-                {{"--contacts", job.contacts_path}, {"--mcap", job.mcap_path}});
+  // Every output opened before any input is read: one that cannot be opened touches none.
+  auto outputs = open_outputs({{"--sensor", job.sensor_path},
+                               {"--reference", job.reference_path},
+                               {"--frames", job.frames_path},
+                               {"--calibration", job.calibration_path}},
+                              {OutputRequest{{"--contacts", job.contacts_path}, {.standard_output = true}},
+                               OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
+  auto& [contacts_file, mcap_file] = outputs;
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
   std::optional<Calibration> calibration;
@@ -89,7 +91,6 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     check_calibration_for_method(*calibration, job.method, job.calibration_path);
   }
   prepare_output_folder({"--images", job.images_dir});
-  AtomicFile contacts_file(job.contacts_path);  // fails now, not after the work, if unwritable
 
   // The frames before anything is built or written: a bad value stops the run with nothing lost.
   const int N = electrode_count_of(sensor);
@@ -128,7 +129,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   // A file of frames has no times: the recording puts them at the board's 50 frames/s from now.
   const std::uint64_t start_ns = unix_time_ns();
   std::optional<TactileMcap> mcap;
-  if (!job.mcap_path.empty()) mcap.emplace(job.mcap_path, sensor.name, model.mesh, start_ns);
+  if (mcap_file.given()) mcap.emplace(std::move(mcap_file), sensor.name, model.mesh, start_ns);
   const auto online_start = std::chrono::steady_clock::now();
   FramesCsvReader reader(job.frames_path, N);
   std::vector<Frame> chunk;
@@ -156,9 +157,11 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
       }
     }
     if (batch) progress.step("reconstructing frame", static_cast<long>(first + count), survey.frames);
+    contacts_file.check();  // a full disk or a reader gone stops the run here, not at its end
   }
-  contacts_file.commit();
+  contacts_file.finish();
   if (mcap) mcap->close();
+  contacts_file.commit();
   report.frames_per_s = static_cast<double>(report.frames) / std::max(seconds_since(online_start), 1e-9);
   return report;
 }

@@ -6,7 +6,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/limits.hpp"
 #include "emit/core/output_paths.hpp"
@@ -23,13 +22,17 @@ namespace emit {
 
 namespace {
 
-std::string beside_out(const std::string& out_path, const std::string& suffix) {
+/// The default path of a file written beside --out: none beside a device or FIFO (it would be
+/// made in /dev, say).
+std::string beside_out(const std::string& out_path, const std::string& suffix, const std::string& remedy) {
+  if (output_kind(out_path) != OutputKind::file)
+    throw InvalidInput("--out " + out_path + " is not a regular file: " + remedy);
   std::filesystem::path p(out_path);
   return (p.parent_path() / (p.stem().string() + suffix)).string();
 }
 
 /// What a realistic sheet drew, for checking a calibration against the truth.
-void write_sheet_json(const std::string& path, const Sensor& nominal, const RealisticSheet& sheet,
+void write_sheet_json(std::ostream& out, const Sensor& nominal, const RealisticSheet& sheet,
                       const RealisticSheetOptions& options) {
   nlohmann::json j;
   j["seed"] = options.seed;
@@ -47,9 +50,7 @@ void write_sheet_json(const std::string& path, const Sensor& nominal, const Real
   j["blur_mm"] = sheet.blur_mm;
   j["electrode_shift_mm"] = sheet.shift_mm;
   j["series_resistance_ohm"] = sheet.series_ohm;
-  AtomicFile file(path);
-  file.stream() << j.dump(2) << '\n';
-  file.commit();
+  out << j.dump(2) << '\n';
 }
 
 void write_potential_images(Twin& twin, const PressSequence& sequence, const std::string& dir) {
@@ -96,14 +97,20 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
       const Vector3 point = surface_point_mm(sensor.shape, press_chart_mm(sensor.shape, press));
       press.x_mm = point.x(), press.y_mm = point.y(), press.z_mm = point.z();
     }
-  report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv") : job.truth_path;
+  report.truth_path = job.truth_path.empty() ? beside_out(job.out_path, "_presses.csv",
+                                                          "give --truth too (by default the presses go beside --out)")
+                                             : job.truth_path;
   if (job.realistic) {
     job.realistic->validate();
-    report.sheet_path = job.sheet_path.empty() ? beside_out(job.out_path, "_sheet.json") : job.sheet_path;
+    report.sheet_path = job.sheet_path.empty()
+                            ? beside_out(job.out_path, "_sheet.json",
+                                         "with --realistic it must be a file (the sheet's description goes beside it)")
+                            : job.sheet_path;
   }
-  std::vector<NamedPath> outputs{{"--out", job.out_path}, {"--truth", report.truth_path}};
-  if (job.realistic) outputs.push_back({"the realistic sheet's description", report.sheet_path});
-  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}}, outputs);
+  auto outputs = open_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
+                              {OutputRequest{{"--out", job.out_path}}, OutputRequest{{"--truth", report.truth_path}},
+                               OutputRequest{{"the realistic sheet's description", report.sheet_path}}});
+  auto& [out, truth, sheet_json] = outputs;
   if (job.twin.dead_electrode >= N)
     throw InvalidInput("--dead-electrode " + std::to_string(job.twin.dead_electrode) + ": the sensor has " +
                        std::to_string(N) + " electrodes, 0 to " + std::to_string(N - 1));
@@ -123,9 +130,10 @@ SimulateReport run_simulate_job(const SimulateJob& job, const Progress& progress
     report.frames.push_back(twin.frame(report.presses[f]));
     progress.step("simulating frame", static_cast<long>(f + 1), static_cast<long>(report.presses.size()));
   }
-  write_frames_csv(job.out_path, report.frames);
-  write_presses_csv(report.truth_path, report.presses);
-  if (report.realistic) write_sheet_json(report.sheet_path, sensor, *report.realistic, *job.realistic);
+  write_frames_csv(out.stream(), report.frames);
+  write_presses_csv(truth.stream(), report.presses);
+  if (report.realistic) write_sheet_json(sheet_json.stream(), sensor, *report.realistic, *job.realistic);
+  commit_outputs(outputs);
   if (!job.images_dir.empty()) write_potential_images(twin, report.presses, job.images_dir);
   return report;
 }

@@ -1,6 +1,5 @@
 #include "emit/live/live_loop.hpp"
 
-#include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 
@@ -34,7 +33,7 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
   const auto out_of_time = [&] {
     return options_.max_seconds > 0 && seconds_between(start, std::chrono::steady_clock::now()) >= options_.max_seconds;
   };
-  while (!stop && !source_.finished() && !out_of_time() &&
+  while (!stop && !source_.finished() && !out_of_time() && !stats_.contacts_reader_left &&
          (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
     step();
   }
@@ -67,13 +66,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   }
   const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
   if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
-  if (contacts_out_) {
-    const FitResult* fitted = reconstructor_.fit_result();
-    write_contacts_line(*contacts_out_, static_cast<long>(frame.sequence), contacts,
-                        fitted ? 1e3 * fitted->rms_misfit_V : -1);
-    contacts_out_->flush();
-    if (!*contacts_out_) throw IoError("live: could not write the contacts");
-  }
+  if (contacts_out_) write_contacts(frame.sequence, contacts);
   out.contacts = &contacts;
   out.pressure_N_per_mm2 = &reconstructor_.pressure();
   publish(out);
@@ -86,6 +79,21 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   last_ = now;
   ++stats_.frames;
   return &contacts;
+}
+
+void LiveLoop::write_contacts(std::uint64_t sequence, const std::vector<Contact>& contacts) {
+  OutputFile& out = *contacts_out_;
+  if (out.reader_gone() && !out.reconnect()) {  // a FIFO no one reads now: drop the line
+    ++stats_.contacts_dropped;
+    return;
+  }
+  const FitResult* fitted = reconstructor_.fit_result();
+  write_contacts_line(out.stream(), static_cast<long>(sequence), contacts, fitted ? 1e3 * fitted->rms_misfit_V : -1);
+  if (out.stream().flush()) return;
+  ++stats_.contacts_dropped;
+  if (out.clear_interrupted()) return;  // a stop signal while the reader did not read: the loop ends
+  if (!out.reader_gone()) out.check();  // throws: a full disk, a device's error
+  if (out.kind() != OutputKind::fifo) stats_.contacts_reader_left = true;  // standard output: the run ends
 }
 
 void LiveLoop::publish(LiveFrame& frame) {

@@ -4,8 +4,8 @@
 
 namespace emit {
 
-McapPublisher::McapPublisher(std::string path, const std::string& sensor_name, const Mesh& mesh)
-    : mcap_(std::move(path), sensor_name, mesh, unix_time_ns()) {}
+McapPublisher::McapPublisher(OutputFile file, const std::string& sensor_name, const Mesh& mesh)
+    : mcap_(std::move(file), sensor_name, mesh, unix_time_ns()) {}
 
 void McapPublisher::publish(const LiveFrame& frame) {
   if (frame.capturing_reference || frame.volts == nullptr) return;

@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/sensor/sensor_json.hpp"
 
 namespace emit {
@@ -114,7 +114,7 @@ void store_cached_operator(const std::string& cache_dir, const std::string& key,
   std::error_code error;
   std::filesystem::create_directories(cache_dir, error);
   if (error) throw IoError(cache_dir + ": cannot create cache folder (" + error.message() + ")");
-  AtomicFile file(path_for(cache_dir, key));
+  OutputFile file({"", path_for(cache_dir, key)});
   auto& out = file.stream();
   out.write(magic, 8);
   write_value(out, static_cast<std::uint64_t>(key.size()));

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/output_file.hpp"
 
 namespace emit {
 namespace {
@@ -148,8 +148,8 @@ void open_png_reader(PngReader& reader, const std::string& path) {
 }  // namespace
 
 void write_png(const Image& image, const std::string& path) {
-  AtomicFile file(path, /*open_stream=*/false);  // throws IoError if the folder is missing
-  std::FILE* out = std::fopen(file.temp_path().c_str(), "wb");
+  OutputFile file({"", path}, {.stream = false});  // throws IoError if the folder is missing
+  std::FILE* out = std::fopen(file.write_path().c_str(), "wb");
   if (!out) throw IoError(path + ": cannot write (" + std::strerror(errno) + ")");
   PngError error;
   const bool encoded = encode_png(out, image, error);

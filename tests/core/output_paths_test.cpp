@@ -2,6 +2,9 @@
 // a symlink or a hard link, two outputs that are one file, a folder that is missing or read-only.
 #include "emit/core/output_paths.hpp"
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +61,44 @@ TEST(OutputPaths, AMissingOrReadOnlyFolderOrAFolderAsTheFileIsAnIoError) {
               0u);
     fs::permissions(dir + "/ro", fs::perms::owner_all);
   }
+}
+
+// A device or FIFO is written into, not replaced: what matters is whether it is writable, not its
+// folder (a user cannot write in /dev, yet may write /dev/null). Several outputs may go into one
+// character device, and one that is also an input is no copy of it. Checked as a user other than
+// root (root may write anywhere), in a child process.
+TEST(OutputPaths, ADeviceIsCheckedForItselfNotForItsFolder) {
+  if (::geteuid() != 0) GTEST_SKIP() << "mknod and a change of user need root";
+  const std::string dir = test::temp_folder("output_paths_device");
+  const std::string null = dir + "/null";
+  ASSERT_EQ(::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);
+  ASSERT_EQ(::chmod(null.c_str(), 0666), 0);  // past the umask: anyone may write it, as /dev/null
+  ASSERT_EQ(::mknod((dir + "/private").c_str(), S_IFCHR | 0600, makedev(1, 3)), 0);
+  EXPECT_EQ(error_of({{"--frames", null}}, {{"--out", null}, {"--truth", null}}), "no error");
+  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                           fs::perms::others_exec);
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::close(ends[0]);
+    std::string report = "setuid failed";
+    if (::setgid(65534) == 0 && ::setuid(65534) == 0)
+      report = error_of({}, {{"--out", null}}) + "\n" + error_of({}, {{"--out", dir + "/private"}}) + "\n" +
+               error_of({}, {{"--out", dir + "/c.json"}});
+    [[maybe_unused]] const ssize_t written = ::write(ends[1], report.data(), report.size());
+    ::_exit(0);
+  }
+  ::close(ends[1]);
+  std::string report;
+  char bytes[1024];
+  for (ssize_t n; (n = ::read(ends[0], bytes, sizeof bytes)) > 0;) report.append(bytes, static_cast<std::size_t>(n));
+  ::close(ends[0]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_EQ(report, "no error\n--out " + dir + "/private: cannot write (Permission denied)\n--out " + dir +
+                        "/c.json: cannot write in folder " + dir + " (Permission denied)");
 }
 
 TEST(OutputPaths, AnOutputFolderIsCreatedOrItsProblemNamed) {

@@ -116,8 +116,9 @@ TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
   LiveOptions options;
   options.max_frames = 40;
   LiveLoop loop(source, b.pipeline, options);
-  std::ostringstream lines;
-  loop.write_contacts_to(&lines);
+  const std::string contacts_path = test::temp_folder("live_loop_contacts") + "/contacts.jsonl";
+  OutputFile contacts({"--contacts", contacts_path});
+  loop.write_contacts_to(&contacts);
   int pressed = 0;
   loop.on_frame([&](const SourceFrame& frame, const std::vector<Contact>& contacts) {
     const std::vector<Press> presses = source.presses_of(frame.sequence);
@@ -133,7 +134,8 @@ TEST(LiveLoop, ContactsFollowTheScriptedFinger) {
   EXPECT_EQ(stats.capture_frames, static_cast<std::uint64_t>(ReferenceOptions{}.capture_frames));
   EXPECT_EQ(pressed, 40 - (unpaced().untouched_frames - ReferenceOptions{}.capture_frames));
   EXPECT_EQ(stats.latency.count(), 40u);
-  std::istringstream in(lines.str());
+  contacts.commit();
+  std::istringstream in(test::read_text(contacts_path));
   std::string line;
   long expected_frame = ReferenceOptions{}.capture_frames, frame = -1;
   for (; std::getline(in, line); ++expected_frame) {

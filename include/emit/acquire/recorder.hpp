@@ -4,7 +4,8 @@
 ///
 /// Output goes to PATH.partial and is renamed to PATH by close() (or the destructor), so a crash
 /// never leaves a half file over a good one; PATH.partial after a crash holds whole packets up to
-/// the last flush and perhaps a cut one at its end.
+/// the last flush and perhaps a cut one at its end. A PATH that is not a regular file (a FIFO, a
+/// device) is written directly (core/output_file.hpp).
 ///
 /// Example:
 ///
@@ -13,21 +14,23 @@
 ///     recorder.close();   // rec.bin.partial → rec.bin
 #include <array>
 #include <cstdint>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "core/frame_packet.hpp"
 #include "emit/acquire/raw_frame.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
 class Recorder {
  public:
-  /// Creates PATH.partial with the header: the sensor's electrode count and ADC (bits, vref).
-  /// \throw IoError naming the file if it cannot be created.
-  Recorder(std::string path, const Sensor& sensor);
+  /// Writes the header (the sensor's electrode count and ADC: bits, vref) into an output opened
+  /// with OutputOptions::partial (core/output_paths.hpp's open_outputs).
+  Recorder(OutputFile file, const Sensor& sensor);
+  /// Opens PATH (PATH.partial) first. \throw IoError naming the file if it cannot be created.
+  Recorder(const std::string& path, const Sensor& sensor);
   /// close(), errors swallowed (a destructor must not throw): call close() to see them.
   ~Recorder();
   Recorder(const Recorder&) = delete;
@@ -41,13 +44,12 @@ class Recorder {
   void close();
 
   std::uint64_t frames() const { return frames_; }
-  const std::string& path() const { return path_; }
+  const std::string& path() const { return file_.path(); }
 
  private:
   void write_packet(const firmware::PacketHeader& header, const std::uint16_t* counts);
 
-  std::string path_, partial_path_;
-  std::ofstream stream_;
+  OutputFile file_;
   int electrode_count_;
   std::vector<std::uint8_t> packet_;
   std::uint64_t frames_ = 0;

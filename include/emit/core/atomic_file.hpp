@@ -1,37 +1,28 @@
 #pragma once
 /// \file atomic_file.hpp
-/// Write-then-rename: output goes to a temporary file beside the target and replaces it only on
-/// commit(), so an error half-way never leaves a half file over a good one. The temporary files
-/// alive are registered, so a signal handler can remove them (remove_temporary_files_on_signals).
-#include <fstream>
+/// OutputFile (core/output_file.hpp) by the name and constructor the Gmsh writer
+/// (mesh/gmsh/msh_file.cpp) still uses: an unnamed output, with or without a stream; the same
+/// rule (a temporary file renamed over a regular file, a device or FIFO written directly).
 #include <string>
+#include <utility>
+
+#include "emit/core/output_file.hpp"
 
 namespace emit {
 
 class AtomicFile {
  public:
-  /// Opens a temporary file in the target's folder, with the target's extension (some writers,
-  /// such as Gmsh, choose the format from it). \throw IoError if it cannot be created.
-  explicit AtomicFile(std::string path, bool open_stream = true);
-  ~AtomicFile();  ///< removes the temporary file unless committed
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
+  /// \throw IoError as OutputFile's constructor.
+  explicit AtomicFile(std::string path, bool open_stream = true)
+      : file_({"", std::move(path)}, OutputOptions{.stream = open_stream}) {}
 
-  std::ofstream& stream() { return stream_; }
-  const std::string& temp_path() const { return temp_path_; }
-  /// Flush, close and rename over the target. \throw IoError on failure.
-  void commit();
+  std::ostream& stream() { return file_.stream(); }
+  /// Where the writer writes: the temporary file, or the target itself when it is not a regular file.
+  const std::string& temp_path() const { return file_.write_path(); }
+  void commit() { file_.commit(); }  ///< \throw IoError
 
  private:
-  std::string path_, temp_path_;
-  std::ofstream stream_;
-  bool committed_ = false;
-  int slot_ = -1;  ///< in the registry of temporary files
+  OutputFile file_;
 };
-
-/// SIGINT, SIGTERM and SIGHUP remove every AtomicFile's temporary file, then end the process as
-/// the signal would have (the default action, re-raised). Handlers installed later (e.g. `emit
-/// live`'s graceful stop) take precedence while they are installed.
-void remove_temporary_files_on_signals();
 
 }  // namespace emit

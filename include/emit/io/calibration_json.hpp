@@ -6,6 +6,7 @@
 /// it was made for) for contact fitting; other keys are errors. A contact-fitting file may carry a
 /// "report" (what the sensor calibration found, with uncertainties and its goodness of fit), for
 /// people: it is not read back.
+#include <ostream>
 #include <string>
 
 #include "emit/calibrate/sensor_calibration.hpp"
@@ -15,9 +16,11 @@ namespace emit {
 
 /// The kind is told by the keys. \throw IoError if unreadable; InvalidInput naming the key.
 Calibration load_calibration(const std::string& path);
-/// Written via a temporary file renamed into place. \throw IoError.
-/// `report`, if given, is written as "report". \throw IoError.
+/// Written to `path` as core/output_file.hpp says (a file via a temporary file renamed into
+/// place). `report`, if given, is written as "report". \throw IoError.
 void write_calibration(const std::string& path, const Calibration& calibration,
                        const SensorCalibration* report = nullptr);
+/// The same JSON into a stream (an opened output).
+void write_calibration(std::ostream& out, const Calibration& calibration, const SensorCalibration* report = nullptr);
 
 }  // namespace emit

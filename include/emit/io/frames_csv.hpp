@@ -3,6 +3,7 @@
 /// Frames as CSV (README, "Files"): one frame per line, N·N comma-separated volts, ground-major
 /// (index l·N + m), no header. Blank lines are skipped; a UTF-8 byte-order mark and "\r\n" endings
 /// are accepted; a line is at most LineReader::default_max_line_bytes long.
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -11,8 +12,11 @@
 
 namespace emit {
 
-/// Write all frames (each N×N), replacing `path` only when the whole file is written.
+/// Write all frames (each N×N) to `path` as core/output_file.hpp says: a file is replaced only
+/// when the whole file is written. \throw IoError.
 void write_frames_csv(const std::string& path, const std::vector<Frame>& frames);
+/// The same text into a stream (an opened output; a failed write shows in its state).
+void write_frames_csv(std::ostream& out, const std::vector<Frame>& frames);
 
 /// Frames one at a time, so a file of any length is read in constant memory.
 class FramesCsvReader {

@@ -7,7 +7,8 @@
 ///
 /// Output goes to PATH.partial, renamed to PATH by close(). Without close() (an error, a crash),
 /// PATH.partial stays as it got, a file cut mid-write that readers report as incomplete (it has no
-/// footer), and PATH is never touched.
+/// footer), and PATH is never touched. A PATH that is not a regular file (a FIFO, a device) is
+/// written directly (core/output_file.hpp).
 ///
 /// Example:
 ///
@@ -17,19 +18,23 @@
 ///     mcap.write_message(channel, sequence, time_ns, time_ns, cdr_bytes);
 ///     mcap.close();   // run.mcap.partial → run.mcap
 #include <cstdint>
-#include <fstream>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "emit/core/output_file.hpp"
+
 namespace emit {
 
 class McapWriter {
  public:
-  /// Creates PATH.partial and writes the magic and the header (`profile`: "ros2" for ROS 2 bags).
-  /// \throw IoError naming the file when it cannot be created (a missing folder: before anything).
-  McapWriter(std::string path, std::string_view profile);
+  /// Writes the magic and the header (`profile`: "ros2" for ROS 2 bags) into an output opened
+  /// with OutputOptions::partial. \throw IoError naming it if the write fails.
+  McapWriter(OutputFile file, std::string_view profile);
+  /// Opens PATH (PATH.partial) first. \throw IoError naming the file when it cannot be created (a
+  /// missing folder: before anything).
+  McapWriter(const std::string& path, std::string_view profile);
   ~McapWriter();  ///< closes PATH.partial as it is, without renaming it
   McapWriter(const McapWriter&) = delete;
   McapWriter& operator=(const McapWriter&) = delete;
@@ -46,15 +51,14 @@ class McapWriter {
   /// magic, flushes, and renames PATH.partial to PATH. Later calls do nothing. \throw IoError.
   void close();
 
-  const std::string& path() const { return path_; }
+  const std::string& path() const { return file_.path(); }
 
  private:
   void record(std::uint8_t opcode, std::span<const std::uint8_t> content);
   void write(const void* bytes, std::size_t size);
-  void check(const char* what);
+  void check() const;  ///< \throw IoError if a write failed
 
-  std::string path_, partial_path_;
-  std::ofstream stream_;
+  OutputFile file_;
   std::uint32_t crc_;  ///< zlib's running CRC-32 of all bytes so far
   std::vector<std::uint8_t> scratch_;
   std::uint16_t schemas_ = 0, channels_ = 0;

@@ -4,6 +4,7 @@
 /// row per press (several rows share a frame index for simultaneous presses), and a 7th column
 /// `profile` (flat or spherical) when some press is not flat; a row without it is flat.
 #include <cstddef>
+#include <ostream>
 #include <string>
 
 #include "emit/sensor/press.hpp"
@@ -13,7 +14,10 @@ namespace emit {
 /// The most frames a presses file may describe when the caller does not know how many it has.
 inline constexpr std::size_t default_max_press_frames = 1'000'000;
 
+/// Written to `path` as core/output_file.hpp says. \throw IoError.
 void write_presses_csv(const std::string& path, const PressSequence& sequence);
+/// The same text into a stream (an opened output).
+void write_presses_csv(std::ostream& out, const PressSequence& sequence);
 /// Presses of frames 0 … max_frames − 1 (a frame index beyond is an error, not a vector of that
 /// size). \throw IoError / InvalidInput naming the line.
 PressSequence read_presses_csv(const std::string& path, std::size_t max_frames = default_max_press_frames);

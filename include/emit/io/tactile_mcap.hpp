@@ -25,9 +25,11 @@ namespace emit {
 
 class TactileMcap {
  public:
-  /// The mesh is written at `start_time_ns`. \throw IoError naming the file (a missing folder:
-  /// before anything is written).
-  TactileMcap(std::string path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
+  /// Into an output opened with OutputOptions::partial (core/output_paths.hpp's open_outputs);
+  /// the mesh is written at `start_time_ns`. \throw IoError naming it.
+  TactileMcap(OutputFile file, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
+  /// Opens PATH first. \throw IoError naming the file (a missing folder: before anything is written).
+  TactileMcap(const std::string& path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
 
   /// One frame's three messages, at `time_ns` (ns since the Unix epoch). Allocates nothing once
   /// warm. \throw IoError.

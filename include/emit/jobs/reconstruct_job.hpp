@@ -16,7 +16,7 @@ struct ReconstructJob {
   std::string sensor_path;       ///< empty: the built-in default sensor
   std::string reference_path;    ///< no-contact frames (CSV; averaged)
   std::string frames_path;       ///< frames to reconstruct (CSV)
-  std::string contacts_path;     ///< contacts out (JSON Lines)
+  std::string contacts_path;     ///< contacts out (JSON Lines); "-": standard output
   std::string calibration_path;  ///< empty: uncalibrated
   std::string images_dir;        ///< empty: no pictures
   std::string mcap_path;         ///< empty: no MCAP recording (io/tactile_mcap.hpp)

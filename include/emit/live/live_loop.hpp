@@ -8,12 +8,12 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
-#include <ostream>
 #include <string>
 #include <vector>
 
 #include "emit/acquire/frame_source.hpp"
 #include "emit/acquire/recorder.hpp"
+#include "emit/core/output_file.hpp"
 #include "emit/frame/reference.hpp"
 #include "emit/live/latency_stats.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -62,6 +62,12 @@ struct LiveStats {
   double seconds = 0;  ///< from the first reconstructed frame to the last
   double frames_per_s = 0;
   LatencyStats latency;  ///< end to end, per reconstructed frame
+  /// Contacts lines not written because no one read them: a FIFO's reader had gone and no new
+  /// one had come yet, or the line whose write found standard output's reader gone.
+  std::uint64_t contacts_dropped = 0;
+  /// The run ended because the reader of the contacts went away (standard output or another
+  /// descriptor's pipe closed, as `| head` does); a FIFO's reader may come back instead.
+  bool contacts_reader_left = false;
 };
 
 class LiveLoop {
@@ -70,8 +76,11 @@ class LiveLoop {
   LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& options = {});
 
   /// Contacts as JSON Lines (contacts_jsonl.hpp), "frame" = the source's sequence number, one line
-  /// per reconstructed frame, flushed each frame. Null: none.
-  void write_contacts_to(std::ostream* out) { contacts_out_ = out; }
+  /// per reconstructed frame, flushed each frame. Null: none. When its reader goes away (EPIPE):
+  /// a FIFO's lines are dropped until a new reader opens it, whole lines from the next frame on;
+  /// standard output (a pipe that cannot be reopened) ends the run (LiveStats::contacts_reader_left).
+  /// Any other failed write throws IoError naming the output. Must outlive run().
+  void write_contacts_to(OutputFile* out) { contacts_out_ = out; }
   /// Every frame the source gives (the reference's capture included) is recorded here, as the board sent
   /// it (SourceFrame::raw). Null: none.
   void record_to(Recorder* recorder) { recorder_ = recorder; }
@@ -86,8 +95,9 @@ class LiveLoop {
   /// \return false for an unknown command (ignored).
   bool command(const std::string& name);
 
-  /// Runs until `stop` is set, max_frames are reconstructed, or the source has finished (a
-  /// recording's end); a source's failure (IoError) propagates. Returns what it measured.
+  /// Runs until `stop` is set, max_frames are reconstructed, the source has finished (a
+  /// recording's end) or the contacts' reader went away; a source's failure (IoError) propagates.
+  /// Returns what it measured.
   LiveStats run(const std::atomic<bool>& stop);
 
   /// One turn of run()'s loop, for a caller that pulls frames (the Python iterator): applies a
@@ -105,12 +115,13 @@ class LiveLoop {
   /// \return the contacts of a reconstructed frame; null for a capture frame.
   const std::vector<Contact>* handle(const SourceFrame& frame);
   void publish(LiveFrame& frame);
+  void write_contacts(std::uint64_t sequence, const std::vector<Contact>& contacts);
 
   FrameSource& source_;
   LiveOptions options_;
   Reconstructor reconstructor_;
   ReferenceTracker reference_;
-  std::ostream* contacts_out_ = nullptr;
+  OutputFile* contacts_out_ = nullptr;
   Recorder* recorder_ = nullptr;
   std::vector<FramePublisher*> publishers_;
   std::function<void(const SourceFrame&, const std::vector<Contact>&)> observer_;
