@@ -2,8 +2,9 @@
 /// \file live_session.hpp
 /// `emit live`: a source (live/open_source.hpp), the pipeline for a method, the live loop, and on
 /// request the viewer's server, a recording and the contacts as JSON Lines, wired together.
-/// Built by the constructor (the source opened and the models built before any output file is
-/// touched), run until stopped.
+/// Built by the constructor: every output opened first (core/output_paths.hpp's open_outputs: a
+/// file's PATH.partial created, nothing replaced; one that cannot be opened touches none), then
+/// the source opened and the models built; run until stopped.
 ///
 /// Example:
 ///
@@ -25,7 +26,7 @@ namespace emit {
 struct LiveJob {
   std::string source = "sim";  ///< live/open_source.hpp
   std::string serve;           ///< HOST:PORT for the viewer; empty: none
-  std::string contacts_path;   ///< JSON Lines; "-": standard output; empty: none
+  std::string contacts_path;   ///< JSON Lines; "-": standard output; a FIFO: readers may come and go; empty: none
   std::string record_path;     ///< empty: no recording
   std::string mcap_path;       ///< empty: no MCAP recording (live/mcap_publisher.hpp)
   std::string dds_prefix;      ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
@@ -52,8 +53,9 @@ class LiveSession {
   std::string viewer_url() const;  ///< empty when not serving
   bool calibrated() const;
 
-  /// Runs until `stop`, the frame or time limit, or the source's end; then closes the recording
-  /// (renamed into place) and returns what the loop measured.
+  /// Runs until `stop`, the frame or time limit, the source's end, or the end of the reader of
+  /// the contacts on standard output (LiveStats::contacts_reader_left); then closes the
+  /// recordings and the contacts (renamed into place) and returns what the loop measured.
   LiveStats run(const std::atomic<bool>& stop);
   std::uint64_t recorded_frames() const;  ///< after run(); 0 without a recording
 
