@@ -10,6 +10,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "sheet_file_access.hpp"
 
 namespace emit::detail {
 
@@ -27,7 +28,7 @@ std::string point_text(const Vector3& p) {
 /// A readable file, and for STEP one that begins as the standard says (OpenCASCADE's parser
 /// prints its complaints about anything else to the terminal).
 void check_cad_file(const std::string& path, const std::string& file) {
-  if (!std::filesystem::is_regular_file(path)) throw IoError(file + ": no such CAD file");
+  check_sheet_file_access(path, "CAD file");
   std::ifstream in(path);
   if (!in) throw IoError(file + ": cannot read CAD file");
   const std::string extension = std::filesystem::path(path).extension().string();
@@ -59,6 +60,12 @@ double import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_ta
     throw InvalidInput(file + ": the CAD file holds a solid; export only the skin's faces (the sheet is a surface)");
   // The outer border: the curves that bound exactly one of the surfaces.
   gmsh::model::getBoundary(surfaces, border, /*combined=*/true, /*oriented=*/false, /*recursive=*/false);
+  // A closed surface (a solid's skin, sewn from its faces, or a sphere) has no border at all.
+  if (border.empty())
+    throw InvalidInput(file +
+                       ": the CAD surface is closed (a solid's skin, or a closed shell): it has no open border "
+                       "for the electrodes; the sheet must be an open surface, its border where the skin ends: "
+                       "export only the skin's faces");
   std::vector<int> taken(sensor.shape.electrode_at_mm.size(), -1);
   for (std::size_t e = 0; e < sensor.shape.electrode_at_mm.size(); ++e) {
     const Vector3& at = sensor.shape.electrode_at_mm[e];
