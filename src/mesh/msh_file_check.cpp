@@ -24,7 +24,7 @@ constexpr std::size_t max_token_bytes = 64;
 /// A section's marker line ("$Nodes", "$EndNodes"); other lines of a section passed over may be
 /// longer (a physical name), their rest unread.
 constexpr std::size_t max_line_bytes = 256;
-/// A surface of T triangles uses at most 3T nodes.
+/// A surface of T triangles uses at most 3T nodes (the limit's T, and one more triangle's).
 constexpr double nodes_per_triangle_bound = 3;
 
 /// The nodes of an element of each type of the MSH format (Gmsh's reference manual, "MSH file
@@ -88,7 +88,7 @@ class MshReader {
   void set_section(const std::string& section) { section_ = section; }
 
   [[noreturn]] void fail(const std::string& what) const {
-    const std::string where = binary_ ? "byte " + std::to_string(in_.offset()) : "line " + std::to_string(line_);
+    const std::string where = binary_ ? "byte " + std::to_string(in_.offset()) : "line " + std::to_string(last_line_);
     throw InvalidInput(file_ + ": " + where + (section_.empty() ? "" : ", " + section_) + ": " + what);
   }
 
@@ -96,7 +96,7 @@ class MshReader {
   bool line(std::string& out) {
     bool too_long = false;
     if (!in_.line(out, max_line_bytes, too_long)) return false;
-    ++line_;
+    last_line_ = line_++;
     if (too_long) out += "...";
     return true;
   }
@@ -110,6 +110,7 @@ class MshReader {
       if (!is_space(c)) break;
       if (c == '\n') ++line_;
     }
+    last_line_ = line_;
     while (true) {
       text += c;
       if (text.size() > max_token_bytes) fail(std::string(what) + ": " + quote_input(text, 40) + " is not a number");
@@ -198,7 +199,8 @@ class MshReader {
   std::string file_;
   std::string section_;
   bool binary_ = false;
-  std::int64_t line_ = 0;
+  std::int64_t line_ = 1;       ///< the line the reading is on
+  std::int64_t last_line_ = 0;  ///< the line of the last value or line read
 };
 
 std::string point_text(double x, double y, double z) {
@@ -214,7 +216,7 @@ void check_node(MshReader& r, std::uint64_t tag, double x, double y, double z) {
 
 std::int64_t read_nodes(MshReader& r, double version, double max_triangles) {
   const auto bound = [&](std::uint64_t nodes) {
-    if (static_cast<double>(nodes) > nodes_per_triangle_bound * max_triangles)
+    if (static_cast<double>(nodes) > nodes_per_triangle_bound * (max_triangles + 1))
       r.fail(std::to_string(nodes) + " nodes (its header), more than " +
              std::to_string(static_cast<long long>(nodes_per_triangle_bound)) + " per triangle allowed, " +
              detail::beyond_triangle_limit(max_triangles, "use a coarser mesh"));

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <optional>
 #include <vector>
 
@@ -85,79 +86,109 @@ struct AsciiResult {
   std::optional<std::string> syntax_error;
 };
 
-AsciiResult read_ascii(const std::string& path, const std::string& file, double max_triangles) {
-  FileBytes in(path, file);
-  AsciiResult result;
-  std::string line;
-  bool too_long = false;
-  const auto syntax = [&](const std::string& what) {
-    result.syntax_error =
-        file + ": line " + std::to_string(in.line_number()) + ": " + what + ", got " + quote_input(line, 40);
-    return result;
-  };
-  const auto next = [&] {
-    if (!in.line(line, max_line_bytes, too_long)) return false;
-    if (too_long) line += "...";
+/// A line that is not what Gmsh's reader expects there: its message, thrown inside read_ascii.
+struct SyntaxError {
+  std::string message;
+};
+
+/// The ASCII file's lines, one keyword each, as Gmsh's reader takes them.
+class AsciiLines {
+ public:
+  AsciiLines(const std::string& path, const std::string& file) : in_(path, file), file_(file) {}
+
+  /// The next line: false at the end of the file. \throw SyntaxError for one longer than Gmsh reads.
+  bool next() {
+    bool too_long = false;
+    if (!in_.line(line_, max_line_bytes, too_long)) return false;
+    if (too_long) fail("a line longer than 254 bytes (Gmsh's reader would split it)");
+    words_ = words_of(line_);
     return true;
-  };
-  next();  // "solid …": the caller has seen it begin so
-  if (too_long) return syntax("a line longer than 254 bytes (Gmsh's reader would split it)");
-  std::int64_t in_solid = 0;
-  while (true) {
-    if (!next()) {
-      if (in_solid == 0) return syntax("a solid without triangles");
-      return result;  // the end without "endsolid": Gmsh reads what came before
-    }
-    if (too_long) return syntax("a line longer than 254 bytes (Gmsh's reader would split it)");
-    std::vector<std::string> words = words_of(line);
-    if (!words.empty() && same_word(words[0], "endsolid")) {
-      if (in_solid == 0) return syntax("a solid without triangles");
-      // Gmsh sees "endsolid" (or "ENDSOLID") only at the line's start; then another "solid" may begin.
-      const bool seen = starts_with(line, "endsolid") || starts_with(line, "ENDSOLID");
-      if (!next()) return result;
-      if (seen && (starts_with(line, "solid") || starts_with(line, "SOLID"))) {
-        if (too_long) return syntax("a line longer than 254 bytes (Gmsh's reader would split it)");
-        in_solid = 0;
-        continue;
+  }
+  /// The next line, which must be there: `expected` says what it should be.
+  void expect_next(const char* expected) {
+    if (!next()) fail(std::string("the file ends where ") + expected + " should be");
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw SyntaxError{file_ + ": line " + std::to_string(in_.line_number()) + ": " + what + ", got " +
+                      quote_input(line_, 40)};
+  }
+  /// Whether the line is exactly these keywords (any case).
+  bool is(std::initializer_list<const char*> keywords) const {
+    if (words_.size() != keywords.size()) return false;
+    std::size_t k = 0;
+    for (const char* keyword : keywords)
+      if (!same_word(words_[k++], keyword)) return false;
+    return true;
+  }
+  const std::string& line() const { return line_; }
+  const std::vector<std::string>& words() const { return words_; }
+  std::int64_t number() const { return in_.line_number(); }
+
+ private:
+  FileBytes in_;
+  std::string file_, line_;
+  std::vector<std::string> words_;
+};
+
+AsciiResult read_ascii(const std::string& path, const std::string& file, double max_triangles) {
+  AsciiLines lines(path, file);
+  AsciiResult result;
+  try {
+    lines.next();  // "solid …": the caller has seen it begin so
+    std::int64_t in_solid = 0;
+    while (true) {
+      if (!lines.next()) {
+        if (in_solid == 0) lines.fail("a solid without triangles");
+        return result;  // the end without "endsolid": Gmsh reads what came before
       }
-      do {
-        if (!words_of(line).empty() || too_long) return syntax("nothing but the end of the file after \"endsolid\"");
-      } while (next());
-      return result;
-    }
-    if (words.empty() || !same_word(words[0], "facet")) return syntax("expected \"facet normal nx ny nz\"");
-    const std::int64_t triangle = result.triangles;
-    const std::int64_t facet_line = in.line_number();
-    if (!next() || too_long) return syntax("expected \"outer loop\"");
-    words = words_of(line);
-    if (words.size() != 2 || !same_word(words[0], "outer") || !same_word(words[1], "loop"))
-      return syntax("expected \"outer loop\"");
-    Corners corners{};
-    for (int k = 0; k < 3; ++k) {
-      if (!next() || too_long) return syntax("expected \"vertex x y z\"");
-      words = words_of(line);
-      if (words.size() != 4 || !same_word(words[0], "vertex")) return syntax("expected \"vertex x y z\"");
-      for (int d = 0; d < 3; ++d) {
-        const char* text = words[1 + d].c_str();
-        char* end = nullptr;
-        corners[k][d] = std::strtod(text, &end);
-        if (end == text || *end != '\0')
-          return syntax("expected \"vertex x y z\", three numbers (" + quote_input(words[1 + d], 40) +
-                        " is not a number)");
+      if (!lines.words().empty() && same_word(lines.words()[0], "endsolid")) {
+        if (in_solid == 0) lines.fail("a solid without triangles");
+        // Gmsh sees "endsolid" (or "ENDSOLID") only at the line's start; then another "solid" may begin.
+        const bool seen = starts_with(lines.line(), "endsolid") || starts_with(lines.line(), "ENDSOLID");
+        if (!lines.next()) return result;
+        if (seen && (starts_with(lines.line(), "solid") || starts_with(lines.line(), "SOLID"))) {
+          in_solid = 0;
+          continue;
+        }
+        do {
+          if (!lines.words().empty()) lines.fail("nothing but the end of the file after \"endsolid\"");
+        } while (lines.next());
+        return result;
       }
+      if (lines.words().empty() || !same_word(lines.words()[0], "facet"))
+        lines.fail("expected \"facet normal nx ny nz\"");
+      const std::int64_t triangle = result.triangles;
+      const std::int64_t facet_line = lines.number();
+      lines.expect_next("\"outer loop\"");
+      if (!lines.is({"outer", "loop"})) lines.fail("expected \"outer loop\"");
+      Corners corners{};
+      for (int k = 0; k < 3; ++k) {
+        lines.expect_next("\"vertex x y z\"");
+        if (lines.words().size() != 4 || !same_word(lines.words()[0], "vertex"))
+          lines.fail("expected \"vertex x y z\"");
+        for (int d = 0; d < 3; ++d) {
+          const char* text = lines.words()[1 + d].c_str();
+          char* end = nullptr;
+          corners[k][d] = std::strtod(text, &end);
+          if (end == text || *end != '\0')
+            lines.fail("expected \"vertex x y z\", three numbers (" + quote_input(lines.words()[1 + d], 40) +
+                       " is not a number)");
+        }
+      }
+      lines.expect_next("\"endloop\"");
+      if (!lines.is({"endloop"})) lines.fail("expected \"endloop\"");
+      lines.expect_next("\"endfacet\"");
+      if (!lines.is({"endfacet"})) lines.fail("expected \"endfacet\"");
+      const std::string where = " (line " + std::to_string(facet_line) + ")";
+      if (static_cast<double>(triangle + 1) > max_triangles)
+        beyond_limit(file, "more than " + std::to_string(triangle) + " triangles" + where, max_triangles);
+      check_triangle(corners, file, "triangle " + std::to_string(triangle) + where);
+      ++result.triangles;
+      ++in_solid;
     }
-    if (!next() || too_long || words_of(line).size() != 1 || !same_word(words_of(line)[0], "endloop"))
-      return syntax("expected \"endloop\"");
-    if (!next() || too_long || words_of(line).size() != 1 || !same_word(words_of(line)[0], "endfacet"))
-      return syntax("expected \"endfacet\"");
-    if (static_cast<double>(triangle + 1) > max_triangles)
-      beyond_limit(file,
-                   "more than " + std::to_string(triangle) + " triangles (line " + std::to_string(facet_line) + ")",
-                   max_triangles);
-    check_triangle(corners, file,
-                   "triangle " + std::to_string(triangle) + " (line " + std::to_string(facet_line) + ")");
-    ++result.triangles;
-    ++in_solid;
+  } catch (const SyntaxError& error) {
+    result.syntax_error = error.message;
+    return result;
   }
 }
 

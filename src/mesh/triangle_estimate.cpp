@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "border_breakpoints.hpp"
 #include "emit/core/errors.hpp"
@@ -100,7 +101,7 @@ void check_triangle_estimate(const Sensor& sensor, const MeshOptions& options) {
   // The border's pieces make most of it: a larger element size does not help, fewer pieces do.
   if (estimate.triangles > 2 * (estimate.area_triangles + estimate.graded_triangles))
     throw InvalidInput(
-        meshing + "as its border is cut into " + short_number(estimate.border_pieces) +
+        meshing + "as its border is cut into " + std::to_string(static_cast<long long>(estimate.border_pieces)) +
         " pieces (between corners and electrode ends) of " + short_number(estimate.border_piece_mm) +
         " mm on average and Gmsh meshes the sheet as fine, " +
         beyond_triangle_limit(options.max_triangles, "use fewer or wider-spaced electrodes, or fewer polygon points"));

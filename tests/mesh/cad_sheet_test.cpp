@@ -144,5 +144,33 @@ TEST(CadSheet, BadElectrodePointsAndFilesAreRefusedInOneLine) {
             "sensor: electrodes[0].at_mm: must be a point [x, y, z] in mm, got [8.4853,0]");
 }
 
+// A closed STEP solid (a sphere; tests/data/cad/closed_sphere.step, written by Gmsh's OpenCASCADE)
+// has no border: its electrodes were "no border curve within 0.5 mm (the nearest is inf mm away)".
+TEST(CadSheet, AClosedSurfaceIsRefusedSayingWhatIsExpected) {
+  const nlohmann::json j = {{"shape",
+                             {{"type", "mesh"}, {"file", test::source_path("tests/data/cad/closed_sphere.step")}}},
+                            {"electrodes",
+                             {{{"at_mm", {10, 0, 0}}}, {{"at_mm", {0, 10, 0}}}, {{"at_mm", {-10, 0, 0}}}}}};
+  const Sensor sensor = parse_sensor(j);
+  const std::string error = test::error_of([&] { generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  EXPECT_NE(error.find("closed_sphere.step\": the CAD surface is closed (a solid's skin, or a closed shell): it has no "
+                       "open border for the electrodes; the sheet must be an open surface"),
+            std::string::npos)
+      << error;
+  EXPECT_EQ(error.find("inf mm"), std::string::npos) << error;
+}
+
+// A CAD file's name of 5,000 characters: the file system refused it and the message's reason was
+// empty ("meshing s: "). Now it says so, quoting the name's start.
+TEST(CadSheet, AFileNameTooLongIsSaidSo) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(test::source_path("examples/sensors/fingertip.json")));
+  j["shape"]["file"] = std::string(5000, 'a') + ".step";
+  const Sensor sensor = parse_sensor(j, "s.json", "/tmp");
+  const std::string error = test::error_of([&] { generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  EXPECT_EQ(error, "\"/tmp/" + std::string(35, 'a') +
+                       "...\": the CAD file's name is too long for the file system (5010 characters; at most 255 "
+                       "between slashes, 4095 in all)");
+}
+
 }  // namespace
 }  // namespace emit

@@ -22,7 +22,7 @@ struct MshFileSummary {
 /// them) and checks its $Nodes and $Elements sections: the counts their headers claim agree with
 /// what follows, every node's x, y and z are finite numbers, every element is of a type of the MSH
 /// format, and there is at least one triangle and at most `max_triangles` (the count is taken from
-/// each block's header, before its elements are read) on at most 3 × max_triangles nodes. Other
+/// each block's header, before its elements are read) on at most 3 × (max_triangles + 1) nodes. Other
 /// sections are passed over to their "$End…" line. Memory does not grow with the file.
 /// \throw IoError for a file that is missing or cannot be read; InvalidInput naming the file and
 /// what is wrong where (the section, the node or element by its tag, or the line).
