@@ -13,6 +13,7 @@
 #include "emit/mesh/flatness.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
+#include "emit/mesh/step_file_check.hpp"
 #include "emit/mesh/stl_sheet.hpp"
 #include "emit/sensor/surface.hpp"
 #include "gmsh_mesher.hpp"
@@ -56,6 +57,7 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   }
   options.validate();
   if (cad) detail::check_sheet_file_access(sensor.shape.mesh_path, "CAD file");
+  if (cad && is_step_file(sensor.shape.mesh_path)) check_step_file(sensor.shape.mesh_path);
   detail::check_triangle_estimate(sensor, options);
   // A cap: its disc, at the size that the wrapping's stretch brings back to the element size.
   const bool cap = sensor.shape.kind == ShapeKind::spherical_cap;

@@ -415,6 +415,11 @@ bool is_cad_file(const std::string& path) {
   return extension == ".step" || extension == ".stp" || extension == ".iges" || extension == ".igs";
 }
 
+bool is_step_file(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  return extension == ".step" || extension == ".stp";
+}
+
 bool is_stl_file(const std::string& path) { return lower_extension(path) == ".stl"; }
 
 bool is_msh_file(const std::string& path) { return lower_extension(path) == ".msh"; }

@@ -86,7 +86,7 @@ TEST(StlFileCheck, AsciiAndBinarySheetsAreRead) {
   EXPECT_EQ(c.triangle_count, 18);
   // Windows line ends, capitals, no "endsolid" at the end, two solids.
   std::string crlf = ascii(grid(1));
-  for (std::size_t at = 0; (at = crlf.find('\n', at)) != std::string::npos; at += 2) crlf.insert(at, "\r");
+  for (std::size_t at = 0; (at = crlf.find('\n', at)) != std::string::npos; at += 2) crlf.insert(at, 1, '\r');
   EXPECT_EQ(check_stl_file(write(dir, "d.stl", crlf), 1e6).triangle_count, 2);
   std::string two = ascii(grid(1)) + ascii(grid(2));
   EXPECT_EQ(check_stl_file(write(dir, "e.stl", two), 1e6).triangle_count, 10);

@@ -43,6 +43,8 @@ struct Shape {
 /// Whether a mesh file is CAD (STEP or IGES, by its extension, any case), which Gmsh's
 /// OpenCASCADE kernel reads and emit meshes, rather than a Gmsh mesh.
 bool is_cad_file(const std::string& path);
+/// Whether a CAD file is STEP (.step, .stp, any case), rather than IGES.
+bool is_step_file(const std::string& path);
 /// Whether a mesh file is an STL surface (by its extension, any case): its triangles are the mesh.
 bool is_stl_file(const std::string& path);
 /// Whether a mesh file is a Gmsh mesh (.msh, any case): its triangles and "electrode <i>" curves

@@ -1,9 +1,6 @@
 #include "cad_sheet.hpp"
 
-#include <cctype>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 
 #include <gmsh.h>
@@ -25,27 +22,12 @@ std::string point_text(const Vector3& p) {
   return text;
 }
 
-/// A readable file, and for STEP one that begins as the standard says (OpenCASCADE's parser
-/// prints its complaints about anything else to the terminal).
-void check_cad_file(const std::string& path, const std::string& file) {
-  check_sheet_file_access(path, "CAD file");
-  std::ifstream in(path);
-  if (!in) throw IoError(file + ": cannot read CAD file");
-  const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension.size() == 4 || extension.size() == 5) {  // .stp, .step (any case)
-    std::string first;
-    std::getline(in, first);
-    const bool step = std::tolower(static_cast<unsigned char>(extension[1])) == 's';
-    if (step && first.rfind("ISO-10303-21;", 0) != 0)
-      throw InvalidInput(file + ": not a STEP file (its first line is not \"ISO-10303-21;\")");
-  }
-}
-
 }  // namespace
 
 double import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_tags) {
   const std::string file = quote_input(sensor.shape.mesh_path, 120);
-  check_cad_file(sensor.shape.mesh_path, file);
+  // emit has read a STEP file itself first (mesh/step_file_check.hpp, from generate_mesh).
+  check_sheet_file_access(sensor.shape.mesh_path, "CAD file");
   // A STEP file from Gmsh (or many CAD tools) writes each face as its own part, its shared edges
   // twice: sewn, the faces share them, and the mesh is one sheet. The file's numbers are taken as
   // mm (Geometry.OCCTargetUnit left empty: no conversion).
