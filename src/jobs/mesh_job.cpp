@@ -2,6 +2,7 @@
 #include "emit/mesh/sheet_file.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "emit/core/output_paths.hpp"
 
@@ -12,7 +13,10 @@
 namespace emit {
 
 MeshReport run_mesh_job(const MeshJob& job) {
-  const Sensor sensor = load_sheet_sensor(job.sensor_path);
+  // --max-triangles holds for a file's sheet too, which is read (and counted) with the sensor.
+  Sensor described = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
+  if (job.max_triangles > 0) described.mesh.max_triangles = job.max_triangles;
+  const Sensor sensor = with_sheet_surface(std::move(described));
   check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
                 {{"--out", job.out_path}});
   MeshOptions options = job.twin ? twin_mesh_options(sensor, job.seed) : reconstruction_mesh_options(sensor);

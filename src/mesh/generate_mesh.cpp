@@ -13,44 +13,14 @@
 #include "emit/mesh/flatness.hpp"
 #include "emit/mesh/mesh_io.hpp"
 #include "emit/mesh/spherical_cap.hpp"
+#include "emit/mesh/step_file_check.hpp"
 #include "emit/mesh/stl_sheet.hpp"
 #include "emit/sensor/surface.hpp"
 #include "gmsh_mesher.hpp"
+#include "sheet_file_access.hpp"
+#include "triangle_estimate.hpp"
 
 namespace emit {
-
-namespace detail {
-
-/// Refuses a mesh estimated beyond options.max_triangles, saying how to raise the limit.
-void check_triangle_estimate(const Sensor& sensor, const MeshOptions& options, double estimate) {
-  if (estimate <= options.max_triangles) return;
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "meshing %s: about %.3g triangles at %.3g mm, beyond the limit of %.3g: choose a larger element "
-                "size, or raise the limit (sensor \"mesh\": {\"max_triangles\": N}, or emit mesh --max-triangles N)",
-                sensor.name.empty() ? "the sensor" : sensor.name.c_str(), estimate, options.element_size_mm,
-                options.max_triangles);
-  throw InvalidInput(text);
-}
-
-/// An equilateral triangle's area at edge h: √3/4·h².
-double triangle_area_mm2(double h_mm) { return std::sqrt(3.0) / 4 * h_mm * h_mm; }
-
-}  // namespace detail
-
-using detail::check_triangle_estimate;
-using detail::triangle_area_mm2;
-
-double estimated_triangle_count(const Sensor& sensor, const MeshOptions& options) {
-  const Shape& shape = sensor.shape;
-  if (shape.kind == ShapeKind::mesh_file && !shape.surface) return 0;  // a CAD file is checked once read
-  // A cap is meshed as its disc at a finer size (mesh/spherical_cap.hpp): the disc's count.
-  const double area_mm2 = shape.kind == ShapeKind::spherical_cap
-                              ? std::numbers::pi * shape.radius_mm * shape.radius_mm *
-                                    std::pow(spherical_cap_stretch(shape.sphere_radius_mm, shape.radius_mm), 2)
-                              : surface_area_mm2(shape);
-  return area_mm2 / triangle_area_mm2(options.element_size_mm);
-}
 
 MeshOptions reconstruction_mesh_options(const Sensor& sensor) {
   MeshOptions options;
@@ -73,7 +43,11 @@ MeshOptions twin_mesh_options(const Sensor& sensor, int seed) {
 Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
   const bool cad = sensor.shape.kind == ShapeKind::mesh_file && is_cad_file(sensor.shape.mesh_path);
   if (sensor.shape.kind == ShapeKind::mesh_file && !cad) {
-    Mesh mesh = is_stl_file(sensor.shape.mesh_path) ? read_stl_sheet(sensor) : read_msh(sensor.shape.mesh_path);
+    // A file's sheet is read, not made: its triangles are counted against the same limit.
+    Sensor limited = sensor;
+    limited.mesh.max_triangles = options.max_triangles;
+    Mesh mesh = is_stl_file(sensor.shape.mesh_path) ? read_stl_sheet(limited)
+                                                    : read_msh(sensor.shape.mesh_path, options.max_triangles);
     // Presses and contacts on a curved file's sheet are placed through its surface, read with the
     // sensor (mesh/sheet_file.hpp): without it a press would miss the sheet.
     if (!is_flat(mesh) && !sensor.shape.surface)
@@ -82,7 +56,9 @@ Mesh generate_mesh(const Sensor& sensor, const MeshOptions& options) {
     return mesh;
   }
   options.validate();
-  check_triangle_estimate(sensor, options, estimated_triangle_count(sensor, options));
+  if (cad) detail::check_sheet_file_access(sensor.shape.mesh_path, "CAD file");
+  if (cad && is_step_file(sensor.shape.mesh_path)) check_step_file(sensor.shape.mesh_path);
+  detail::check_triangle_estimate(sensor, options);
   // A cap: its disc, at the size that the wrapping's stretch brings back to the element size.
   const bool cap = sensor.shape.kind == ShapeKind::spherical_cap;
   MeshOptions flat = options;

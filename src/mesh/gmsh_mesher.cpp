@@ -7,8 +7,12 @@
 #include <vector>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/mesh/mesh_io.hpp"
+#include "emit/mesh/msh_file_check.hpp"
+#include "emit/mesh/stl_file_check.hpp"
 #include "emit/mesh/stl_sheet.hpp"
+#include "zero_area_triangles.hpp"
 
 namespace emit {
 
@@ -52,9 +56,19 @@ const GmshMesher& gmsh_mesher() {
 
 }  // namespace detail
 
-// The public entry points of mesh_io.hpp and stl_sheet.hpp, done by the module.
-Mesh read_msh(const std::string& path) { return detail::gmsh_mesher().read_msh(path); }
+// The public entry points of mesh_io.hpp and stl_sheet.hpp, done by the module once emit has read
+// the file itself (mesh/msh_file_check.hpp, mesh/stl_file_check.hpp): Gmsh sees no file that
+// emit has not checked.
+Mesh read_msh(const std::string& path, double max_triangles) {
+  check_msh_file(path, max_triangles);
+  Mesh mesh = detail::gmsh_mesher().read_msh(path);
+  detail::refuse_zero_area_triangles(mesh, quote_input(path, 120));
+  return mesh;
+}
 void write_msh(const Mesh& mesh, const std::string& path) { detail::gmsh_mesher().write_msh(mesh, path); }
-Mesh read_stl_sheet(const Sensor& sensor) { return detail::gmsh_mesher().read_stl_sheet(sensor); }
+Mesh read_stl_sheet(const Sensor& sensor) {
+  check_stl_file(sensor.shape.mesh_path, sensor.mesh.max_triangles);
+  return detail::gmsh_mesher().read_stl_sheet(sensor);
+}
 
 }  // namespace emit

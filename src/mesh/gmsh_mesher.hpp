@@ -31,10 +31,4 @@ inline constexpr const char* gmsh_module = "libemit_gmsh.so";
 inline constexpr const char* gmsh_module_folder = "emit";  ///< installed, beside the library
 inline constexpr const char* gmsh_module_entry = "emit_gmsh_mesher";
 
-/// Throws InvalidInput when the sheet would need more than options.max_triangles triangles of
-/// `estimate` (generate_mesh.cpp; the module checks a CAD sheet's once its area is known).
-void check_triangle_estimate(const Sensor& sensor, const MeshOptions& options, double estimate);
-/// An equilateral triangle's area of side h [mm²].
-double triangle_area_mm2(double h_mm);
-
 }  // namespace emit::detail

@@ -42,11 +42,18 @@ std::vector<std::array<int, 2>> Mesh::border_edges() const {
 
 std::vector<std::array<int, 2>> Mesh::electrode_edges(int e) const {
   const auto& nodes = electrode_nodes.at(e);
+  const auto on = [&](int v) { return std::binary_search(nodes.begin(), nodes.end(), v); };
+  // Only the edges with both ends on the electrode are counted (all of them, per electrode, made
+  // writing a mesh of 400 electrodes take minutes).
+  std::map<std::array<int, 2>, int> uses;
+  for (Index t = 0; t < triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      if (on(a) && on(b)) ++uses[{std::min(a, b), std::max(a, b)}];
+    }
   std::vector<std::array<int, 2>> edges;
-  for (const auto& edge : border_edges())
-    if (std::binary_search(nodes.begin(), nodes.end(), edge[0]) &&
-        std::binary_search(nodes.begin(), nodes.end(), edge[1]))
-      edges.push_back(edge);
+  for (const auto& [edge, count] : uses)
+    if (count == 1) edges.push_back(edge);
   return edges;
 }
 

@@ -16,7 +16,7 @@ Sensor with_sheet_surface(Sensor sensor) {
   const std::string& path = sensor.shape.mesh_path;
   const Mesh mesh = is_cad_file(path)   ? generate_mesh(sensor, reconstruction_mesh_options(sensor))
                     : is_stl_file(path) ? read_stl_sheet(sensor)
-                                        : read_msh(path);
+                                        : read_msh(path, sensor.mesh.max_triangles);
   sensor.shape.surface =
       std::make_shared<const HeightField>(mesh.nodes_mm, mesh.triangles, quote_input(sensor.shape.mesh_path, 120));
   return sensor;

@@ -22,7 +22,7 @@ int electrode_count_of(const Sensor& sensor) {
   if (sensor.shape.kind != ShapeKind::mesh_file) return sensor.electrode_count();
   if (is_cad_file(sensor.shape.mesh_path) || is_stl_file(sensor.shape.mesh_path))
     return static_cast<int>(sensor.shape.electrode_at_mm.size());
-  return read_msh(sensor.shape.mesh_path).electrode_count();
+  return read_msh(sensor.shape.mesh_path, sensor.mesh.max_triangles).electrode_count();
 }
 
 void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source) {

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/quote_input.hpp"
 #include "emit/sensor/electrode_layout.hpp"
 #include "emit/sensor/surface.hpp"
 
@@ -25,6 +26,9 @@ using nlohmann::json;
 namespace {
 
 enum class Sign { any, positive, non_negative };
+
+/// The most points a polygon outline may have (shape.points_mm).
+constexpr std::size_t max_polygon_points = 20000;
 
 /// A value as an error message shows it: as written, unless it nests lists or objects, then by its
 /// kind only (dump() recurses once per level: a file nested some 10^4 levels deep overflowed the
@@ -128,6 +132,13 @@ Shape parse_shape(const json& j, const std::string& base_dir) {
     shape.kind = ShapeKind::polygon;
     const json& points = r.value("points_mm");
     if (!points.is_array()) ObjectReader::fail("shape.points_mm", "must be a list of points [x, y]");
+    // Checking an outline for crossings takes time that grows up to the square of its points (a
+    // point is a border curve for Gmsh, too): the bound keeps the worst under a second.
+    if (points.size() > max_polygon_points)
+      ObjectReader::fail("shape.points_mm", std::to_string(points.size()) + " points, more than the " +
+                                                std::to_string(max_polygon_points) +
+                                                " a polygon may have: simplify the outline (a point every 0.1 mm of "
+                                                "a 2 m border is still fewer)");
     for (std::size_t i = 0; i < points.size(); ++i)
       shape.points_mm.push_back(ObjectReader::check_point("shape.points_mm[" + std::to_string(i) + "]", points[i]));
   } else if (type == "spherical_cap") {
@@ -151,6 +162,14 @@ Shape parse_shape(const json& j, const std::string& base_dir) {
     shape.kind = ShapeKind::mesh_file;
     const std::filesystem::path file = r.string("file");
     shape.mesh_path = (file.is_absolute() ? file : std::filesystem::path(base_dir) / file).string();
+    if (!is_msh_file(shape.mesh_path) && !is_stl_file(shape.mesh_path) && !is_cad_file(shape.mesh_path)) {
+      const std::string extension = file.extension().string();
+      ObjectReader::
+          fail("shape.file",
+               quote_input(file.string(), 40) +
+                   (extension.empty() ? " has no extension" : " is a " + quote_input(extension, 16) + " file") +
+                   ": a sheet's file is a Gmsh mesh (.msh), an STL surface (.stl) or CAD (.step, .stp, .iges, .igs)");
+    }
   } else {
     ObjectReader::fail("shape.type",
                        "must be rectangle, circle, polygon, spherical_cap, cylinder or mesh, got \"" + type + "\"");
@@ -408,7 +427,14 @@ bool is_cad_file(const std::string& path) {
   return extension == ".step" || extension == ".stp" || extension == ".iges" || extension == ".igs";
 }
 
+bool is_step_file(const std::string& path) {
+  const std::string extension = lower_extension(path);
+  return extension == ".step" || extension == ".stp";
+}
+
 bool is_stl_file(const std::string& path) { return lower_extension(path) == ".stl"; }
+
+bool is_msh_file(const std::string& path) { return lower_extension(path) == ".msh"; }
 
 namespace {
 

@@ -1,6 +1,7 @@
 // End to end: the emit CLI run as a user runs it, on good and on bad input.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -726,6 +727,34 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
   std::ofstream(dir + "/truth.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,30,30,5,10,0.127,1\n";
   std::ofstream(dir + "/pairs.csv") << "pressure_N_per_mm2,resistance_ohm\n0.1,2000\n0.2,-5\n";
   std::ofstream(dir + "/a_file") << "not a folder";
+  // Sheets' files emit once handed to Gmsh unchecked, and descriptions it once took too long over.
+  const std::string stl_electrodes =
+      R"("electrodes":[{"at_mm":[1,0,0],"width_mm":0.5},{"at_mm":[2,1,0],"width_mm":0.5},{"at_mm":[1,2,0],"width_mm":0.5}])";
+  std::ofstream(dir + "/nan.stl") << "solid s\nfacet normal 0 0 1\nouter loop\nvertex nan 0 0\nvertex 2 0 0\n"
+                                     "vertex 2 2 0\nendloop\nendfacet\nendsolid s\n";
+  std::ofstream(dir + "/nan_stl.json") << R"({"shape":{"type":"mesh","file":"nan.stl"},)" << stl_electrodes << "}";
+  {
+    std::ofstream big(dir + "/big.stl", std::ios::binary);
+    big << std::string(80, ' ');
+    const std::uint32_t count = 1200000;
+    big.write(reinterpret_cast<const char*>(&count), 4);
+  }
+  std::filesystem::resize_file(dir + "/big.stl", 84 + 50 * 1200000UL);  // sparse: nothing but the header
+  std::ofstream(dir + "/big_stl.json") << R"({"shape":{"type":"mesh","file":"big.stl"},)" << stl_electrodes << "}";
+  std::ofstream(dir + "/grid.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+                                      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n$Elements\n1 2 1 2\n2 1 2 2\n"
+                                      "1 1 2 3\n2 1 3 4\n$EndElements\n";
+  std::ofstream(dir + "/grid_msh.json") << R"({"shape":{"type":"mesh","file":"grid.msh"}})";
+  std::ofstream(dir + "/dome1000.json")
+      << R"({"name":"dome","shape":{"type":"spherical_cap","sphere_radius_mm":25,"base_radius_mm":20},)"
+      << R"("electrodes":{"count":1000,"width_mm":0.1},"mesh":{"element_size_mm":0.9}})";
+  std::ofstream(dir + "/long_name.json") << R"({"shape":{"type":"mesh","file":")" << std::string(5000, 'a')
+                                         << R"(.step"},"electrodes":[{"at_mm":[0,0,0]},{"at_mm":[1,0,0]}]})";
+  std::ofstream(dir + "/obj.json")
+      << R"({"shape":{"type":"mesh","file":"sheet.obj"},"electrodes":[{"at_mm":[0,0,0]}]})";
+  std::ofstream(dir + "/closed.json")
+      << R"({"shape":{"type":"mesh","file":")" << test::source_path("tests/data/cad/closed_sphere.step")
+      << R"("},"electrodes":[{"at_mm":[10,0,0]},{"at_mm":[0,10,0]},{"at_mm":[-10,0,0]}]})";
   const auto with_paths = [&](std::string text) {
     for (auto [from, to] : {std::pair<std::string, std::string>{"OUT", out}, {"DIR", dir}})
       for (std::size_t at; (at = text.find(from)) != std::string::npos;) text.replace(at, from.size(), to);
@@ -839,6 +868,22 @@ INSTANTIATE_TEST_SUITE_P(
                "folder holds), got \"99999999999999999999\""},
         BadRun{"plots over a file", "eval --sheet 30 --quick --plots DIR/a_file",
                "--plots DIR/a_file: cannot create the folder"},
+        BadRun{"NaN corner in an STL", "mesh --sensor DIR/nan_stl.json --out OUT",
+               "nan.stl\": triangle 0 (line 2): corner 0 is (nan, 0, 0), not finite numbers"},
+        BadRun{"STL of 1.2 M triangles", "mesh --sensor DIR/big_stl.json --out OUT",
+               "big.stl\": a binary STL of 1200000 triangles (its header says), beyond the limit of 1e+06 triangles"},
+        BadRun{"msh beyond max triangles", "mesh --sensor DIR/grid_msh.json --max-triangles 1 --out OUT",
+               "grid.msh\": line 18, $Elements: 2 triangles or more (an element block's header), beyond the limit of 1 "
+               "triangles"},
+        BadRun{"1000 electrodes on a dome", "mesh --sensor DIR/dome1000.json --out OUT",
+               "beyond the limit of 1e+06 triangles: use fewer or wider-spaced electrodes, or fewer polygon points"},
+        BadRun{"a CAD file name of 5000 characters", "mesh --sensor DIR/long_name.json --out OUT",
+               "\": the CAD file's name is too long for the file system (5"},
+        BadRun{"an obj sheet", "mesh --sensor DIR/obj.json --out OUT",
+               "shape.file: \"sheet.obj\" is a \".obj\" file: a sheet's file is a Gmsh mesh (.msh), an STL surface "
+               "(.stl) or CAD (.step, .stp, .iges, .igs)"},
+        BadRun{"a closed STEP solid", "mesh --sensor DIR/closed.json --out OUT",
+               "closed_sphere.step\": the CAD surface is closed"},
         BadRun{"frames from dev zero",
                "reconstruct --reference DIR/ref.csv --frames /dev/zero --contacts OUT --no-cache",
                "/dev/zero:1: line longer than 1024 KiB"},

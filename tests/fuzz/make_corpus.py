@@ -199,6 +199,160 @@ def recording_seeds():
     }
 
 
+def stl_ascii(triangles, name="sheet", indent=True):
+    pad = (lambda k: " " * k) if indent else (lambda k: "")
+    out = "solid %s\n" % name
+    for t in triangles:
+        out += pad(1) + "facet normal 0 0 1\n" + pad(2) + "outer loop\n"
+        out += "".join(pad(3) + "vertex %s %s %s\n" % tuple(v) for v in t)
+        out += pad(2) + "endloop\n" + pad(1) + "endfacet\n"
+    return (out + "endsolid %s\n" % name).encode()
+
+
+def stl_binary(triangles, header=b"binary STL from make_corpus.py"):
+    out = header.ljust(80, b" ")[:80] + struct.pack("<I", len(triangles))
+    for t in triangles:
+        out += struct.pack("<3f", 0, 0, 1) + b"".join(struct.pack("<3f", *v) for v in t) + b"\0\0"
+    return out
+
+
+def square_grid(n, size_mm, z=lambda x, y: 0.0):
+    """n × n squares of a size_mm sheet, two triangles each, counter-clockwise from +z."""
+    h = size_mm / n
+    p = lambda i, j: (i * h, j * h, z(i * h, j * h))
+    tris = []
+    for i in range(n):
+        for j in range(n):
+            tris += [(p(i, j), p(i + 1, j), p(i + 1, j + 1)), (p(i, j), p(i + 1, j + 1), p(i, j + 1))]
+    return tris
+
+
+def stl_file_seeds():
+    """What an STL sheet's file is (README "Sensor description": ASCII or binary), and the mistakes
+    emit refuses before Gmsh reads it (mesh/stl_file_check.hpp)."""
+    grid = square_grid(4, 20)
+    dome = square_grid(6, 12, z=lambda x, y: 5 - 0.02 * ((x - 6) ** 2 + (y - 6) ** 2))
+    nan = [list(t) for t in grid]
+    nan[0] = [("nan", 0, 0)] + list(grid[0][1:])
+    collinear = list(grid) + [((0, 0, 0), (1, 1, 0), (2, 2, 0))]
+    two_solids = stl_ascii(grid[:8], "a") + stl_ascii(grid[8:], "b")
+    big_header = stl_binary(grid[:2])[:80] + struct.pack("<I", 1200000) + stl_binary(grid[:2])[84:]
+    return {
+        "ascii_grid.stl": stl_ascii(grid),
+        "ascii_dome_unindented.stl": stl_ascii(dome, indent=False),
+        "ascii_crlf_uppercase.stl": stl_ascii(grid[:4]).replace(b"\n", b"\r\n").upper(),
+        "ascii_two_solids.stl": two_solids,
+        "ascii_no_endsolid.stl": stl_ascii(grid[:3]).replace(b"endsolid sheet\n", b""),
+        "binary_grid.stl": stl_binary(grid),
+        "binary_dome.stl": stl_binary(dome),
+        "binary_header_says_solid.stl": stl_binary(grid[:6], header=b"solid exported by a CAD tool"),
+        "broken_nan_vertex.stl": stl_ascii(nan),
+        "broken_zero_area.stl": stl_ascii(collinear),
+        "broken_binary_nan.stl": stl_binary([((float("nan"), 0, 0), (1, 0, 0), (0, 1, 0))] + grid[:2]),
+        "broken_binary_count_1200000.stl": big_header,
+        "broken_binary_cut_short.stl": stl_binary(grid)[:-7],
+        "broken_blank_line.stl": stl_ascii(grid[:2]).replace(b"endfacet\n", b"endfacet\n\n", 1),
+        "broken_long_line.stl": stl_ascii(grid[:2]).replace(b"vertex 0.0", b"vertex 0." + b"0" * 300, 1),
+        "broken_empty_solid.stl": b"solid empty\nendsolid empty\n",
+        "broken_empty.stl": b"",
+    }
+
+
+def msh41_ascii(nodes, triangles, lines=()):
+    """A .msh 4.1 ASCII file: the nodes on one surface, its triangles, and 2-node lines."""
+    out = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 %d 1 %d\n2 1 0 %d\n" % (len(nodes), len(nodes), len(nodes))
+    out += "".join("%d\n" % (k + 1) for k in range(len(nodes)))
+    out += "".join("%r %r %r\n" % tuple(p) for p in nodes) + "$EndNodes\n"
+    blocks = [(2, 1, 2, triangles)] + ([(1, 1, 1, lines)] if lines else [])
+    out += "$Elements\n%d %d 1 %d\n" % (len(blocks), len(triangles) + len(lines), len(triangles) + len(lines))
+    tag = 1
+    for dim, entity, kind, elements in blocks:
+        out += "%d %d %d %d\n" % (dim, entity, kind, len(elements))
+        for e in elements:
+            out += "%d %s\n" % (tag, " ".join(str(v + 1) for v in e))
+            tag += 1
+    return (out + "$EndElements\n").encode()
+
+
+def msh41_binary(nodes, triangles):
+    n = len(nodes)
+    out = b"$MeshFormat\n4.1 1 8\n" + struct.pack("<i", 1) + b"\n$EndMeshFormat\n$Nodes\n"
+    out += struct.pack("<4Q", 1, n, 1, n) + struct.pack("<3iQ", 2, 1, 0, n)
+    out += struct.pack("<%dQ" % n, *range(1, n + 1)) + b"".join(struct.pack("<3d", *p) for p in nodes)
+    out += b"\n$EndNodes\n$Elements\n" + struct.pack("<4Q", 1, len(triangles), 1, len(triangles))
+    out += struct.pack("<3iQ", 2, 1, 2, len(triangles))
+    out += b"".join(struct.pack("<4Q", k + 1, *(v + 1 for v in t)) for k, t in enumerate(triangles))
+    return out + b"\n$EndElements\n"
+
+
+def msh22(nodes, triangles, binary=False):
+    if not binary:
+        out = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes)
+        out += "".join("%d %r %r %r\n" % ((k + 1,) + tuple(p)) for k, p in enumerate(nodes))
+        out += "$EndNodes\n$Elements\n%d\n" % len(triangles)
+        out += "".join("%d 2 2 1 1 %s\n" % (k + 1, " ".join(str(v + 1) for v in t)) for k, t in enumerate(triangles))
+        return (out + "$EndElements\n").encode()
+    out = b"$MeshFormat\n2.2 1 8\n" + struct.pack("<i", 1) + b"\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes)
+    out += b"".join(struct.pack("<i3d", k + 1, *p) for k, p in enumerate(nodes))
+    out += b"\n$EndNodes\n$Elements\n%d\n" % len(triangles) + struct.pack("<3i", 2, len(triangles), 2)
+    out += b"".join(struct.pack("<6i", k + 1, 1, 1, *(v + 1 for v in t)) for k, t in enumerate(triangles))
+    return out + b"\n$EndElements\n"
+
+
+def msh_file_seeds():
+    """Gmsh's .msh 4.1 and 2.2, ASCII and binary (Gmsh's reference manual, "MSH file format"), and
+    the mistakes emit refuses before Gmsh reads it (mesh/msh_file_check.hpp)."""
+    n = 3
+    nodes = [(i * 10.0 / n, j * 10.0 / n, 0.0) for j in range(n + 1) for i in range(n + 1)]
+    at = lambda i, j: j * (n + 1) + i
+    tris = [t for i in range(n) for j in range(n)
+            for t in ((at(i, j), at(i + 1, j), at(i + 1, j + 1)), (at(i, j), at(i + 1, j + 1), at(i, j + 1)))]
+    border = [(at(i, 0), at(i + 1, 0)) for i in range(n)]
+    named = msh41_ascii(nodes, tris, border).replace(
+        b"$Nodes", b"$PhysicalNames\n1\n1 1 \"electrode 0\"\n$EndPhysicalNames\n$Nodes", 1)
+    nan = list(nodes)
+    nan[5] = (float("nan"), nan[5][1], 0.0)
+    return {
+        "v41_ascii.msh": msh41_ascii(nodes, tris),
+        "v41_ascii_lines_names.msh": named,
+        "v41_binary.msh": msh41_binary(nodes, tris),
+        "v22_ascii.msh": msh22(nodes, tris),
+        "v22_binary.msh": msh22(nodes, tris, binary=True),
+        "broken_nan_node.msh": msh41_ascii(nan, tris),
+        "broken_count_1200000.msh": msh41_ascii(nodes, tris).replace(b"2 1 2 18\n", b"2 1 2 1200000\n"),
+        "broken_nodes_1e12.msh": msh41_ascii(nodes, tris).replace(b"1 16 1 16\n", b"1 1000000000000 1 16\n"),
+        "broken_cut_short.msh": msh41_ascii(nodes, tris)[:-60],
+        "broken_v40.msh": msh41_ascii(nodes, tris).replace(b"4.1 0 8", b"4 0 8"),
+        "broken_unknown_type.msh": msh22(nodes, tris).replace(b" 2 2 1 1 ", b" 99 2 1 1 ", 1),
+        "broken_empty.msh": b"",
+    }
+
+
+def excitation_json_seeds():
+    """The first byte is the electrode count − 3 (excitation_json_fuzz.cpp), the rest the block."""
+    def seed(electrodes, block):
+        return bytes([electrodes - 3]) + (block if isinstance(block, bytes) else json.dumps(block).encode())
+
+    return {
+        "adjacent_n16.json": seed(16, {"drive": "adjacent", "measure": "adjacent", "current_A": 0.001}),
+        "opposite_skip_n8.json": seed(8, {"drive": "opposite", "skip_driving_electrodes": True}),
+        "skip2_lists_n8.json": seed(8, {"drive": "skip-2", "measure": [[1, 0], [3, 2]],
+                                        "contact_impedance_ohm_mm": [1, 2, 3, 4, 5, 6, 7, 8]}),
+        "pairs_readings_n8.json": seed(8, {"drive": [[0, 4], [2, 6]], "readings": [[1, 3, 2], [0, 5, 1]],
+                                           "frequency_Hz": 1000}),
+        "one_impedance_n32.json": seed(32, {"drive": "skip-4", "contact_impedance_ohm_mm": 50}),
+        "broken_pattern.json": seed(8, {"drive": "diagonal"}),
+        "broken_electrode_9_of_8.json": seed(8, {"drive": [[0, 9]]}),
+        "broken_same_electrode.json": seed(8, {"drive": [[3, 3]]}),
+        "broken_both_lists.json": seed(8, {"drive": "adjacent", "readings": [[0, 1, 2]], "measure": "adjacent"}),
+        "broken_no_reading.json": seed(3, {"drive": "adjacent", "measure": [[1, 0]], "skip_driving_electrodes": True}),
+        "broken_impedance_count.json": seed(8, {"drive": "adjacent", "contact_impedance_ohm_mm": [1, 2]}),
+        "broken_reading_drive.json": seed(8, {"drive": "adjacent", "readings": [[8, 1, 2]]}),
+        "broken_not_object.json": seed(8, [1, 2, 3]),
+        "broken_big_number.json": seed(8, b'{"drive": "adjacent", "current_A": 1e999}'),
+    }
+
+
 def main():
     targets = {
         "packet_decoder_fuzz": packet_decoder_seeds(),
@@ -207,6 +361,9 @@ def main():
         "presses_csv_fuzz": presses_csv_seeds(),
         "calibration_json_fuzz": calibration_json_seeds(),
         "recording_fuzz": recording_seeds(),
+        "stl_file_fuzz": stl_file_seeds(),
+        "msh_file_fuzz": msh_file_seeds(),
+        "excitation_json_fuzz": excitation_json_seeds(),
     }
     for target, seeds in targets.items():
         corpus = os.path.join(HERE, "corpus", target)

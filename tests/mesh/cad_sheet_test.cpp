@@ -144,5 +144,63 @@ TEST(CadSheet, BadElectrodePointsAndFilesAreRefusedInOneLine) {
             "sensor: electrodes[0].at_mm: must be a point [x, y, z] in mm, got [8.4853,0]");
 }
 
+// A closed STEP solid (a sphere; tests/data/cad/closed_sphere.step, written by Gmsh's OpenCASCADE)
+// has no border: its electrodes were "no border curve within 0.5 mm (the nearest is inf mm away)".
+TEST(CadSheet, AClosedSurfaceIsRefusedSayingWhatIsExpected) {
+  const nlohmann::json j = {{"shape",
+                             {{"type", "mesh"}, {"file", test::source_path("tests/data/cad/closed_sphere.step")}}},
+                            {"electrodes",
+                             {{{"at_mm", {10, 0, 0}}}, {{"at_mm", {0, 10, 0}}}, {{"at_mm", {-10, 0, 0}}}}}};
+  const Sensor sensor = parse_sensor(j);
+  const std::string error = test::error_of([&] { generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  EXPECT_NE(error.find("closed_sphere.step\": the CAD surface is closed (a solid's skin, or a closed shell): it has no "
+                       "open border for the electrodes; the sheet must be an open surface"),
+            std::string::npos)
+      << error;
+  EXPECT_EQ(error.find("inf mm"), std::string::npos) << error;
+}
+
+// A word where a STEP number should be (a coordinate "NAN"): OpenCASCADE printed "Incorrect Syntax"
+// to the terminal and ran on for over a minute. emit reads the file's words first and names the line.
+TEST(CadSheet, AStepFileThatIsNotStepIsRefusedNamingTheLine) {
+  const std::string dir = test::temp_folder("cad_sheet_step_words");
+  std::string step = test::read_text(test::source_path("examples/sensors/fingertip.step"));
+  const std::string point = "CARTESIAN_POINT('',(-15.,8.485281374238,3.))";
+  ASSERT_NE(step.find(point), std::string::npos);
+  const std::size_t line =
+      static_cast<std::size_t>(std::count(step.begin(), step.begin() + step.find(point), '\n')) + 1;
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(test::source_path("examples/sensors/fingertip.json")));
+  const auto meshed = [&](const std::string& text) {
+    std::ofstream(dir + "/sheet.step") << text;
+    j["shape"]["file"] = dir + "/sheet.step";
+    const Sensor sensor = parse_sensor(j);
+    return test::error_of([&] { generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  };
+  std::string nan = step;
+  nan.replace(nan.find(point), point.size(), "CARTESIAN_POINT('',(-15.,NAN,3.))");
+  EXPECT_EQ(meshed(nan), "\"" + dir + "/sheet.step\": line " + std::to_string(line) +
+                             ": \"NAN\" stands where a value should be (a keyword is followed by \"(\") (not a STEP "
+                             "file, ISO 10303-21)");
+  std::string huge = step;
+  huge.replace(huge.find(point), point.size(), "CARTESIAN_POINT('',(-15.,1.E999,3.))");
+  EXPECT_NE(meshed(huge).find("line " + std::to_string(line) + ": the number \"1.E999\" is not finite"),
+            std::string::npos)
+      << meshed(huge);
+  EXPECT_NE(meshed(step.substr(0, step.find(point)) + "CARTESIAN_POINT('cut").find("the file ends inside a string"),
+            std::string::npos);
+}
+
+// A CAD file's name of 5,000 characters: the file system refused it and the message's reason was
+// empty ("meshing s: "). Now it says so, quoting the name's start.
+TEST(CadSheet, AFileNameTooLongIsSaidSo) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(test::source_path("examples/sensors/fingertip.json")));
+  j["shape"]["file"] = std::string(5000, 'a') + ".step";
+  const Sensor sensor = parse_sensor(j, "s.json", "/tmp");
+  const std::string error = test::error_of([&] { generate_mesh(sensor, reconstruction_mesh_options(sensor)); });
+  EXPECT_EQ(error, "\"/tmp/" + std::string(35, 'a') +
+                       "...\": the CAD file's name is too long for the file system (5010 characters; at most 255 "
+                       "between slashes, 4095 in all)");
+}
+
 }  // namespace
 }  // namespace emit

@@ -2,9 +2,12 @@
 // STL (each triangle with its own three vertices, as STL has it) is read back as one surface with
 // its 16 electrodes of 3 mm placed on its border by point and width, exactly 3 mm along it; a
 // press on it is fitted on the surface; bad electrodes are refused in one line.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -107,6 +110,71 @@ TEST(StlSheet, BadElectrodesAreRefusedInOneLine) {
   EXPECT_EQ(test::error_of([&] { parse_sensor(no_width); }), "sensor: electrodes[1].width_mm: missing");
   nlohmann::json missing = stl_fingertip(dir + "/none.stl", 3);
   EXPECT_NE(read(missing).find("none.stl\": no such STL file"), std::string::npos) << read(missing);
+}
+
+/// A 20 mm square of n × n squares, two triangles each, as ASCII STL; corner 0 of triangle `nan_at`
+/// (if ≥ 0) not a number.
+std::string square_stl(int n, int nan_at = -1) {
+  std::string text = "solid square\n";
+  const double h = 20.0 / n;
+  int t = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (const auto& corners : {std::array<std::array<int, 2>, 3>{{{i, j}, {i + 1, j}, {i + 1, j + 1}}},
+                                  std::array<std::array<int, 2>, 3>{{{i, j}, {i + 1, j + 1}, {i, j + 1}}}}) {
+        text += "facet normal 0 0 1\nouter loop\n";
+        for (int k = 0; k < 3; ++k)
+          text += (t == nan_at && k == 0 ? std::string("vertex nan 0 0")
+                                         : "vertex " + std::to_string(corners[k][0] * h) + " " +
+                                               std::to_string(corners[k][1] * h) + " 0") +
+                  "\n";
+        text += "endloop\nendfacet\n";
+        ++t;
+      }
+  return text + "endsolid square\n";
+}
+
+nlohmann::json square_sheet(const std::string& stl) {
+  nlohmann::json electrodes = nlohmann::json::array();
+  for (const auto& [x, y] : {std::pair{10, 0}, {20, 10}, {10, 20}, {0, 10}})
+    electrodes.push_back({{"at_mm", {x, y, 0}}, {"width_mm", 2}});
+  return {{"name", "square"}, {"shape", {{"type", "mesh"}, {"file", stl}}}, {"electrodes", electrodes}};
+}
+
+// One NaN corner failed an assertion inside Gmsh's STL reader: the process aborted (exit 134), a
+// Python interpreter with it. emit reads the file first and names the triangle.
+TEST(StlSheet, ACornerThatIsNotANumberIsRefusedBeforeGmshReadsIt) {
+  const std::string dir = test::temp_folder("stl_sheet_nan");
+  std::ofstream(dir + "/nan.stl") << square_stl(4, 0);
+  const Sensor sensor = parse_sensor(square_sheet(dir + "/nan.stl"));
+  EXPECT_EQ(test::error_of([&] { read_stl_sheet(sensor); }),
+            "\"" + dir + "/nan.stl\": triangle 0 (line 2): corner 0 is (nan, 0, 0), not finite numbers");
+  EXPECT_EQ(test::error_of([&] { with_sheet_surface(sensor); }),
+            "\"" + dir + "/nan.stl\": triangle 0 (line 2): corner 0 is (nan, 0, 0), not finite numbers");
+  std::ofstream(dir + "/good.stl") << square_stl(4);
+  EXPECT_EQ(read_stl_sheet(parse_sensor(square_sheet(dir + "/good.stl"))).electrode_count(), 4);
+}
+
+// mesh.max_triangles (and emit mesh --max-triangles, through MeshOptions) held for drawn sheets
+// only: an STL of any size was read whole. It holds for a file's sheet too, counted as it is read.
+TEST(StlSheet, TheTriangleLimitHoldsForAnStlSheet) {
+  const std::string dir = test::temp_folder("stl_sheet_limit");
+  std::ofstream(dir + "/square.stl") << square_stl(10);  // 200 triangles
+  nlohmann::json j = square_sheet(dir + "/square.stl");
+  j["mesh"] = {{"max_triangles", 100}};
+  EXPECT_NE(test::error_of([&] {
+              with_sheet_surface(parse_sensor(j));
+            }).find("square.stl\": more than 100 triangles (line 702), beyond the limit of 100 triangles"),
+            std::string::npos)
+      << test::error_of([&] { with_sheet_surface(parse_sensor(j)); });
+  j["mesh"] = {{"max_triangles", 1000}};
+  const Sensor sensor = with_sheet_surface(parse_sensor(j));
+  MeshOptions options = reconstruction_mesh_options(sensor);
+  options.max_triangles = 150;
+  EXPECT_NE(test::error_of([&] { generate_mesh(sensor, options); }).find("beyond the limit of 150 triangles"),
+            std::string::npos);
+  options.max_triangles = 200;  // the file's 200, and then the electrodes' ends split a few more
+  EXPECT_GE(generate_mesh(sensor, options).triangle_count(), 200);
 }
 
 }  // namespace

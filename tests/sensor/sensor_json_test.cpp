@@ -1,6 +1,7 @@
 // Sensor descriptions: the default layout rule, the examples, and every validation error.
 #include "emit/sensor/sensor_json.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <numbers>
 #include <regex>
@@ -258,6 +259,36 @@ INSTANTIATE_TEST_SUITE_P(
                   j["electrodes"] = {{"count", 8}, {"width_mm", 1}};
                 },
                 "must not cross or touch itself"},
+        // Checking 200,000 points for crossings took over a minute (every pair of edges).
+        BadCase{"polygon of 200,000 points",
+                [](json& j) {
+                  json points = json::array();
+                  for (int k = 0; k < 200000; ++k)
+                    points.push_back({30 + 25 * std::cos(k * 2 * std::numbers::pi / 200000),
+                                      30 + 25 * std::sin(k * 2 * std::numbers::pi / 200000)});
+                  j["shape"] = {{"type", "polygon"}, {"points_mm", points}};
+                },
+                "shape.points_mm: 200000 points, more than the 20000 a polygon may have: simplify the outline"},
+        // A file of another kind was taken for a .msh: "a .msh sensor takes its electrodes from the
+        // file's curves".
+        BadCase{"an .obj sheet",
+                [](json& j) {
+                  j["shape"] = {{"type", "mesh"}, {"file", "sheet.obj"}};
+                  j["electrodes"] = {{{"at_mm", {0, 0, 0}}}, {{"at_mm", {1, 0, 0}}}};
+                },
+                "shape.file: \"sheet.obj\" is a \".obj\" file: a sheet's file is a Gmsh mesh (.msh), an STL surface "
+                "(.stl) or CAD (.step, .stp, .iges, .igs)"},
+        BadCase{"a .brep sheet",
+                [](json& j) {
+                  j["shape"] = {{"type", "mesh"}, {"file", "cad/sheet.brep"}};
+                },
+                "shape.file: \"cad/sheet.brep\" is a \".brep\" file: a sheet's file is a Gmsh mesh (.msh)"},
+        BadCase{"a sheet file without an extension",
+                [](json& j) {
+                  j["shape"] = {{"type", "mesh"}, {"file", "sheet"}};
+                  j["electrodes"] = {{{"at_mm", {0, 0, 0}}}, {{"at_mm", {1, 0, 0}}}};
+                },
+                "shape.file: \"sheet\" has no extension: a sheet's file is a Gmsh mesh (.msh), an STL surface"},
         // The width's rounding used to be reported as electrodes "touching".
         BadCase{"electrode wider than the border", [](json& j) { j["electrodes"]["width_mm"] = 1e300; },
                 "longer than the whole border"},

@@ -4,14 +4,17 @@
 #include <string>
 
 #include "emit/mesh/mesh.hpp"
+#include "emit/sensor/sensor.hpp"
 
 namespace emit {
 
-/// Read a .msh file (any version Gmsh reads). Electrodes come from physical curves named
+/// Read a .msh file (version 4.1 or 2.2, ASCII or binary), checked by emit before Gmsh reads it
+/// (msh_file_check.hpp: counts, finite coordinates, at most max_triangles triangles), and its
+/// triangles then checked to have an area. Electrodes come from physical curves named
 /// "electrode 0" … "electrode N-1". The mesh comes out numbered for locality (sort_for_locality.hpp).
-/// \throw IoError if the file is missing; InvalidInput if it is malformed, has no triangles, or
-/// lacks electrode groups.
-Mesh read_msh(const std::string& path);
+/// \throw IoError if the file is missing; InvalidInput naming the file if it is malformed, has no
+/// triangles or more than max_triangles, a triangle of zero area, or lacks electrode groups.
+Mesh read_msh(const std::string& path, double max_triangles = MeshSpec{}.max_triangles);
 
 /// Write the mesh as .msh 4.1 via a temporary file renamed into place, so a failed write never
 /// leaves a half file over a good one. \throw IoError.

@@ -43,8 +43,13 @@ struct Shape {
 /// Whether a mesh file is CAD (STEP or IGES, by its extension, any case), which Gmsh's
 /// OpenCASCADE kernel reads and emit meshes, rather than a Gmsh mesh.
 bool is_cad_file(const std::string& path);
+/// Whether a CAD file is STEP (.step, .stp, any case), rather than IGES.
+bool is_step_file(const std::string& path);
 /// Whether a mesh file is an STL surface (by its extension, any case): its triangles are the mesh.
 bool is_stl_file(const std::string& path);
+/// Whether a mesh file is a Gmsh mesh (.msh, any case): its triangles and "electrode <i>" curves
+/// are the mesh. A sheet's file is one of the three kinds (sensor_json.hpp refuses any other).
+bool is_msh_file(const std::string& path);
 
 /// One electrode: an arc-length interval of the border, [start_s_mm, start_s_mm + width_mm]
 /// (wrapping past the end of the border if need be).

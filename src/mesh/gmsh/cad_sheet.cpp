@@ -1,15 +1,13 @@
 #include "cad_sheet.hpp"
 
-#include <cctype>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 
 #include <gmsh.h>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "sheet_file_access.hpp"
 
 namespace emit::detail {
 
@@ -24,27 +22,12 @@ std::string point_text(const Vector3& p) {
   return text;
 }
 
-/// A readable file, and for STEP one that begins as the standard says (OpenCASCADE's parser
-/// prints its complaints about anything else to the terminal).
-void check_cad_file(const std::string& path, const std::string& file) {
-  if (!std::filesystem::is_regular_file(path)) throw IoError(file + ": no such CAD file");
-  std::ifstream in(path);
-  if (!in) throw IoError(file + ": cannot read CAD file");
-  const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension.size() == 4 || extension.size() == 5) {  // .stp, .step (any case)
-    std::string first;
-    std::getline(in, first);
-    const bool step = std::tolower(static_cast<unsigned char>(extension[1])) == 's';
-    if (step && first.rfind("ISO-10303-21;", 0) != 0)
-      throw InvalidInput(file + ": not a STEP file (its first line is not \"ISO-10303-21;\")");
-  }
-}
-
 }  // namespace
 
 double import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_tags) {
   const std::string file = quote_input(sensor.shape.mesh_path, 120);
-  check_cad_file(sensor.shape.mesh_path, file);
+  // emit has read a STEP file itself first (mesh/step_file_check.hpp, from generate_mesh).
+  check_sheet_file_access(sensor.shape.mesh_path, "CAD file");
   // A STEP file from Gmsh (or many CAD tools) writes each face as its own part, its shared edges
   // twice: sewn, the faces share them, and the mesh is one sheet. The file's numbers are taken as
   // mm (Geometry.OCCTargetUnit left empty: no conversion).
@@ -59,6 +42,12 @@ double import_cad_sheet(const Sensor& sensor, std::vector<int>& electrode_end_ta
     throw InvalidInput(file + ": the CAD file holds a solid; export only the skin's faces (the sheet is a surface)");
   // The outer border: the curves that bound exactly one of the surfaces.
   gmsh::model::getBoundary(surfaces, border, /*combined=*/true, /*oriented=*/false, /*recursive=*/false);
+  // A closed surface (a solid's skin, sewn from its faces, or a sphere) has no border at all.
+  if (border.empty())
+    throw InvalidInput(file +
+                       ": the CAD surface is closed (a solid's skin, or a closed shell): it has no open border "
+                       "for the electrodes; the sheet must be an open surface, its border where the skin ends: "
+                       "export only the skin's faces");
   std::vector<int> taken(sensor.shape.electrode_at_mm.size(), -1);
   for (std::size_t e = 0; e < sensor.shape.electrode_at_mm.size(); ++e) {
     const Vector3& at = sensor.shape.electrode_at_mm[e];

@@ -8,48 +8,18 @@
 
 #include <gmsh.h>
 
+#include "border_breakpoints.hpp"
 #include "cad_sheet.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/mesh/cylinder.hpp"
 #include "emit/sensor/surface.hpp"
 #include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
+#include "triangle_estimate.hpp"
 
 namespace emit::detail {
 
 namespace {
-
-/// A point where the border mesh must have a node: a corner, a quarter of a circle, or an
-/// electrode's end.
-struct Breakpoint {
-  double s_mm;
-  bool electrode_end;
-};
-
-std::vector<Breakpoint> border_breakpoints(const Border& border, const std::vector<Electrode>& electrodes) {
-  std::vector<Breakpoint> points;
-  for (const auto& piece : border.pieces()) points.push_back({piece.start_s_mm, false});
-  for (const auto& e : electrodes) {
-    points.push_back({wrap_arclength(e.center_s_mm - 0.5 * e.width_mm, border.length_mm()), true});
-    points.push_back({wrap_arclength(e.center_s_mm + 0.5 * e.width_mm, border.length_mm()), true});
-  }
-  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.s_mm < b.s_mm; });
-  // Merge points closer than a tiny fraction of the border (an electrode ending on a corner).
-  const double merge_mm = 1e-9 * border.length_mm();
-  std::vector<Breakpoint> merged;
-  for (const auto& p : points) {
-    if (!merged.empty() && p.s_mm - merged.back().s_mm <= merge_mm) {
-      merged.back().electrode_end = merged.back().electrode_end || p.electrode_end;
-      continue;
-    }
-    merged.push_back(p);
-  }
-  if (merged.size() > 1 && merged.front().s_mm + border.length_mm() - merged.back().s_mm <= merge_mm) {
-    merged.front().electrode_end = merged.front().electrode_end || merged.back().electrode_end;
-    merged.pop_back();
-  }
-  return merged;
-}
 
 /// The electrode whose interval holds arc length s, or -1.
 int electrode_at(const Border& border, const std::vector<Electrode>& electrodes, double s_mm) {
@@ -184,7 +154,7 @@ Mesh gmsh_mesh_sheet(const Sensor& sensor, const MeshOptions& flat) {
     if (cad) {
       // A CAD surface's area is known once read: its estimate is checked before meshing.
       const double area_mm2 = import_cad_sheet(sensor, electrode_ends);
-      check_triangle_estimate(sensor, flat, area_mm2 / triangle_area_mm2(flat.element_size_mm));
+      check_cad_triangle_estimate(sensor, flat, area_mm2);
     } else {
       build_geometry(sensor, flat, electrode_ends);
     }

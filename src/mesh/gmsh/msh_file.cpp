@@ -1,19 +1,16 @@
 // Gmsh .msh files read and written by Gmsh (mesh/mesh_io.hpp, through ../gmsh_mesher.hpp).
-#include <filesystem>
-#include <fstream>
-
 #include <gmsh.h>
 
 #include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
+#include "sheet_file_access.hpp"
 
 namespace emit::detail {
 
 Mesh gmsh_read_msh(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw IoError(path + ": no such mesh file");
-  if (!std::ifstream(path)) throw IoError(path + ": cannot read mesh file");
+  check_sheet_file_access(path, "mesh file");
   GmshSession gmsh_session;
   gmsh_session.run<InvalidInput>(path + ": not a valid Gmsh mesh", [&] { gmsh::open(path); });
   return gmsh_session.extract_mesh(path);

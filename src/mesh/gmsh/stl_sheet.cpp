@@ -1,7 +1,6 @@
 // An STL sheet read by Gmsh (mesh/stl_sheet.hpp read_stl_sheet, through ../gmsh_mesher.hpp).
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 
 #include <gmsh.h>
@@ -13,6 +12,7 @@
 #include "emit/sensor/height_field.hpp"
 #include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
+#include "sheet_file_access.hpp"
 
 namespace emit::detail {
 
@@ -85,7 +85,7 @@ int node_at(Mesh& mesh, BorderLoop& b, double s_mm) {
 Mesh gmsh_read_stl_sheet(const Sensor& sensor) {
   const std::string& path = sensor.shape.mesh_path;
   const std::string file = quote_input(path, 120);
-  if (!std::filesystem::is_regular_file(path)) throw IoError(file + ": no such STL file");
+  check_sheet_file_access(path, "STL file");
   GmshSession gmsh_session;
   gmsh_session.run<InvalidInput>(file + ": not a valid STL file", [&] { gmsh::merge(path); });
   Mesh mesh = gmsh_session.extract_mesh(file, /*electrodes_required=*/false);
