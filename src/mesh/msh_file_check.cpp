@@ -291,8 +291,8 @@ std::int64_t read_elements(MshReader& r, double version, double max_triangles) {
                  " the header says");
         if (tags < 0 || tags > 1000) r.fail("elements of " + std::to_string(tags) + " tags each");
         if (type == 2) add_triangles(static_cast<std::uint64_t>(count), "an element block's header");
-        r.skip_values(static_cast<std::uint64_t>(count), static_cast<std::uint64_t>(1 + tags + nodes), 4,
-                      "an element block");
+        r.skip_values(static_cast<std::uint64_t>(count),
+                      1 + static_cast<std::uint64_t>(tags) + static_cast<std::uint64_t>(nodes), 4, "an element block");
         seen += static_cast<std::uint64_t>(count);
         continue;
       }
@@ -323,7 +323,7 @@ std::int64_t read_elements(MshReader& r, double version, double max_triangles) {
     if (count > elements - seen)
       r.fail("element blocks of more elements than the header's " + std::to_string(elements));
     if (type == 2) add_triangles(count, "an element block's header");
-    r.skip_values(count, static_cast<std::uint64_t>(1 + nodes), 8, "an element block");
+    r.skip_values(count, 1 + static_cast<std::uint64_t>(nodes), 8, "an element block");
     seen += count;
   }
   if (seen != elements)
@@ -345,11 +345,22 @@ MshFileSummary check_msh_file(const std::string& path, double max_triangles) {
     r.fail("not a Gmsh .msh file: it does not begin with \"$MeshFormat\"");
   r.set_section("$MeshFormat");
   if (!r.line(text)) r.fail("the file ends inside $MeshFormat");
-  char version_text[16] = "", extra[2] = "";
-  int file_type = -1, data_size = -1;
-  if (std::sscanf(text.c_str(), "%15s %d %d %1s", version_text, &file_type, &data_size, extra) != 3)
-    r.fail("expected \"version file-type data-size\", got " + quote_input(text, 40));
-  const std::string version(version_text);
+  // "version file-type data-size": three words, the last two whole numbers.
+  std::vector<std::string> words;
+  for (std::size_t i = 0; i < text.size();) {
+    while (i < text.size() && is_space(text[i])) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && !is_space(text[i])) ++i;
+    if (i > start) words.push_back(text.substr(start, i - start));
+  }
+  const auto whole = [](const std::string& word) {
+    char* end = nullptr;
+    const long value = std::strtol(word.c_str(), &end, 10);
+    return *end == '\0' && end != word.c_str() ? value : -1;
+  };
+  if (words.size() != 3) r.fail("expected \"version file-type data-size\", got " + quote_input(text, 40));
+  const std::string& version = words[0];
+  const long file_type = whole(words[1]), data_size = whole(words[2]);
   if (version == "4.1") summary.version = 4.1;
   else if (version == "2" || version == "2.0" || version == "2.1" || version == "2.2") summary.version = 2.2;
   else

@@ -261,7 +261,7 @@ std::int64_t read_binary(const std::string& path, const std::string& file, doubl
     if (!in.read(record, sizeof record)) throw InvalidInput(file + ": cut short in triangle " + std::to_string(t));
     Corners corners{};
     for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 3; ++d) corners[k][d] = float_at(record + 12 + 12 * k + 4 * d);
+      for (int d = 0; d < 3; ++d) corners[k][d] = float_at(record + static_cast<std::size_t>(12 + 12 * k + 4 * d));
     check_triangle(corners, file, "triangle " + std::to_string(t));
   }
   return static_cast<std::int64_t>(count);

@@ -167,8 +167,8 @@ TEST(CadSheet, AStepFileThatIsNotStepIsRefusedNamingTheLine) {
   std::string step = test::read_text(test::source_path("examples/sensors/fingertip.step"));
   const std::string point = "CARTESIAN_POINT('',(-15.,8.485281374238,3.))";
   ASSERT_NE(step.find(point), std::string::npos);
-  const std::size_t line =
-      static_cast<std::size_t>(std::count(step.begin(), step.begin() + step.find(point), '\n')) + 1;
+  const std::string before = step.substr(0, step.find(point));
+  const auto line = static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n')) + 1;
   nlohmann::json j = nlohmann::json::parse(std::ifstream(test::source_path("examples/sensors/fingertip.json")));
   const auto meshed = [&](const std::string& text) {
     std::ofstream(dir + "/sheet.step") << text;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -120,7 +121,7 @@ std::string msh22(const Grid& g, bool binary) {
 }
 
 std::string write(const std::string& dir, const std::string& name, const std::string& bytes) {
-  const std::string path = dir + "/" + name;
+  std::string path = dir + "/" + name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
@@ -128,15 +129,19 @@ std::string write(const std::string& dir, const std::string& name, const std::st
 TEST(MshFileCheck, VersionsAndEncodingsGmshWritesAreRead) {
   const std::string dir = test::temp_folder("msh_check_good");
   const Grid g = grid();
-  for (const auto& [name, bytes] : {std::pair{"a41.msh", msh41_ascii(g)}, std::pair{"b41.msh", msh41_binary(g)},
-                                    std::pair{"a22.msh", msh22(g, false)}, std::pair{"b22.msh", msh22(g, true)}}) {
-    const MshFileSummary msh = check_msh_file(write(dir, name, bytes), 1e6);
-    EXPECT_EQ(msh.node_count, 16) << name;
-    EXPECT_EQ(msh.triangle_count, 18) << name;
+  const std::vector<std::pair<std::string, std::string>> files = {{"a41.msh", msh41_ascii(g)},
+                                                                  {"b41.msh", msh41_binary(g)},
+                                                                  {"a22.msh", msh22(g, false)},
+                                                                  {"b22.msh", msh22(g, true)}};
+  for (const auto& file : files) {
+    const std::string path = write(dir, file.first, file.second);
+    const MshFileSummary msh = check_msh_file(path, 1e6);
+    EXPECT_EQ(msh.node_count, 16) << file.first;
+    EXPECT_EQ(msh.triangle_count, 18) << file.first;
     // Gmsh reads the same files: it finds their triangles, and no electrode curves (they have none).
-    EXPECT_NE(test::error_of([&] { read_msh(dir + "/" + name); }).find("no physical curves named \"electrode 0\""),
+    EXPECT_NE(test::error_of([&] { read_msh(path); }).find("no physical curves named \"electrode 0\""),
               std::string::npos)
-        << name;
+        << file.first;
   }
   // emit's own .msh (Gmsh's writer, 4.1 with entities and physical names) reads back whole.
   const Sensor sensor = default_sensor();

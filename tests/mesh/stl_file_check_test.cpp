@@ -66,7 +66,7 @@ std::string binary(const std::vector<Triangle>& triangles, const std::string& he
 }
 
 std::string write(const std::string& dir, const std::string& name, const std::string& bytes) {
-  const std::string path = dir + "/" + name;
+  std::string path = dir + "/" + name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }

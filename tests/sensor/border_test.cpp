@@ -57,7 +57,11 @@ TEST(Border, TheSweptCrossingCheckAgreesWithEveryPair) {
   for (int trial = 0; trial < 3000; ++trial) {
     const int n = 4 + static_cast<int>(random() % 9);
     std::vector<Vector2> points;
-    for (int k = 0; k < n; ++k) points.emplace_back(random() % 6, random() % 6);
+    points.reserve(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      const auto x = static_cast<double>(random() % 6);
+      points.emplace_back(x, static_cast<double>(random() % 6));
+    }
     bool repeated = false;
     for (int k = 0; k < n; ++k) repeated = repeated || points[k] == points[(k + 1) % n];
     double twice_area = 0;
@@ -77,6 +81,7 @@ TEST(Border, TheSweptCrossingCheckAgreesWithEveryPair) {
 TEST(Border, AFineOutlineIsCheckedAlongItsLength) {
   const std::size_t n = 20000;
   std::vector<Vector2> points;
+  points.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
     const double angle = 2 * std::numbers::pi * static_cast<double>(k) / static_cast<double>(n);
     points.emplace_back(30 + 25 * std::cos(angle), 30 + 25 * std::sin(angle));
