@@ -17,8 +17,8 @@ MeshReport run_mesh_job(const MeshJob& job) {
   Sensor described = job.sensor_path.empty() ? default_sensor() : load_sensor(job.sensor_path);
   if (job.max_triangles > 0) described.mesh.max_triangles = job.max_triangles;
   const Sensor sensor = with_sheet_surface(std::move(described));
-  check_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
-                {{"--out", job.out_path}});
+  auto outputs = open_outputs({{"--sensor", job.sensor_path}, {"--sensor's mesh file", sensor.shape.mesh_path}},
+                              {OutputRequest{{"--out", job.out_path}}});
   MeshOptions options = job.twin ? twin_mesh_options(sensor, job.seed) : reconstruction_mesh_options(sensor);
   if (job.element_size_mm > 0) options.element_size_mm = job.element_size_mm;
   if (job.max_triangles > 0) options.max_triangles = job.max_triangles;
@@ -29,7 +29,8 @@ MeshReport run_mesh_job(const MeshJob& job) {
   report.sensor_name = sensor.name;
   report.quality = measure_mesh_quality(mesh);
   report.electrodes = mesh.electrode_count();
-  write_msh(mesh, job.out_path);
+  write_msh(mesh, outputs[0]);
+  commit_outputs(outputs);
   return report;
 }
 

@@ -1,8 +1,12 @@
 #include "gmsh_mesher.hpp"
 
 #include <dlfcn.h>
+#include <stdlib.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -65,7 +69,29 @@ Mesh read_msh(const std::string& path, double max_triangles) {
   detail::refuse_zero_area_triangles(mesh, quote_input(path, 120));
   return mesh;
 }
-void write_msh(const Mesh& mesh, const std::string& path) { detail::gmsh_mesher().write_msh(mesh, path); }
+void write_msh(const Mesh& mesh, OutputFile& out) {
+  std::string folder = (std::filesystem::temp_directory_path() / "emit-msh-XXXXXX").string();
+  if (::mkdtemp(folder.data()) == nullptr)
+    throw IoError("cannot create a scratch folder for Gmsh in " + std::filesystem::temp_directory_path().string() +
+                  " (" + std::strerror(errno) + ")");
+  struct RemoveFolder {
+    std::string path;
+    ~RemoveFolder() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  } remove_folder{folder};
+  const std::string scratch = folder + "/mesh.msh";
+  detail::gmsh_mesher().write_msh(mesh, scratch);
+  std::ifstream in(scratch, std::ios::binary);
+  if (!in) throw IoError(scratch + ": Gmsh wrote no mesh file");
+  out.stream() << in.rdbuf();
+}
+void write_msh(const Mesh& mesh, const std::string& path) {
+  OutputFile out({"", path});
+  write_msh(mesh, out);
+  out.commit();
+}
 Mesh read_stl_sheet(const Sensor& sensor) {
   check_stl_file(sensor.shape.mesh_path, sensor.mesh.max_triangles);
   return detail::gmsh_mesher().read_stl_sheet(sensor);

@@ -18,7 +18,7 @@ struct GmshMesher {
   Mesh (*mesh_sheet)(const Sensor& sensor, const MeshOptions& options);
   Mesh (*read_stl_sheet)(const Sensor& sensor);
   Mesh (*read_msh)(const std::string& path);
-  void (*write_msh)(const Mesh& mesh, const std::string& path);
+  void (*write_msh)(const Mesh& mesh, const std::string& path);  ///< exactly at `path` (a scratch file)
 };
 
 /// The module's table, the module loaded on the first call: from emit/ beside the library (where

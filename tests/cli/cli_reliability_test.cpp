@@ -204,6 +204,12 @@ TEST(CliReliability, OutputsThatAreDevicesAreWrittenIntoNotReplaced) {
   r = run_emit(live + " --record " + full);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(last_line(r.err), "emit: --record " + full + ": write failed (No space left on device)") << r.err;
+  // Gmsh writes only files it names, by their extension: a scratch file, copied into the device.
+  r = run_emit("mesh --element-size-mm 6 --out " + null);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  r = run_emit("mesh --element-size-mm 6 --out " + full);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(last_line(r.err), "emit: --out " + full + ": write failed (No space left on device)") << r.err;
   EXPECT_TRUE(is_character_device(null));
   EXPECT_TRUE(is_character_device(full));
   EXPECT_EQ(names_in(dir), (std::set<std::string>{"cache", "f.csv", "f_presses.csv", "full", "null", "t.csv"}));

@@ -3,6 +3,7 @@
 /// Gmsh .msh files: the sheet's triangles, and one physical curve "electrode <i>" per electrode.
 #include <string>
 
+#include "emit/core/output_file.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/sensor/sensor.hpp"
 
@@ -16,8 +17,12 @@ namespace emit {
 /// triangles or more than max_triangles, a triangle of zero area, or lacks electrode groups.
 Mesh read_msh(const std::string& path, double max_triangles = MeshSpec{}.max_triangles);
 
-/// Write the mesh as .msh 4.1 via a temporary file renamed into place, so a failed write never
-/// leaves a half file over a good one. \throw IoError.
+/// Write the mesh as .msh 4.1 into an opened output (core/output_file.hpp: a regular file through
+/// a temporary file renamed on the caller's commit(), a device or FIFO written into). Gmsh writes
+/// only to files it names and picks the format from the name, so it writes a scratch file in a
+/// private temporary folder, which is copied into the output and removed. \throw IoError.
+void write_msh(const Mesh& mesh, OutputFile& out);
+/// The same into `path`, committed. \throw IoError.
 void write_msh(const Mesh& mesh, const std::string& path);
 
 }  // namespace emit

@@ -1,7 +1,6 @@
 // Gmsh .msh files read and written by Gmsh (mesh/mesh_io.hpp, through ../gmsh_mesher.hpp).
 #include <gmsh.h>
 
-#include "emit/core/atomic_file.hpp"
 #include "emit/core/errors.hpp"
 #include "gmsh_mesher.hpp"
 #include "gmsh_session.hpp"
@@ -17,7 +16,6 @@ Mesh gmsh_read_msh(const std::string& path) {
 }
 
 void gmsh_write_msh(const Mesh& mesh, const std::string& path) {
-  AtomicFile file(path, /*open_stream=*/false);
   GmshSession gmsh_session;
   gmsh_session.run<IoError>(path + ": cannot write mesh", [&] {
     gmsh::model::add("emit");
@@ -49,9 +47,8 @@ void gmsh_write_msh(const Mesh& mesh, const std::string& path) {
       gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {curve}), "electrode " + std::to_string(e));
     }
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::write(file.temp_path());
+    gmsh::write(path);
   });
-  file.commit();
 }
 
 }  // namespace emit::detail

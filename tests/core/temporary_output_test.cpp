@@ -1,6 +1,6 @@
-// Write-then-rename (core/atomic_file.hpp): the target changes only on commit, the temporary file
-// keeps the target's extension and goes away either way.
-#include "emit/core/atomic_file.hpp"
+// Write-then-rename, a regular file's output (core/output_file.hpp): the target changes only on commit, the temporary
+// file keeps the target's extension and goes away either way.
+#include "emit/core/output_file.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,30 +19,30 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(AtomicFile, TargetChangesOnlyOnCommit) {
+TEST(TemporaryOutput, TargetChangesOnlyOnCommit) {
   const std::string dir = test::temp_folder("atomic_commit");
   const std::string path = dir + "/out.csv";
   std::ofstream(path) << "old\n";
   {
-    AtomicFile file(path);
-    EXPECT_EQ(fs::path(file.temp_path()).parent_path(), fs::path(dir));
-    EXPECT_EQ(fs::path(file.temp_path()).extension(), ".csv");
+    OutputFile file({"", path});
+    EXPECT_EQ(fs::path(file.write_path()).parent_path(), fs::path(dir));
+    EXPECT_EQ(fs::path(file.write_path()).extension(), ".csv");
     file.stream() << "new\n";
     EXPECT_EQ(test::read_text(path), "old\n");
     file.commit();
-    EXPECT_FALSE(fs::exists(file.temp_path()));
+    EXPECT_FALSE(fs::exists(file.write_path()));
   }
   EXPECT_EQ(test::read_text(path), "new\n");
 }
 
-TEST(AtomicFile, AbandonedFileLeavesTheTargetAndNoTemporary) {
+TEST(TemporaryOutput, AbandonedFileLeavesTheTargetAndNoTemporary) {
   const std::string dir = test::temp_folder("atomic_abandon");
   const std::string path = dir + "/out.json";
   std::ofstream(path) << "old\n";
   std::string temp;
   {
-    AtomicFile file(path);
-    temp = file.temp_path();
+    OutputFile file({"", path});
+    temp = file.write_path();
     file.stream() << "half";
     EXPECT_TRUE(fs::exists(temp));
   }
@@ -52,16 +52,16 @@ TEST(AtomicFile, AbandonedFileLeavesTheTargetAndNoTemporary) {
 
 // Without a stream (a writer such as Gmsh writes the temporary path itself), commit renames
 // whatever is there; with nothing there, it says it cannot replace the file.
-TEST(AtomicFile, WithoutAStreamCommitRenamesWhatTheWriterWrote) {
+TEST(TemporaryOutput, WithoutAStreamCommitRenamesWhatTheWriterWrote) {
   const std::string dir = test::temp_folder("atomic_no_stream");
   const std::string path = dir + "/sheet.msh";
   {
-    AtomicFile file(path, false);
-    std::ofstream(file.temp_path()) << "mesh\n";
+    OutputFile file({"", path}, {.stream = false});
+    std::ofstream(file.write_path()) << "mesh\n";
     file.commit();
   }
   EXPECT_EQ(test::read_text(path), "mesh\n");
-  AtomicFile nothing(dir + "/none.msh", false);
+  OutputFile nothing({"", dir + "/none.msh"}, {.stream = false});
   try {
     nothing.commit();
     FAIL() << "no error";
@@ -70,10 +70,10 @@ TEST(AtomicFile, WithoutAStreamCommitRenamesWhatTheWriterWrote) {
   }
 }
 
-TEST(AtomicFile, MissingFolderIsAnErrorNamingIt) {
+TEST(TemporaryOutput, MissingFolderIsAnErrorNamingIt) {
   const std::string dir = test::temp_folder("atomic_folder");
   try {
-    AtomicFile file(dir + "/no/out.csv");
+    OutputFile file({"", dir + "/no/out.csv"});
     FAIL() << "no error";
   } catch (const IoError& e) {
     EXPECT_EQ(std::string(e.what()), dir + "/no/out.csv: cannot write: folder " + dir + "/no does not exist");
@@ -87,9 +87,9 @@ namespace emit {
 namespace {
 
 // Ctrl-C during `emit reconstruct` used to leave a hidden ".NAME.tmpPID.jsonl" behind. A child
-// process opens an AtomicFile, writes, and is killed by SIGINT with the cleanup installed: the
+// process opens an OutputFile, writes, and is killed by SIGINT with the cleanup installed: the
 // temporary file is gone, the target untouched, and the child died of the signal (re-raised).
-TEST(AtomicFile, ASignalRemovesTheTemporaryFileAndStillEndsTheProcess) {
+TEST(TemporaryOutput, ASignalRemovesTheTemporaryFileAndStillEndsTheProcess) {
   const std::string dir = test::temp_folder("atomic_file_signal");
   const std::string target = dir + "/contacts.jsonl";
   std::ofstream(target) << "GOOD\n";
@@ -97,7 +97,7 @@ TEST(AtomicFile, ASignalRemovesTheTemporaryFileAndStillEndsTheProcess) {
   ASSERT_GE(child, 0);
   if (child == 0) {
     remove_temporary_files_on_signals();
-    AtomicFile file(target);
+    OutputFile file({"", target});
     file.stream() << "half" << std::flush;
     std::raise(SIGINT);
     ::_exit(0);  // not reached: SIGINT's default action ends the process
