@@ -73,14 +73,14 @@ int descriptor_number(const std::string& path, bool standard_output) {
   const std::string name = normal.filename().string();
   if (folder != "/dev/fd" && folder != "/proc/self/fd" && folder != "/proc/thread-self/fd") return -1;
   if (name.empty() || name.size() > 9 || name.find_first_not_of("0123456789") != std::string::npos) return -1;
-  return std::atoi(name.c_str());
+  return static_cast<int>(std::strtol(name.c_str(), nullptr, 10));  // at most 9 digits: an int
 }
 
 /// Bytes for a file descriptor, buffered; the first failed write's errno is kept, and what the
 /// buffer held then is dropped (a line cut there must not reach the next reader of a FIFO).
 class DescriptorBuffer : public std::streambuf {
  public:
-  static constexpr std::size_t buffer_bytes = 64 * 1024;
+  static constexpr std::size_t buffer_bytes = std::size_t{64} * 1024;
 
   DescriptorBuffer() : buffer_(buffer_bytes) { reset(); }
   void attach(int fd) {

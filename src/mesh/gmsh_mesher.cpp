@@ -1,9 +1,9 @@
 #include "gmsh_mesher.hpp"
 
 #include <dlfcn.h>
-#include <stdlib.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -74,18 +74,18 @@ void write_msh(const Mesh& mesh, OutputFile& out) {
   if (::mkdtemp(folder.data()) == nullptr)
     throw IoError("cannot create a scratch folder for Gmsh in " + std::filesystem::temp_directory_path().string() +
                   " (" + std::strerror(errno) + ")");
-  struct RemoveFolder {
-    std::string path;
-    ~RemoveFolder() {
-      std::error_code ignored;
-      std::filesystem::remove_all(path, ignored);
-    }
-  } remove_folder{folder};
   const std::string scratch = folder + "/mesh.msh";
-  detail::gmsh_mesher().write_msh(mesh, scratch);
-  std::ifstream in(scratch, std::ios::binary);
-  if (!in) throw IoError(scratch + ": Gmsh wrote no mesh file");
-  out.stream() << in.rdbuf();
+  std::error_code ignored;
+  try {
+    detail::gmsh_mesher().write_msh(mesh, scratch);
+    std::ifstream in(scratch, std::ios::binary);
+    if (!in) throw IoError(scratch + ": Gmsh wrote no mesh file");
+    out.stream() << in.rdbuf();
+  } catch (...) {
+    std::filesystem::remove_all(folder, ignored);
+    throw;
+  }
+  std::filesystem::remove_all(folder, ignored);
 }
 void write_msh(const Mesh& mesh, const std::string& path) {
   OutputFile out({"", path});

@@ -40,7 +40,7 @@ bool is_character_device(const std::string& path) {
 
 /// A private copy of a memory device: 3 is /dev/null's minor number, 7 /dev/full's.
 std::string make_memory_device(const std::string& folder, const std::string& name, unsigned minor) {
-  const std::string path = folder + "/" + name;
+  std::string path = folder + "/" + name;
   if (::mknod(path.c_str(), S_IFCHR | 0666, makedev(1, minor)) != 0) return "";
   return path;
 }
