@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -77,6 +78,7 @@ class Accumulator {
     weight_area_ += weight * area;
     weighted_centroid_sum_ += weight * area * centroid;
     area_centroid_sum_ += area * centroid;
+    area_second_moment_ += area * centroid.head<2>() * centroid.head<2>().transpose();
     centroid_sum_ += centroid;
     ++count_;
   }
@@ -92,6 +94,11 @@ class Accumulator {
     c.pressure_N_per_mm2 = area_ > 0 ? force_ / area_ : 0.0;
     c.peak_pressure_N_per_mm2 = peak_;
     c.element_count = count_;
+    if (area_ > 0) {  // the ellipse of the same second moments (seen from +z)
+      const Vector2 mean = area_centroid_sum_.head<2>() / area_;
+      const Eigen::Matrix2d covariance = area_second_moment_ / area_ - mean * mean.transpose();
+      set_outline_ellipse(covariance, c);
+    }
     return c;
   }
 
@@ -107,6 +114,7 @@ class Accumulator {
   double area_ = 0, force_ = 0, peak_ = -std::numeric_limits<double>::infinity(), weight_area_ = 0;
   Vector3 weighted_centroid_sum_ = Vector3::Zero(), area_centroid_sum_ = Vector3::Zero(),
           centroid_sum_ = Vector3::Zero();
+  Eigen::Matrix2d area_second_moment_ = Eigen::Matrix2d::Zero();
   int count_ = 0;
   bool significant_ = false;
 };
@@ -165,6 +173,15 @@ double force_key(const Contact& c) {
 }
 
 }  // namespace
+
+void set_outline_ellipse(const Eigen::Matrix2d& covariance_mm2, Contact& contact) {
+  // A uniform ellipse of semi-axes a, b has variances a²/4 and b²/4 along its axes.
+  const double mean = covariance_mm2.trace() / 2, half_difference = (covariance_mm2(0, 0) - covariance_mm2(1, 1)) / 2;
+  const double spread = std::hypot(half_difference, covariance_mm2(0, 1));
+  contact.semi_major_mm = 2 * std::sqrt(std::max(0.0, mean + spread));
+  contact.semi_minor_mm = 2 * std::sqrt(std::max(0.0, mean - spread));
+  contact.orientation_deg = std::atan2(covariance_mm2(0, 1), half_difference) / 2 * 180 / std::numbers::pi;
+}
 
 void place_on_surface(const Shape& surface, const Vector2& chart_mm, Contact& contact) {
   const Vector3 point = surface_point_mm(surface, chart_mm), normal = surface_normal(surface, chart_mm);

@@ -116,19 +116,7 @@ void DiscContactIntegrator::integrate(const Disc& disc, DiscLoad& out, bool deri
   const Vector2 center = centre.point_mm.head<2>();  // the buckets are seen from +z
   const double r = disc.radius_mm, h = edge_mm_;
   const double reach = r + h + max_reach_mm_;  // no centroid farther than this can be touched
-  const auto cell = [&](double v, double origin, int count) {
-    return std::clamp(static_cast<int>(std::floor((v - origin) / cell_mm_)), 0, count - 1);
-  };
-  const int x0 = cell(center.x() - reach, origin_mm_.x(), columns_),
-            x1 = cell(center.x() + reach, origin_mm_.x(), columns_);
-  const int y0 = cell(center.y() - reach, origin_mm_.y(), rows_), y1 = cell(center.y() + reach, origin_mm_.y(), rows_);
-  for (int row = y0; row <= y1; ++row) {
-    const auto first_cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_);
-    for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)];
-         k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
-      add_triangle(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]), disc, centre, out,
-                   derivatives);
-  }
+  for_each_triangle_near(center, reach, [&](std::size_t t) { add_triangle(t, disc, centre, out, derivatives); });
 }
 
 void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, const Centre& centre, DiscLoad& out,

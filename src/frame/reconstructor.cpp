@@ -8,6 +8,7 @@
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
 #include "emit/model/image_noise.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
@@ -39,6 +40,8 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, const FitPrecompu
   fitter_.emplace(fit);
   indenter_radius_mm_ = calibration.indenter_radius_mm;
   gamma_ = calibration.contact_law.gamma;
+  law_ = fit.sensor().contact;
+  if (options.contact_shapes && !is_curved(model.surface)) shapes_.emplace(fit);
 }
 
 void Reconstructor::set_reference(const Reference& reference) {
@@ -112,6 +115,12 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
   fitted_.clear();
   previous_discs_.clear();
   pressure_.setZero();  // the picture: each fitted disc at its pressure
+  if (shapes_) {
+    for (const FittedContact& f : fitter_result_.contacts) previous_discs_.push_back(f.disc);
+    // The prior's radius: the calibration indenter's, or, uncalibrated, a fingertip's 5 mm.
+    report_shapes(shapes_->refine(dV_, previous_discs_, indenter_radius_mm_ > 0 ? indenter_radius_mm_ : 5.0));
+    return fitted_;
+  }
   for (const FittedContact& f : fitter_result_.contacts) {
     Contact c;
     place_on_surface(model_.surface, {f.disc.x_mm, f.disc.y_mm}, c);
@@ -136,6 +145,45 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
         pressure_[k] = std::max(pressure_[k], c.pressure_N_per_mm2);
   }
   return fitted_;
+}
+
+/// The refitted ellipses as contacts (shape_refiner.hpp). The contact law as calibrated maps the
+/// held disc's conductance g_h = G/(π r_h²) to the pressure of a press of the calibration
+/// indenter's area A_c; a press of area A and pressure P has G = A g(P), so its pressure is the
+/// calibrated law's at g_h·A_c/A (uncalibrated, the nominal law's at G/A: A_c = π r_h²).
+void Reconstructor::report_shapes(const std::vector<RefinedContact>& shapes) {
+  const double held_area_mm2 = std::numbers::pi * std::pow(fitter_->shared().options().prior_radius_mm, 2);
+  const double indenter_area_mm2 =
+      indenter_radius_mm_ > 0 ? std::numbers::pi * indenter_radius_mm_ * indenter_radius_mm_ : held_area_mm2;
+  for (const RefinedContact& r : shapes) {
+    const Ellipse& e = r.ellipse;
+    Contact c;
+    place_on_surface(model_.surface, {e.x_mm, e.y_mm}, c);
+    c.area_mm2 = e.area_mm2();
+    const double total_S = e.conductance_S_per_mm2 * c.area_mm2;
+    c.pressure_N_per_mm2 = c.peak_pressure_N_per_mm2 =
+        law_.pressure_N_per_mm2(total_S / held_area_mm2 * indenter_area_mm2 / c.area_mm2);
+    c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
+    c.x_std_mm = r.x_std_mm, c.y_std_mm = r.y_std_mm;
+    // P = (α g)^(−1/γ): log P = −(log G − log A)/γ + const, log F = log P + log A.
+    const double k = -1 / law_.gamma;
+    const double var_G = r.log_conductance_std * r.log_conductance_std, var_A = r.log_area_std * r.log_area_std;
+    const double cov = r.log_conductance_log_area_cov;
+    const double log_P_var = k * k * (var_G + var_A - 2 * cov);
+    const double log_F_var = k * k * var_G + (1 - k) * (1 - k) * var_A + 2 * k * (1 - k) * cov;
+    c.pressure_std_N_per_mm2 = c.pressure_N_per_mm2 * std::sqrt(std::max(0.0, log_P_var));
+    c.force_std_N = c.force_N * std::sqrt(std::max(0.0, log_F_var));
+    c.area_std_mm2 = c.area_mm2 * r.log_area_std;
+    c.semi_major_mm = e.semi_major_mm(), c.semi_minor_mm = e.semi_minor_mm();
+    c.orientation_deg = e.orientation_rad() * 180 / std::numbers::pi;
+    c.orientation_std_deg = r.orientation_std_rad * 180 / std::numbers::pi;
+    fitted_.push_back(c);
+    for (Index t = 0; t < pressure_.size(); ++t) {
+      const Vector2& p = finder_.centroid_chart_mm(t);
+      if (e.contains(p.x(), p.y())) pressure_[t] = std::max(pressure_[t], c.pressure_N_per_mm2);
+    }
+  }
+  std::sort(fitted_.begin(), fitted_.end(), [](const Contact& a, const Contact& b) { return a.force_N > b.force_N; });
 }
 
 void FrameOptions::validate() const {

@@ -16,8 +16,10 @@ namespace {
 /// element_count is not part of the format (the parser leaves it 0).
 enum class Group {
   always,
-  uncertainty,  ///< written only when some 1σ is nonzero (contact fitting); may be absent
-  surface,      ///< written only off the plane z = 0 (a curved sheet); absent: z = 0, normal +z
+  uncertainty,        ///< written only when some 1σ is nonzero (contact fitting); may be absent
+  surface,            ///< written only off the plane z = 0 (a curved sheet); absent: z = 0, normal +z
+  shape,              ///< the outline's ellipse, written when it has one (frame/contacts.hpp); may be absent
+  shape_uncertainty,  ///< its 1σ, written when estimated (the `shapes` method); may be absent
 };
 struct Field {
   const char* key;
@@ -39,6 +41,11 @@ constexpr Field fields[] = {
     {"y_std_mm", &Contact::y_std_mm, Group::uncertainty},
     {"pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2, Group::uncertainty},
     {"force_std_N", &Contact::force_std_N, Group::uncertainty},
+    {"semi_major_mm", &Contact::semi_major_mm, Group::shape},
+    {"semi_minor_mm", &Contact::semi_minor_mm, Group::shape},
+    {"orientation_deg", &Contact::orientation_deg, Group::shape},
+    {"area_std_mm2", &Contact::area_std_mm2, Group::shape_uncertainty},
+    {"orientation_std_deg", &Contact::orientation_std_deg, Group::shape_uncertainty},
 };
 
 bool has_uncertainty(const Contact& c) { return c.x_std_mm > 0 || c.y_std_mm > 0 || c.pressure_std_N_per_mm2 > 0; }
@@ -49,6 +56,8 @@ bool written(const Field& field, const Contact& c) {
     case Group::always: return true;
     case Group::uncertainty: return has_uncertainty(c);
     case Group::surface: return off_the_plane(c);
+    case Group::shape: return c.semi_major_mm > 0;
+    case Group::shape_uncertainty: return c.area_std_mm2 > 0 || c.orientation_std_deg > 0;
   }
   return true;
 }

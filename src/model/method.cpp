@@ -7,6 +7,7 @@ namespace emit {
 const char* method_name(Method method) {
   switch (method) {
     case Method::fit: return "fit";
+    case Method::shapes: return "shapes";
     case Method::paper: return "paper";
     case Method::noser: return "noser";
     case Method::laplacian: return "laplacian";

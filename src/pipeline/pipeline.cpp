@@ -66,7 +66,11 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
 }
 
 Reconstructor Pipeline::reconstructor(const FrameOptions& options) const {
-  if (fit_) return Reconstructor(model_, *fit_, fit_calibration_, options);
+  if (fit_) {
+    FrameOptions o = options;
+    o.contact_shapes = o.contact_shapes || method_ == Method::shapes;
+    return Reconstructor(model_, *fit_, fit_calibration_, o);
+  }
   return Reconstructor(model_, linear_, options);
 }
 

@@ -78,6 +78,9 @@ class FitPrecompute {
   const MeasurementSet& measurements() const { return measurements_; }
   const FitOptions& options() const { return options_; }
   double noise_V() const { return noise_V_; }
+  const DiscContactIntegrator& integrator() const { return integrator_; }
+  /// Where contacts' centres may go (mesh/sheet_chart.hpp).
+  const Eigen::AlignedBox2d& centre_box() const { return chart_box_; }
 
  private:
   friend class ContactFitter;

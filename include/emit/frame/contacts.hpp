@@ -32,8 +32,19 @@ struct Contact {
   /// The force's 1σ: the fit's, and the indenter's unknown size (contact fitting reports the
   /// calibration indenter's area; frame/reconstructor.hpp says how much that leaves open).
   double force_std_N = 0;
+  /// The outline as the ellipse of its second moments: semi-axes [mm] and the major axis's angle
+  /// from the chart's first axis (x on a flat sheet) [deg, in (−90, 90]]. A linear method's from
+  /// its region's elements (seen from +z), contact fitting's from the refitted ellipse
+  /// (shape_refiner.hpp); a round contact's angle means nothing (see orientation_std_deg).
+  double semi_major_mm = 0, semi_minor_mm = 0, orientation_deg = 0;
+  /// 1σ of the area and the angle (contact fitting); 0 where not estimated.
+  double area_std_mm2 = 0, orientation_std_deg = 0;
   int element_count = 0;
 };
+
+/// Sets the contact's semi-axes and orientation to the uniform ellipse's of this covariance of
+/// position over its area [mm²] (a uniform ellipse's variances along its axes are a²/4, b²/4).
+void set_outline_ellipse(const Eigen::Matrix2d& covariance_mm2, Contact& contact);
 
 /// Puts the contact at the sheet's point named by chart point c, with the sheet's normal there
 /// (sensor/surface.hpp).

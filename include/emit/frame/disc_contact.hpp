@@ -13,7 +13,9 @@
 /// mesh's facets' own distance from the sphere (h²/8R ≈ 0.004 mm), and the chord needs no
 /// geodesics on the mesh. The centre stays named by (x, y), so the fit's parameters, seeds and
 /// bounds are the flat sheet's.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -52,11 +54,38 @@ class DiscContactIntegrator {
   /// large enough). Derivatives only if `derivatives`.
   void integrate(const Disc& disc, DiscLoad& out, bool derivatives = false) const;
 
- private:
+  /// The quadrature on a triangle a rim crosses: 4^levels pieces, each its centroid and the
+  /// integral of φ_i φ_j over it per unit area of the parent.
   struct Piece {
     Eigen::Vector3d centroid_barycentric;
     Eigen::Matrix3d integral;  ///< ∫ φ_i φ_j over the piece / the parent's area
   };
+  const std::vector<Piece>& pieces() const { return pieces_; }
+  /// Calls visit(t) for every triangle t whose centroid may be within `reach_mm` of `center_mm`
+  /// seen from +z (a superset: the caller tests each), without allocating.
+  template <class Visit>
+  void for_each_triangle_near(const Vector2& center_mm, double reach_mm, Visit&& visit) const {
+    const auto cell = [&](double v, double origin, int count) {
+      return std::clamp(static_cast<int>(std::floor((v - origin) / cell_mm_)), 0, count - 1);
+    };
+    const int x0 = cell(center_mm.x() - reach_mm, origin_mm_.x(), columns_),
+              x1 = cell(center_mm.x() + reach_mm, origin_mm_.x(), columns_);
+    const int y0 = cell(center_mm.y() - reach_mm, origin_mm_.y(), rows_),
+              y1 = cell(center_mm.y() + reach_mm, origin_mm_.y(), rows_);
+    for (int row = y0; row <= y1; ++row) {
+      const auto first_cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_);
+      for (int k = cell_start_[first_cell + static_cast<std::size_t>(x0)];
+           k < cell_start_[first_cell + static_cast<std::size_t>(x1) + 1]; ++k)
+        visit(static_cast<std::size_t>(cell_triangles_[static_cast<std::size_t>(k)]));
+    }
+  }
+  const Vector3& centroid_mm(std::size_t triangle) const { return centroid_mm_[triangle]; }
+  /// The farthest vertex of a triangle from its centroid, and the largest of these.
+  double reach_mm(std::size_t triangle) const { return reach_mm_[triangle]; }
+  double max_reach_mm() const { return max_reach_mm_; }
+  const Mesh& mesh() const { return *mesh_; }
+
+ private:
   void bucket_triangles();
   /// The disc's centre in 3D and its derivatives in x and y (columns).
   struct Centre {

@@ -10,6 +10,7 @@
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/contacts.hpp"
 #include "emit/frame/reference.hpp"
+#include "emit/frame/shape_refiner.hpp"
 #include "emit/model/calibration.hpp"
 #include "emit/model/reconstruction_model.hpp"
 
@@ -32,6 +33,11 @@ struct FrameOptions {
   /// frame of pure noise reports a contact with at most this probability. 0: no such test (nor
   /// without the model's reading noise).
   double false_alarm_rate = 0.01;
+  /// With a fitter on a flat sheet: each fitted contact refitted as an ellipse (shape_refiner.hpp),
+  /// so it is reported with its outline's area, elongation and orientation, its force from them,
+  /// and drawn as that ellipse in pressure(). Off: the disc fit's contacts with the calibration
+  /// indenter's area. The `shapes` method sets it (pipeline/pipeline.hpp).
+  bool contact_shapes = false;
   void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
@@ -85,6 +91,8 @@ class Reconstructor {
   Vector floor_;
   std::vector<std::uint8_t> selected_;
   std::optional<ContactFitter> fitter_;
+  std::optional<ShapeRefiner> shapes_;
+  ContactLaw law_;  ///< contact fitting's (its calibration's)
   FitResult fitter_result_;
   std::vector<Disc> seeds_;
   std::vector<Contact> fitted_;
@@ -93,6 +101,7 @@ class Reconstructor {
   CompactOperatorScratch operator_scratch_;
   const std::vector<Contact>& fit_contacts(const std::vector<Contact>& linear);
   const std::vector<Contact>& report_fitted();
+  void report_shapes(const std::vector<RefinedContact>& shapes);
 };
 
 }  // namespace emit
