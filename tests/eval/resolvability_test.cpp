@@ -1,0 +1,91 @@
+// What a frame can tell (eval/resolvability.hpp) on the default 60 mm sheet: properties the
+// physics fixes, measured on the exact forward model of contact fitting.
+#include "emit/eval/resolvability.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "emit/frame/contact_fitter.hpp"
+#include "emit/model/fit_model.hpp"
+#include "emit/sensor/sensor_json.hpp"
+
+namespace emit {
+namespace {
+
+struct Bench {
+  Sensor sensor = default_sensor();
+  FitModel fit = build_fit_model(sensor);
+  MeasurementSet measurements = make_measurement_set(sensor.electrode_count());
+  Resolvability r{sensor, fit, measurements};
+};
+
+Bench& bench() {
+  static Bench b;
+  return b;
+}
+
+// The outline integrator (a signed distance, its rim smoothed over ±0.5 mm) and the fitter's disc
+// (its rim over ±a quarter of the mesh size) draw the same disc: a symmetric smoothing of the rim
+// keeps its area to O((h/r)²), 1 % at r = 5 mm, so the frames agree to a few per cent.
+TEST(Resolvability, OutlineFrameIsTheFittersDisc) {
+  Bench& b = bench();
+  const double g = b.sensor.contact.conductance_S_per_mm2(0.1);
+  const Vector2 c(24, 35);
+  const Vector outline = b.r.region_dV([&](const Vector2& p) { return (p - c).norm() - 5; }, g);
+  ContactFitter fitter(b.sensor, b.fit.mesh, b.fit.green, b.measurements);
+  const Frame frame = fitter.predict({Disc{c.x(), c.y(), 5, g}});
+  Vector disc(b.measurements.size());
+  for (int i = 0; i < b.measurements.size(); ++i) disc[i] = frame.data()[b.measurements.frame_index[i]];
+  const double relative = (outline - disc).norm() / disc.norm();
+  std::printf("outline vs the fitter's disc: %.4f relative\n", relative);
+  EXPECT_LT(relative, 0.03);
+}
+
+// A radially symmetric contact looks like a point from outside it (the mean-value property): the
+// frame pins its centre and its total conductance g·πr², its radius only weakly (through the
+// contact's own loading of the sheet). So the radius's bound is far above the centre's, and the
+// total's far below g's. At the centre of the square sheet, whose electrodes are symmetric under
+// x ↔ y, σ_x = σ_y but for the mesh's asymmetry (a few per cent).
+TEST(Resolvability, FramePinsTheCentreAndTotalNotTheRadius) {
+  Bench& b = bench();
+  const RoundContactBound small = b.r.round_contact_bound({30, 30}, 3, 8);
+  std::printf("r 3 mm, 8 N at the centre: sigma x %.4f y %.4f r %.4f mm, log g %.4f, log total %.4f, log F %.4f\n",
+              small.x_std_mm, small.y_std_mm, small.radius_std_mm, small.log_conductance_std, small.log_total_std,
+              small.log_force_std);
+  EXPECT_GT(small.radius_std_mm, 5 * small.x_std_mm);
+  EXPECT_LT(small.log_total_std, small.log_conductance_std / 3);
+  EXPECT_NEAR(small.x_std_mm, small.y_std_mm, 0.1 * small.x_std_mm);
+}
+
+// Two bars with no gap are one bar (the fit starts there: Δχ² = 0); the wider the gap, the more
+// their frame departs from any single bar's.
+TEST(Resolvability, BarsPartWithTheirGap) {
+  Bench& b = bench();
+  const Vector2 c(30, 30);
+  const double none = b.r.two_bars_against_one(c, 3, 20, 0, 0.1).delta_chi2;
+  const double close = b.r.two_bars_against_one(c, 3, 20, 2, 0.1).delta_chi2;
+  const double wide = b.r.two_bars_against_one(c, 3, 20, 6, 0.1).delta_chi2;
+  std::printf("two bars 3 x 20 mm, 0.1 N/mm2: delta chi2 %.3g (no gap), %.3g (2 mm), %.3g (6 mm)\n", none, close,
+              wide);
+  EXPECT_LT(none, 1e-6);
+  EXPECT_GT(wide, close);
+}
+
+// A ring whose hole closes is a disc; the larger the hole, the more its frame departs from any disc's.
+TEST(Resolvability, RingHoleShowsWithItsSize) {
+  Bench& b = bench();
+  const Vector2 c(30, 30);
+  const double none = b.r.ring_against_disc(c, 0, 9, 0.1).delta_chi2;
+  const double small = b.r.ring_against_disc(c, 3, 9, 0.1).delta_chi2;
+  const double large = b.r.ring_against_disc(c, 6, 9, 0.1).delta_chi2;
+  std::printf("ring of outer r 9 mm, 0.1 N/mm2: delta chi2 %.3g (no hole), %.3g (hole 3 mm), %.3g (hole 6 mm)\n",
+              none, small, large);
+  EXPECT_LT(none, 1e-6);
+  EXPECT_GT(large, small);
+}
+
+}  // namespace
+}  // namespace emit
