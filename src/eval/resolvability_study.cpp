@@ -1,5 +1,6 @@
 #include "emit/eval/resolvability_study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,8 @@ void ResolvabilityOptions::validate() const {
   for (double v : offsets_mm) option_check::non_negative(owner, "offsets_mm", v);
   for (double v : radii_mm) option_check::positive(owner, "radii_mm", v);
   for (double v : gaps_mm) option_check::positive(owner, "gaps_mm", v);
+  if (!std::is_sorted(gaps_mm.begin(), gaps_mm.end()))
+    option_check::fail(owner, "gaps_mm", "ascending", std::to_string(gaps_mm.size()) + " gaps out of order");
   for (double v : ring_inner_mm) option_check::within(owner, "ring_inner_mm", v, 0, ring_outer_mm);
   option_check::positive(owner, "force_N", force_N);
   option_check::positive(owner, "bar_width_mm", bar_width_mm);
@@ -27,8 +30,8 @@ void ResolvabilityOptions::validate() const {
 ResolvabilityOptions quick_resolvability_options() {
   ResolvabilityOptions o;
   o.offsets_mm = {0, 16};
-  o.radii_mm = {2, 6};
-  o.gaps_mm = {2, 6};
+  o.radii_mm = {3};
+  o.gaps_mm = {4};
   o.ring_inner_mm = {6};
   return o;
 }
@@ -54,7 +57,7 @@ ResolvabilityStudy study_resolvability(const Sensor& sensor, const FitModel& fit
       }
     return true;
   };
-  const auto place = [&](double offset) { return s.centre_mm + Vector2(offset, 0); };
+  const auto place = [&](double offset) -> Vector2 { return s.centre_mm + Vector2(offset, 0); };
 
   progress.say("  round presses: the Cramér–Rao bound");
   for (double radius : options.radii_mm) {

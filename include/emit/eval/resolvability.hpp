@@ -68,6 +68,11 @@ class Resolvability {
   /// The bound for a flat press of `radius_mm` and `force_N` at `centre_mm`.
   RoundContactBound round_contact_bound(const Vector2& centre_mm, double radius_mm, double force_N);
 
+  /// Its frame's derivative over the measurements, in units of the noise (M × 4: x, y, r [per
+  /// mm], log g), and the frame's own δV in `dV` if given.
+  Eigen::Matrix<double, Eigen::Dynamic, 4> round_contact_jacobian(const Vector2& centre_mm, double radius_mm,
+                                                                  double force_N, Vector* dV = nullptr);
+
   /// Two parallel bars `width_mm` × `length_mm` (long along y), `gap_mm` apart across x, centred
   /// at `centre_mm`, each at `pressure`: against the best single bar about the same centre.
   AlternativeFit two_bars_against_one(const Vector2& centre_mm, double width_mm, double length_mm, double gap_mm,
