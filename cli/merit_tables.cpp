@@ -14,12 +14,13 @@ void print_figures_of_merit(const FiguresOfMeritOptions& options, const MeritEva
   const FiguresOfMerit& f = report.merit;
   std::printf("  %d places, presses r %.1f mm, %.1f N; reconstruction mesh %ld triangles\n", f.places,
               options.radius_mm, options.force_N, f.triangles);
-  std::printf("  %-10s %-22s %6s  %-16s %-16s %-16s %-16s %s\n", "method", "AR (mean)", "AR CV",
+  std::printf("  %-14s %-18s %6s  %-16s %-16s %-16s %-16s %s\n", "method", "AR (mean)", "AR CV",
               "PE mm", "RES", "SD", "RNG", "blank");
   for (const MethodMerit& m : f.methods) {
-    const char* unit = is_linear(m.method) ? "V.mm2/N" : "N/N";
-    std::printf("  %-10s %10.4g %-11s %5.1f %%  %+6.2f +/- %5.2f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %d\n",
-                method_name(m.method), m.amplitude_response.mean, unit, 100 * m.amplitude_response_cv,
+    const char* unit = m.pressure ? "N/N" : "V.mm2/N";
+    const std::string name = std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? "-P" : "-dphi") : "");
+    std::printf("  %-14s %10.4g %-7s %5.1f %%  %+6.2f +/- %5.2f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %d\n",
+                name.c_str(), m.amplitude_response.mean, unit, 100 * m.amplitude_response_cv,
                 m.position_error_mm.mean, m.position_error_mm.std, m.resolution.mean, m.resolution.std,
                 m.shape_deformation.mean, m.shape_deformation.std, m.ringing.mean, m.ringing.std, m.blank);
   }

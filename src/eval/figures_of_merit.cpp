@@ -119,21 +119,29 @@ FiguresOfMerit evaluate_figures_of_merit(const EvalCase& eval_case, const Figure
     result.triangles = static_cast<long>(pipeline.model().mesh.triangle_count());
     Reconstructor reconstructor = pipeline.reconstructor(frame_options);
     reconstructor.set_reference(run.reference);
-    MethodMerit m;
-    m.method = method;
     const Vector2 centre = sheet_centre_mm(reconstructor.mesh());
-    for (std::size_t f = 0; f < run.frames.size(); ++f) {
-      reconstructor.process(run.frames[f]);
-      const Vector& image = is_linear(method) ? reconstructor.image() : reconstructor.pressure();
+    MethodMerit potential, pressure;
+    potential.method = pressure.method = method;
+    pressure.pressure = true;
+    const auto score = [&](const Vector& image, std::size_t f, MethodMerit& m) {
       if (image.cwiseAbs().maxCoeff() == 0) {
         ++m.blank;
-        continue;
+        return;
       }
       const GreitMerit merit = greit_figures_of_merit(reconstructor.mesh(), image, places[f], options.force_N);
       m.samples.push_back({places[f], (places[f] - centre).norm(), merit});
+    };
+    for (std::size_t f = 0; f < run.frames.size(); ++f) {
+      reconstructor.process(run.frames[f]);
+      if (is_linear(method)) score(reconstructor.image(), f, potential);
+      score(reconstructor.pressure(), f, pressure);
     }
-    summarise(m);
-    result.methods.push_back(std::move(m));
+    if (is_linear(method)) {
+      summarise(potential);
+      result.methods.push_back(std::move(potential));
+    }
+    summarise(pressure);
+    result.methods.push_back(std::move(pressure));
   }
   return result;
 }
@@ -168,7 +176,8 @@ std::vector<std::string> write_figure_of_merit_plots(const EvalCase& eval_case, 
       std::stable_sort(sorted.begin(), sorted.end(), [](const MeritSample* a, const MeritSample* b) {
         return a->distance_from_centre_mm < b->distance_from_centre_mm;
       });
-      PlotSeries s{method_name(m.method), {}, {}, series_colour(static_cast<int>(i)), true, {}};
+      const std::string label = std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? " P" : " dphi") : "");
+      PlotSeries s{label, {}, {}, series_colour(static_cast<int>(i)), true, {}};
       const double scale = figure.stem == std::string("ar") ? 1 / m.amplitude_response.mean : 1;
       for (const MeritSample* sample : sorted) {
         s.x.push_back(sample->distance_from_centre_mm);

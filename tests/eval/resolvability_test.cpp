@@ -76,18 +76,32 @@ TEST(Resolvability, JacobianMatchesFiniteDifferences) {
 
 // A radially symmetric contact looks like a point from outside it (the mean-value property): the
 // frame pins its centre and its total conductance g·πr², its radius only weakly (through the
-// contact's own loading of the sheet). So the radius's bound is far above the centre's, and the
-// total's far below g's. At the centre of the square sheet, whose electrodes are symmetric under
-// x ↔ y, σ_x = σ_y but for the mesh's asymmetry (a few per cent).
+// contact's own loading of the sheet and the border's images, both growing with r and nearer the
+// border). So one frame does not tell a round press's size (σ_r > r), the radius's bound is far
+// above the centre's and the total's far below g's, a smaller disc is told worse, and one nearer
+// the border better. At the centre of the square sheet, whose electrodes are symmetric under x ↔ y,
+// the frame's sensitivities to x and to y agree but for the fit mesh's asymmetry (5 %); the full
+// σ_x and σ_y less so (measured 11 % apart), as their small mesh-made couplings to the nearly
+// degenerate pair (r, log g) weigh in the inverse.
 TEST(Resolvability, FramePinsTheCentreAndTotalNotTheRadius) {
   Bench& b = bench();
-  const RoundContactBound small = b.r.round_contact_bound({30, 30}, 3, 8);
+  const Vector2 centre(30, 30);
+  const RoundContactBound small = b.r.round_contact_bound(centre, 3, 8);
   std::printf("r 3 mm, 8 N at the centre: sigma x %.4f y %.4f r %.4f mm, log g %.4f, log total %.4f, log F %.4f\n",
               small.x_std_mm, small.y_std_mm, small.radius_std_mm, small.log_conductance_std, small.log_total_std,
               small.log_force_std);
-  EXPECT_GT(small.radius_std_mm, 5 * small.x_std_mm);
-  EXPECT_LT(small.log_total_std, small.log_conductance_std / 3);
-  EXPECT_NEAR(small.x_std_mm, small.y_std_mm, 0.1 * small.x_std_mm);
+  EXPECT_GT(small.radius_std_mm, 3.0);
+  EXPECT_GT(small.radius_std_mm, 100 * small.x_std_mm);
+  EXPECT_LT(small.log_total_std, small.log_conductance_std / 10);
+  const Eigen::Matrix<double, Eigen::Dynamic, 4> J = b.r.round_contact_jacobian(centre, 3, 8);
+  EXPECT_NEAR(J.col(0).norm(), J.col(1).norm(), 0.05 * J.col(0).norm());
+  const double tiny = b.r.round_contact_bound(centre, 2, 8).radius_std_mm;
+  const double large = b.r.round_contact_bound(centre, 6, 8).radius_std_mm;
+  const double near_border = b.r.round_contact_bound({46, 30}, 3, 8).radius_std_mm;
+  std::printf("sigma r: r 2 mm %.2f, r 6 mm %.2f at the centre; r 3 mm 16 mm from it %.2f\n", tiny, large,
+              near_border);
+  EXPECT_GT(tiny, large);
+  EXPECT_LT(near_border, small.radius_std_mm);
 }
 
 // Two bars with no gap are one bar (the fit starts there: Δχ² = 0); the wider the gap, the more

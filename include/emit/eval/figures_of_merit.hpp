@@ -5,7 +5,8 @@
 /// from the sheet's centre towards its border along a few rays, frames from the twin on a mesh of
 /// its own (docs/physics.md, "The digital twin"), each method's image of each: a linear method's
 /// δφ (Reconstructor::image(), eq. 7), contact fitting's pressure picture
-/// (Reconstructor::pressure()). Per method, each figure's mean and spread over the places, AR's
+/// (Reconstructor::pressure()); a linear method's pressure picture (eq. 8 above its threshold) too,
+/// the picture a user sees. Per method, each figure's mean and spread over the places, AR's
 /// coefficient of variation (GREIT asks AR to be uniform over the sheet), and a plot per figure
 /// against the place's distance from the centre.
 #include <cstdint>
@@ -44,6 +45,9 @@ struct MeritSpread {
 
 struct MethodMerit {
   Method method = Method::paper;
+  /// Which picture was scored: the pressure picture (eq. 8 above the threshold for a linear
+  /// method, Reconstructor::pressure()) or, for a linear method, its image δφ.
+  bool pressure = false;
   std::vector<MeritSample> samples;  ///< the places whose image was not 0
   int blank = 0;                     ///< frames whose image was 0 everywhere (nothing found)
   /// AR in the image's unit × mm² per newton (δφ: V·mm²/N; pressure: N/N, 1 when calibrated).
@@ -52,7 +56,7 @@ struct MethodMerit {
 };
 
 struct FiguresOfMerit {
-  std::vector<MethodMerit> methods;
+  std::vector<MethodMerit> methods;  ///< per method; a linear one twice, δφ then pressure
   int places = 0;
   long triangles = 0;  ///< the reconstruction mesh's
 };
