@@ -42,8 +42,8 @@ bool run_merit_eval(MeritEvalArgs& args, const std::string& sheet, const std::ve
     std::printf(
         "emit eval --figures-of-merit: GREIT's figures (Adler et al. 2009) of each method's image of small presses, "
         "twin on a mesh of its own (seed %d)%s\n"
-        "  AR: the image's integral per newton (linear: delta phi; fit: its pressure picture); PE > 0: drawn "
-        "towards the centre\n",
+        "  AR: the image's integral per newton (-dphi: a linear method's image delta phi; -P and fit: the pressure "
+        "picture); PE > 0: drawn towards the centre\n",
         mesh_seed, quick ? " (--quick: a few places)" : "");
     for (const auto& [c, electrodes] : sheets) {
       std::printf("\n%s, %d electrodes\n", c.name.c_str(), electrodes);

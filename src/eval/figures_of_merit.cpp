@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <utility>
 #include <numbers>
 
 #include "emit/core/errors.hpp"
@@ -155,9 +157,9 @@ std::vector<std::string> write_figure_of_merit_plots(const EvalCase& eval_case, 
     double (*value)(const GreitMerit&);
   };
   const Figure figures[] = {
-      {"ar", "amplitude response over its mean (uniform: 1)", "AR / mean AR",
+      {"ar", "amplitude response / its mean", "AR / mean AR",
        [](const GreitMerit& m) { return m.amplitude_response; }},
-      {"pe", "position error (> 0: towards the centre)", "PE (mm)",
+      {"pe", "position error, + inward", "PE (mm)",
        [](const GreitMerit& m) { return m.position_error_mm; }},
       {"res", "resolution", "RES", [](const GreitMerit& m) { return m.resolution; }},
       {"sd", "shape deformation", "SD", [](const GreitMerit& m) { return m.shape_deformation; }},
@@ -171,24 +173,26 @@ std::vector<std::string> write_figure_of_merit_plots(const EvalCase& eval_case, 
     for (std::size_t i = 0; i < merit.methods.size(); ++i) {
       const MethodMerit& m = merit.methods[i];
       if (m.samples.empty()) continue;
-      std::vector<const MeritSample*> sorted;
-      for (const MeritSample& s : m.samples) sorted.push_back(&s);
-      std::stable_sort(sorted.begin(), sorted.end(), [](const MeritSample* a, const MeritSample* b) {
-        return a->distance_from_centre_mm < b->distance_from_centre_mm;
-      });
-      const std::string label = std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? " P" : " dphi") : "");
+      const std::string label =
+          std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? " P" : " dphi") : "");
       PlotSeries s{label, {}, {}, series_colour(static_cast<int>(i)), true, {}};
       const double scale = figure.stem == std::string("ar") ? 1 / m.amplitude_response.mean : 1;
-      for (const MeritSample* sample : sorted) {
-        s.x.push_back(sample->distance_from_centre_mm);
-        s.y.push_back(scale * figure.value(sample->merit));
+      // The places at one distance (one on each ray) averaged: a line per method.
+      std::map<long, std::pair<double, int>> by_distance;  // 0.1 mm bins
+      for (const MeritSample& sample : m.samples) {
+        auto& [sum, count] = by_distance[std::lround(10 * sample.distance_from_centre_mm)];
+        sum += scale * figure.value(sample.merit), ++count;
+      }
+      for (const auto& [bin, sum_count] : by_distance) {
+        s.x.push_back(static_cast<double>(bin) / 10);
+        s.y.push_back(sum_count.first / sum_count.second);
       }
       series.push_back(std::move(s));
     }
     if (series.empty()) continue;
     PlotOptions options;
     options.title = eval_case.name + ": " + figure.title;
-    options.x_label = "distance of the press from the centre (mm)";
+    options.x_label = "distance from the centre (mm), mean over the rays";
     options.y_label = figure.unit;
     const std::string path = stem + figure.stem + ".png";
     write_png(render_line_plot(series, options), path);
