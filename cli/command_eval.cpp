@@ -7,10 +7,10 @@
 #include <string>
 
 #include "commands.hpp"
-#include "eval_merit.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/jobs/eval_job.hpp"
 #include "emit/jobs/real_eval_job.hpp"
+#include "eval_merit.hpp"
 
 namespace emit::cli {
 

@@ -14,15 +14,17 @@ void print_figures_of_merit(const FiguresOfMeritOptions& options, const MeritEva
   const FiguresOfMerit& f = report.merit;
   std::printf("  %d places, presses r %.1f mm, %.1f N; reconstruction mesh %ld triangles\n", f.places,
               options.radius_mm, options.force_N, f.triangles);
-  std::printf("  %-14s %-18s %6s  %-16s %-16s %-16s %-16s %s\n", "method", "AR (mean)", "AR CV",
-              "PE mm", "RES", "SD", "RNG", "blank");
+  std::printf("  %-14s %-18s %6s  %-16s %-16s %-16s %-16s %s\n", "method", "AR (mean)", "AR CV", "PE mm", "RES", "SD",
+              "RNG", "blank");
   for (const MethodMerit& m : f.methods) {
     const char* unit = m.pressure ? "N/N" : "V.mm2/N";
-    const std::string name = std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? "-P" : "-dphi") : "");
-    std::printf("  %-14s %10.4g %-7s %5.1f %%  %+6.2f +/- %5.2f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %d\n",
-                name.c_str(), m.amplitude_response.mean, unit, 100 * m.amplitude_response_cv,
-                m.position_error_mm.mean, m.position_error_mm.std, m.resolution.mean, m.resolution.std,
-                m.shape_deformation.mean, m.shape_deformation.std, m.ringing.mean, m.ringing.std, m.blank);
+    const std::string name =
+        std::string(method_name(m.method)) + (is_linear(m.method) ? (m.pressure ? "-P" : "-dphi") : "");
+    std::printf(
+        "  %-14s %10.4g %-7s %5.1f %%  %+6.2f +/- %5.2f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %6.3f +/- %5.3f  %d\n",
+        name.c_str(), m.amplitude_response.mean, unit, 100 * m.amplitude_response_cv, m.position_error_mm.mean,
+        m.position_error_mm.std, m.resolution.mean, m.resolution.std, m.shape_deformation.mean, m.shape_deformation.std,
+        m.ringing.mean, m.ringing.std, m.blank);
   }
   for (const std::string& path : report.plots) std::printf("  wrote %s\n", path.c_str());
 }
@@ -36,10 +38,8 @@ void print_offsets_header(const ResolvabilityStudy& s, const char* first) {
 }
 
 void print_value(double value, const char* format) {
-  if (std::isnan(value))
-    std::printf("  %10s", "-");
-  else
-    std::printf(format, value);
+  if (std::isnan(value)) std::printf("  %10s", "-");
+  else std::printf(format, value);
 }
 
 }  // namespace
@@ -53,10 +53,8 @@ void print_resolvability(const ResolvabilityOptions& options, const Resolvabilit
   for (std::size_t i = 0; i < s.radii_mm.size(); ++i) {
     std::printf("    r %5.1f mm        ", s.radii_mm[i]);
     for (const RoundContactBound& b : s.round[i])
-      if (std::isnan(b.radius_std_mm))
-        std::printf("  %10s", "-");
-      else
-        std::printf("  %5.2g/%.2g/%.2g", b.radius_std_mm, b.x_std_mm, 100 * b.log_force_std);
+      if (std::isnan(b.radius_std_mm)) std::printf("  %10s", "-");
+      else std::printf("  %5.2g/%.2g/%.2g", b.radius_std_mm, b.x_std_mm, 100 * b.log_force_std);
     std::printf("\n");
   }
   std::printf("  (ii) two parallel bars %.0f x %.0f mm at %.2f N/mm2 against the best single bar: delta chi2\n",

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <utility>
 #include <numbers>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
@@ -87,7 +87,9 @@ std::vector<Vector2> figure_of_merit_places(const Sensor& sensor, const FiguresO
     }
   const Vector2 centre = sum / inside;
   const double clearance = options.radius_mm + options.margin_mm;
-  const auto fits = [&](const Vector2& p) { return border.contains(p) && border.distance_to_border_mm(p) >= clearance; };
+  const auto fits = [&](const Vector2& p) {
+    return border.contains(p) && border.distance_to_border_mm(p) >= clearance;
+  };
   if (!fits(centre)) throw InvalidInput("figures of merit: the press does not fit at the sheet's centre");
   std::vector<Vector2> places{centre};
   for (int k = 0; k < options.rays; ++k) {
@@ -157,10 +159,8 @@ std::vector<std::string> write_figure_of_merit_plots(const EvalCase& eval_case, 
     double (*value)(const GreitMerit&);
   };
   const Figure figures[] = {
-      {"ar", "amplitude response / its mean", "AR / mean AR",
-       [](const GreitMerit& m) { return m.amplitude_response; }},
-      {"pe", "position error, + inward", "PE (mm)",
-       [](const GreitMerit& m) { return m.position_error_mm; }},
+      {"ar", "amplitude response / its mean", "AR / mean AR", [](const GreitMerit& m) { return m.amplitude_response; }},
+      {"pe", "position error, + inward", "PE (mm)", [](const GreitMerit& m) { return m.position_error_mm; }},
       {"res", "resolution", "RES", [](const GreitMerit& m) { return m.resolution; }},
       {"sd", "shape deformation", "SD", [](const GreitMerit& m) { return m.shape_deformation; }},
       {"rng", "ringing", "RNG", [](const GreitMerit& m) { return m.ringing; }},

@@ -63,8 +63,7 @@ ResolvabilityStudy study_resolvability(const Sensor& sensor, const FitModel& fit
   for (double radius : options.radii_mm) {
     std::vector<RoundContactBound> row;
     for (double offset : options.offsets_mm) {
-      if (!fits(place(offset), radius / std::sqrt(2.0), radius / std::sqrt(2.0)) ||
-          !fits(place(offset), radius, 0)) {
+      if (!fits(place(offset), radius / std::sqrt(2.0), radius / std::sqrt(2.0)) || !fits(place(offset), radius, 0)) {
         row.push_back({NAN, NAN, NAN, NAN, NAN, NAN, NAN});
         continue;
       }
@@ -99,11 +98,11 @@ ResolvabilityStudy study_resolvability(const Sensor& sensor, const FitModel& fit
   for (double inner : options.ring_inner_mm) {
     std::vector<double> row;
     for (double offset : options.offsets_mm)
-      row.push_back(fits(place(offset), options.ring_outer_mm / std::sqrt(2.0), options.ring_outer_mm / std::sqrt(2.0)) &&
-                            fits(place(offset), options.ring_outer_mm, 0)
-                        ? r.ring_against_disc(place(offset), inner, options.ring_outer_mm, options.pressure_N_per_mm2)
-                              .delta_chi2
-                        : NAN);
+      row.push_back(
+          fits(place(offset), options.ring_outer_mm / std::sqrt(2.0), options.ring_outer_mm / std::sqrt(2.0)) &&
+                  fits(place(offset), options.ring_outer_mm, 0)
+              ? r.ring_against_disc(place(offset), inner, options.ring_outer_mm, options.pressure_N_per_mm2).delta_chi2
+              : NAN);
     s.ring_delta_chi2.push_back(row);
   }
   return s;

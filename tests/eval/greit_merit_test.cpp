@@ -119,9 +119,8 @@ TEST(GreitMerit, EllipseShapeDeformation) {
     covered += 0.5 * std::pow(std::min(rho, c), 2) * 2 * std::numbers::pi / n;
   }
   const double expected = 1 - covered / (std::numbers::pi * a * b);
-  const Vector image = drawn([&](const Vector2& p) {
-    return std::pow((p.x() - 30) / a, 2) + std::pow((p.y() - 30) / b, 2) <= 1 ? 1.0 : 0.0;
-  });
+  const Vector image = drawn(
+      [&](const Vector2& p) { return std::pow((p.x() - 30) / a, 2) + std::pow((p.y() - 30) / b, 2) <= 1 ? 1.0 : 0.0; });
   const GreitMerit m = greit_figures_of_merit(square_mesh(), image, {30, 30}, 1);
   EXPECT_GT(expected, 0.15);  // an elongated outline is far from its circle
   EXPECT_NEAR(m.shape_deformation, expected, h_mm / b);

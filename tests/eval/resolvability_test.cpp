@@ -63,11 +63,11 @@ TEST(Resolvability, JacobianMatchesFiniteDifferences) {
   };
   const double h = 1e-4;
   const Disc d{c.x(), c.y(), r, g};
-  const Vector columns[4] = {
-      (dV({d.x_mm + h, d.y_mm, r, g}) - dV({d.x_mm - h, d.y_mm, r, g})) / (2 * h),
-      (dV({d.x_mm, d.y_mm + h, r, g}) - dV({d.x_mm, d.y_mm - h, r, g})) / (2 * h),
-      (dV({d.x_mm, d.y_mm, r + h, g}) - dV({d.x_mm, d.y_mm, r - h, g})) / (2 * h),
-      (dV({d.x_mm, d.y_mm, r, g * std::exp(h)}) - dV({d.x_mm, d.y_mm, r, g * std::exp(-h)})) / (2 * h)};
+  const Vector columns[4] = {(dV({d.x_mm + h, d.y_mm, r, g}) - dV({d.x_mm - h, d.y_mm, r, g})) / (2 * h),
+                             (dV({d.x_mm, d.y_mm + h, r, g}) - dV({d.x_mm, d.y_mm - h, r, g})) / (2 * h),
+                             (dV({d.x_mm, d.y_mm, r + h, g}) - dV({d.x_mm, d.y_mm, r - h, g})) / (2 * h),
+                             (dV({d.x_mm, d.y_mm, r, g * std::exp(h)}) - dV({d.x_mm, d.y_mm, r, g * std::exp(-h)})) /
+                                 (2 * h)};
   for (int k = 0; k < 4; ++k) {
     const Vector analytic = J.col(k) * b.r.noise_V();
     EXPECT_LT((analytic - columns[k]).norm(), 1e-3 * columns[k].norm()) << "column " << k;
@@ -98,8 +98,7 @@ TEST(Resolvability, FramePinsTheCentreAndTotalNotTheRadius) {
   const double tiny = b.r.round_contact_bound(centre, 2, 8).radius_std_mm;
   const double large = b.r.round_contact_bound(centre, 6, 8).radius_std_mm;
   const double near_border = b.r.round_contact_bound({46, 30}, 3, 8).radius_std_mm;
-  std::printf("sigma r: r 2 mm %.2f, r 6 mm %.2f at the centre; r 3 mm 16 mm from it %.2f\n", tiny, large,
-              near_border);
+  std::printf("sigma r: r 2 mm %.2f, r 6 mm %.2f at the centre; r 3 mm 16 mm from it %.2f\n", tiny, large, near_border);
   EXPECT_GT(tiny, large);
   EXPECT_LT(near_border, small.radius_std_mm);
 }
@@ -113,9 +112,10 @@ TEST(Resolvability, BarsPartWithTheirGap) {
   const double close = b.r.two_bars_against_one(c, 3, 20, 2, 0.1).delta_chi2;
   const AlternativeFit wide_fit = b.r.two_bars_against_one(c, 3, 20, 6, 0.1);
   const double wide = wide_fit.delta_chi2;
-  std::printf("two bars 3 x 20 mm, 0.1 N/mm2: delta chi2 %.3g (no gap), %.3g (2 mm), %.3g (6 mm; the frame's own %.3g; "
-              "one bar %.2f x %.2f mm)\n",
-              none, close, wide, wide_fit.signal_chi2, wide_fit.parameters[0], wide_fit.parameters[1]);
+  std::printf(
+      "two bars 3 x 20 mm, 0.1 N/mm2: delta chi2 %.3g (no gap), %.3g (2 mm), %.3g (6 mm; the frame's own %.3g; "
+      "one bar %.2f x %.2f mm)\n",
+      none, close, wide, wide_fit.signal_chi2, wide_fit.parameters[0], wide_fit.parameters[1]);
   EXPECT_LT(none, 1e-6);
   EXPECT_GT(wide, close);
 }
@@ -127,8 +127,8 @@ TEST(Resolvability, RingHoleShowsWithItsSize) {
   const double none = b.r.ring_against_disc(c, 0, 9, 0.1).delta_chi2;
   const double small = b.r.ring_against_disc(c, 3, 9, 0.1).delta_chi2;
   const double large = b.r.ring_against_disc(c, 6, 9, 0.1).delta_chi2;
-  std::printf("ring of outer r 9 mm, 0.1 N/mm2: delta chi2 %.3g (no hole), %.3g (hole 3 mm), %.3g (hole 6 mm)\n",
-              none, small, large);
+  std::printf("ring of outer r 9 mm, 0.1 N/mm2: delta chi2 %.3g (no hole), %.3g (hole 3 mm), %.3g (hole 6 mm)\n", none,
+              small, large);
   EXPECT_LT(none, 1e-6);
   EXPECT_GT(large, small);
 }

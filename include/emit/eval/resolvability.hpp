@@ -47,9 +47,9 @@ using SignedDistance = std::function<double(const Vector2&)>;
 
 /// The best single-region explanation of a frame, and how far the frame is from it.
 struct AlternativeFit {
-  double delta_chi2 = 0;            ///< min ‖frame − alternative‖² / σ²
-  std::vector<double> parameters;   ///< the fitted shape's (mm) and log g last
-  double signal_chi2 = 0;           ///< ‖frame's δV‖² / σ², for scale
+  double delta_chi2 = 0;           ///< min ‖frame − alternative‖² / σ²
+  std::vector<double> parameters;  ///< the fitted shape's (mm) and log g last
+  double signal_chi2 = 0;          ///< ‖frame's δV‖² / σ², for scale
 };
 
 class Resolvability {
@@ -90,7 +90,8 @@ class Resolvability {
  private:
   /// Levenberg–Marquardt on `parameters` (forward differences, `steps`) of the frame `shape`
   /// gives, against `target` δV.
-  AlternativeFit fit_alternative(const Vector& target, const std::function<SignedDistance(const Eigen::VectorXd&)>& shape,
+  AlternativeFit fit_alternative(const Vector& target,
+                                 const std::function<SignedDistance(const Eigen::VectorXd&)>& shape,
                                  Eigen::VectorXd parameters, const Eigen::VectorXd& steps);
   const Sensor& sensor_;
   const FitModel& fit_;
@@ -99,8 +100,8 @@ class Resolvability {
   FramePredictor predictor_;
   DiscContactIntegrator integrator_;
   Frame frame_, d_frame_;
-  std::vector<Eigen::Matrix3d> piece_integrals_;     ///< per piece, ∫φ_iφ_j / the parent's area
-  std::vector<Eigen::Vector3d> piece_barycentric_;   ///< per piece, its centroid
+  std::vector<Eigen::Matrix3d> piece_integrals_;    ///< per piece, ∫φ_iφ_j / the parent's area
+  std::vector<Eigen::Vector3d> piece_barycentric_;  ///< per piece, its centroid
 };
 
 }  // namespace emit

@@ -14,11 +14,11 @@ namespace emit {
 struct ResolvabilityOptions {
   /// Distances from the sheet's centre along +x (towards the middle of a side on a square).
   std::vector<double> offsets_mm{0, 8, 16, 20};
-  std::vector<double> radii_mm{2, 3, 4, 6, 8, 10, 12};  ///< round presses
-  double force_N = 8;                                   ///< of each round press
-  double bar_width_mm = 3, bar_length_mm = 20;          ///< the two parallel bars (a ruler's edge)
+  std::vector<double> radii_mm{2, 3, 4, 6, 8, 10, 12};          ///< round presses
+  double force_N = 8;                                           ///< of each round press
+  double bar_width_mm = 3, bar_length_mm = 20;                  ///< the two parallel bars (a ruler's edge)
   std::vector<double> gaps_mm{0.5, 1, 1.5, 2, 3, 4, 6, 8, 10};  ///< ascending
-  double ring_outer_mm = 9;                             ///< a bottle's rim: 12–18 mm across
+  double ring_outer_mm = 9;                                     ///< a bottle's rim: 12–18 mm across
   std::vector<double> ring_inner_mm{2, 4, 6, 7};
   double pressure_N_per_mm2 = 0.1;  ///< of the bars and rings
   double clearance_mm = 1;          ///< every region this far inside the border at least
