@@ -57,24 +57,31 @@ void print_resolvability(const ResolvabilityOptions& options, const Resolvabilit
       else std::printf("  %5.2g/%.2g/%.2g", b.radius_std_mm, b.x_std_mm, 100 * b.log_force_std);
     std::printf("\n");
   }
-  std::printf("  (ii) two parallel bars %.0f x %.0f mm at %.2f N/mm2 against the best single bar: delta chi2\n",
-              options.bar_width_mm, options.bar_length_mm, options.pressure_N_per_mm2);
-  print_offsets_header(s, "gap \\ offset");
-  for (std::size_t g = 0; g < s.gaps_mm.size(); ++g) {
-    std::printf("    gap %5.1f mm      ", s.gaps_mm[g]);
-    for (double v : s.gap_delta_chi2[g]) print_value(v, "  %10.3g");
+  for (const bool held : {false, true}) {
+    std::printf("  (ii%s) two parallel bars %.0f x %.0f mm at %.2f N/mm2 against the best single bar%s: delta chi2\n",
+                held ? "b" : "", options.bar_width_mm, options.bar_length_mm, options.pressure_N_per_mm2,
+                held ? " at their pressure" : "");
+    print_offsets_header(s, "gap \\ offset");
+    const auto& gaps = held ? s.gap_delta_chi2_held : s.gap_delta_chi2;
+    for (std::size_t g = 0; g < s.gaps_mm.size(); ++g) {
+      std::printf("    gap %5.1f mm      ", s.gaps_mm[g]);
+      for (double v : gaps[g]) print_value(v, "  %10.3g");
+      std::printf("\n");
+    }
+    std::printf("    resolved (>= %.0f) ", Resolvability::resolved_delta_chi2);
+    for (double v : held ? s.resolvable_gap_held_mm : s.resolvable_gap_mm) print_value(v, "  %7.1f mm");
     std::printf("\n");
   }
-  std::printf("    resolved (>= %.0f) ", Resolvability::resolved_delta_chi2);
-  for (double v : s.resolvable_gap_mm) print_value(v, "  %7.1f mm");
-  std::printf("\n");
-  std::printf("  (iii) a ring of outer radius %.0f mm at %.2f N/mm2 against the best full disc: delta chi2\n",
-              options.ring_outer_mm, options.pressure_N_per_mm2);
-  print_offsets_header(s, "hole r \\ offset");
-  for (std::size_t h = 0; h < s.ring_inner_mm.size(); ++h) {
-    std::printf("    hole r %4.1f mm   ", s.ring_inner_mm[h]);
-    for (double v : s.ring_delta_chi2[h]) print_value(v, "  %10.3g");
-    std::printf("\n");
+  for (const bool held : {false, true}) {
+    std::printf("  (iii%s) a ring of outer radius %.0f mm at %.2f N/mm2 against the best full disc%s: delta chi2\n",
+                held ? "b" : "", options.ring_outer_mm, options.pressure_N_per_mm2, held ? " at its pressure" : "");
+    print_offsets_header(s, "hole r \\ offset");
+    const auto& rings = held ? s.ring_delta_chi2_held : s.ring_delta_chi2;
+    for (std::size_t h = 0; h < s.ring_inner_mm.size(); ++h) {
+      std::printf("    hole r %4.1f mm   ", s.ring_inner_mm[h]);
+      for (double v : rings[h]) print_value(v, "  %10.3g");
+      std::printf("\n");
+    }
   }
   std::printf("  delta chi2 >= %.0f: one frame tells the two apart (2.3 %% error either way); n frames: n times it\n",
               Resolvability::resolved_delta_chi2);

@@ -95,7 +95,7 @@ std::vector<Vector2> figure_of_merit_places(const Sensor& sensor, const FiguresO
   for (int k = 0; k < options.rays; ++k) {
     const double angle = options.rays == 1 ? 0 : std::numbers::pi / 4 * k / (options.rays - 1);
     const Vector2 u(std::cos(angle), std::sin(angle));
-    for (double t = options.step_mm; fits(centre + t * u); t += options.step_mm) places.push_back(centre + t * u);
+    for (double t = options.step_mm; fits(centre + t * u); t += options.step_mm) places.emplace_back(centre + t * u);
   }
   return places;
 }

@@ -27,7 +27,8 @@ std::vector<Vector3> piece_centroids(int levels) {
     pieces = std::move(finer);
   }
   std::vector<Vector3> centroids;
-  for (const auto& [a, b, c] : pieces) centroids.push_back((a + b + c) / 3);
+  centroids.reserve(pieces.size());
+  for (const auto& [a, b, c] : pieces) centroids.emplace_back((a + b + c) / 3);
   return centroids;
 }
 

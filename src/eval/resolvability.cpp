@@ -155,7 +155,8 @@ Vector Resolvability::region_dV(const SignedDistance& region, double conductance
 
 AlternativeFit Resolvability::fit_alternative(const Vector& target,
                                               const std::function<SignedDistance(const Eigen::VectorXd&)>& shape,
-                                              Eigen::VectorXd parameters, const Eigen::VectorXd& steps) {
+                                              Eigen::VectorXd parameters, const Eigen::VectorXd& steps,
+                                              bool hold_last) {
   const Index n = parameters.size();  // the last is log g
   const auto residual = [&](const Eigen::VectorXd& q) -> Vector {
     return (region_dV(shape(q), std::exp(q[n - 1])) - target) / noise_V_;
@@ -166,6 +167,10 @@ AlternativeFit Resolvability::fit_alternative(const Vector& target,
   bool converged = false;
   for (int iteration = 0; iteration < 50 && !converged && cost > 0; ++iteration) {
     for (Index k = 0; k < n; ++k) {  // central differences: Δχ² is ~1e-7 of the signal's χ²
+      if (hold_last && k == n - 1) {
+        J.col(k).setZero();  // no step along it (the damping keeps the system regular)
+        continue;
+      }
       Eigen::VectorXd up = parameters, down = parameters;
       up[k] += steps[k], down[k] -= steps[k];
       J.col(k) = (residual(up) - residual(down)) / (2 * steps[k]);
@@ -200,7 +205,7 @@ AlternativeFit Resolvability::fit_alternative(const Vector& target,
 }
 
 AlternativeFit Resolvability::two_bars_against_one(const Vector2& centre_mm, double width_mm, double length_mm,
-                                                   double gap_mm, double pressure_N_per_mm2) {
+                                                   double gap_mm, double pressure_N_per_mm2, bool hold_pressure) {
   if (!(width_mm > 0) || !(length_mm > 0) || gap_mm < 0 || !(pressure_N_per_mm2 > 0))
     throw InvalidInput("resolvability: bars need a positive width, length and pressure and a gap ≥ 0");
   const double g = sensor_.contact.conductance_S_per_mm2(pressure_N_per_mm2);
@@ -216,13 +221,14 @@ AlternativeFit Resolvability::two_bars_against_one(const Vector2& centre_mm, dou
   };
   const double outer = 2 * width_mm + gap_mm;
   Eigen::VectorXd start(3), steps(3);
-  start << outer, length_mm, std::log(g * 2 * width_mm / outer);  // the same total conductance
+  // The same total conductance, or (held) the same pressure and so about the bars' area.
+  start << (hold_pressure ? 2 * width_mm : outer), length_mm, std::log(hold_pressure ? g : g * 2 * width_mm / outer);
   steps << 0.05, 0.05, 0.005;
-  return fit_alternative(target, one, start, steps);
+  return fit_alternative(target, one, start, steps, hold_pressure);
 }
 
 AlternativeFit Resolvability::ring_against_disc(const Vector2& centre_mm, double inner_mm, double outer_mm,
-                                                double pressure_N_per_mm2) {
+                                                double pressure_N_per_mm2, bool hold_pressure) {
   if (!(inner_mm >= 0) || !(outer_mm > inner_mm) || !(pressure_N_per_mm2 > 0))
     throw InvalidInput("resolvability: a ring needs 0 ≤ inner < outer radius and a positive pressure");
   const double g = sensor_.contact.conductance_S_per_mm2(pressure_N_per_mm2);
@@ -235,9 +241,11 @@ AlternativeFit Resolvability::ring_against_disc(const Vector2& centre_mm, double
     return [=](const Vector2& p) { return (p - centre_mm).norm() - q[0]; };
   };
   Eigen::VectorXd start(2), steps(2);
-  start << outer_mm, std::log(g * (1 - inner_mm * inner_mm / (outer_mm * outer_mm)));
+  const double area_fraction = 1 - inner_mm * inner_mm / (outer_mm * outer_mm);
+  start << (hold_pressure ? outer_mm * std::sqrt(area_fraction) : outer_mm),
+      std::log(hold_pressure ? g : g * area_fraction);
   steps << 0.05, 0.005;
-  return fit_alternative(target, disc, start, steps);
+  return fit_alternative(target, disc, start, steps, hold_pressure);
 }
 
 }  // namespace emit

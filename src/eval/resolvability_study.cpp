@@ -72,38 +72,48 @@ ResolvabilityStudy study_resolvability(const Sensor& sensor, const FitModel& fit
     s.round.push_back(row);
   }
 
-  progress.say("  two bars against one");
-  for (double gap : options.gaps_mm) {
-    std::vector<double> row;
-    for (double offset : options.offsets_mm) {
-      const double half_x = options.bar_width_mm + gap / 2;
-      row.push_back(fits(place(offset), half_x, options.bar_length_mm / 2)
-                        ? r.two_bars_against_one(place(offset), options.bar_width_mm, options.bar_length_mm, gap,
-                                                 options.pressure_N_per_mm2)
-                              .delta_chi2
-                        : NAN);
+  const auto smallest_resolved = [&](const std::vector<std::vector<double>>& delta_chi2) {
+    std::vector<double> gaps;
+    for (std::size_t o = 0; o < options.offsets_mm.size(); ++o) {
+      double smallest = NAN;
+      for (std::size_t g = options.gaps_mm.size(); g-- > 0;) {
+        if (!(delta_chi2[g][o] >= Resolvability::resolved_delta_chi2)) break;
+        smallest = options.gaps_mm[g];
+      }
+      gaps.push_back(smallest);
     }
-    s.gap_delta_chi2.push_back(row);
-  }
-  for (std::size_t o = 0; o < options.offsets_mm.size(); ++o) {
-    double smallest = NAN;
-    for (std::size_t g = options.gaps_mm.size(); g-- > 0;) {
-      if (!(s.gap_delta_chi2[g][o] >= Resolvability::resolved_delta_chi2)) break;
-      smallest = options.gaps_mm[g];
+    return gaps;
+  };
+  for (const bool held : {false, true}) {
+    progress.say(held ? "  two bars against one at their pressure" : "  two bars against one");
+    auto& table = held ? s.gap_delta_chi2_held : s.gap_delta_chi2;
+    for (double gap : options.gaps_mm) {
+      std::vector<double> row;
+      for (double offset : options.offsets_mm) {
+        const double half_x = options.bar_width_mm + gap / 2;
+        row.push_back(fits(place(offset), half_x, options.bar_length_mm / 2)
+                          ? r.two_bars_against_one(place(offset), options.bar_width_mm, options.bar_length_mm, gap,
+                                                   options.pressure_N_per_mm2, held)
+                                .delta_chi2
+                          : NAN);
+      }
+      table.push_back(row);
     }
-    s.resolvable_gap_mm.push_back(smallest);
-  }
+    (held ? s.resolvable_gap_held_mm : s.resolvable_gap_mm) = smallest_resolved(table);
 
-  progress.say("  rings against discs");
-  for (double inner : options.ring_inner_mm) {
-    std::vector<double> row;
-    for (double offset : options.offsets_mm)
-      row.push_back(
-          fits(place(offset), options.ring_outer_mm / std::sqrt(2.0), options.ring_outer_mm / std::sqrt(2.0)) &&
-                  fits(place(offset), options.ring_outer_mm, 0)
-              ? r.ring_against_disc(place(offset), inner, options.ring_outer_mm, options.pressure_N_per_mm2).delta_chi2
-              : NAN);
-    s.ring_delta_chi2.push_back(row);
+    progress.say(held ? "  rings against discs at their pressure" : "  rings against discs");
+    auto& rings = held ? s.ring_delta_chi2_held : s.ring_delta_chi2;
+    const double diagonal = options.ring_outer_mm / std::sqrt(2.0);
+    for (double inner : options.ring_inner_mm) {
+      std::vector<double> row;
+      for (double offset : options.offsets_mm)
+        row.push_back(
+            fits(place(offset), diagonal, diagonal) && fits(place(offset), options.ring_outer_mm, 0)
+                ? r.ring_against_disc(place(offset), inner, options.ring_outer_mm, options.pressure_N_per_mm2, held)
+                      .delta_chi2
+                : NAN);
+      rings.push_back(row);
+    }
   }
   return s;
 }

@@ -22,14 +22,15 @@ constexpr double side_mm = 60, h_mm = 0.5;
 const Mesh& square_mesh() {
   static const Mesh mesh = [] {
     Mesh m;
-    const int n = static_cast<int>(side_mm / h_mm);
+    const auto n = static_cast<Index>(side_mm / h_mm);
     m.nodes_mm.resize((n + 1) * (n + 1), 3);
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) m.nodes_mm.row(j * (n + 1) + i) << i * h_mm, j * h_mm, 0;
+    for (Index j = 0; j <= n; ++j)
+      for (Index i = 0; i <= n; ++i) m.nodes_mm.row(j * (n + 1) + i) << i * h_mm, j * h_mm, 0;
     m.triangles.resize(2 * n * n, 3);
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+    for (Index j = 0; j < n; ++j)
+      for (Index i = 0; i < n; ++i) {
+        const auto a = static_cast<int>(j * (n + 1) + i), b = a + 1, c = a + static_cast<int>(n) + 2,
+                   d = a + static_cast<int>(n) + 1;
         m.triangles.row(2 * (j * n + i)) << a, b, c;
         m.triangles.row(2 * (j * n + i) + 1) << a, c, d;
       }

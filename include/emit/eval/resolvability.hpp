@@ -75,12 +75,15 @@ class Resolvability {
 
   /// Two parallel bars `width_mm` × `length_mm` (long along y), `gap_mm` apart across x, centred
   /// at `centre_mm`, each at `pressure`: against the best single bar about the same centre.
+  /// `hold_pressure`: the single bar at the bars' own pressure (a prior that knows it), only its
+  /// shape fitted.
   AlternativeFit two_bars_against_one(const Vector2& centre_mm, double width_mm, double length_mm, double gap_mm,
-                                      double pressure_N_per_mm2);
+                                      double pressure_N_per_mm2, bool hold_pressure = false);
 
   /// A ring of radii `inner_mm` < `outer_mm` at `pressure`: against the best full disc about its centre.
+  /// `hold_pressure`: the disc at the ring's pressure, only its radius fitted.
   AlternativeFit ring_against_disc(const Vector2& centre_mm, double inner_mm, double outer_mm,
-                                   double pressure_N_per_mm2);
+                                   double pressure_N_per_mm2, bool hold_pressure = false);
 
   /// The measurements' δV of a region (with no region for reference), for tests.
   Vector region_dV(const SignedDistance& region, double conductance_S_per_mm2);
@@ -88,11 +91,11 @@ class Resolvability {
   double rim_mm = 0.5;  ///< the outlines' smoothed rim, half-width
 
  private:
-  /// Levenberg–Marquardt on `parameters` (forward differences, `steps`) of the frame `shape`
-  /// gives, against `target` δV.
+  /// Levenberg–Marquardt on `parameters` (central differences, `steps`) of the frame `shape`
+  /// gives, against `target` δV; the last (log g) held if `hold_last`.
   AlternativeFit fit_alternative(const Vector& target,
                                  const std::function<SignedDistance(const Eigen::VectorXd&)>& shape,
-                                 Eigen::VectorXd parameters, const Eigen::VectorXd& steps);
+                                 Eigen::VectorXd parameters, const Eigen::VectorXd& steps, bool hold_last);
   const Sensor& sensor_;
   const FitModel& fit_;
   const MeasurementSet& measurements_;

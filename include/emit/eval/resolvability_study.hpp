@@ -42,6 +42,9 @@ struct ResolvabilityStudy {
   std::vector<double> resolvable_gap_mm;
   /// [inner radius][offset]: Δχ² of the ring against the best full disc.
   std::vector<std::vector<double>> ring_delta_chi2;
+  /// The same three with the alternative held at the outline's own pressure (a prior that knows it).
+  std::vector<std::vector<double>> gap_delta_chi2_held, ring_delta_chi2_held;
+  std::vector<double> resolvable_gap_held_mm;
 };
 
 /// On the flat sheet of `sensor`, whose fit model is `fit`. \throw InvalidInput (a curved sheet,
