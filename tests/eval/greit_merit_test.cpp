@@ -25,7 +25,8 @@ const Mesh& square_mesh() {
     const auto n = static_cast<Index>(side_mm / h_mm);
     m.nodes_mm.resize((n + 1) * (n + 1), 3);
     for (Index j = 0; j <= n; ++j)
-      for (Index i = 0; i <= n; ++i) m.nodes_mm.row(j * (n + 1) + i) << i * h_mm, j * h_mm, 0;
+      for (Index i = 0; i <= n; ++i)
+        m.nodes_mm.row(j * (n + 1) + i) << static_cast<double>(i) * h_mm, static_cast<double>(j) * h_mm, 0;
     m.triangles.resize(2 * n * n, 3);
     for (Index j = 0; j < n; ++j)
       for (Index i = 0; i < n; ++i) {
