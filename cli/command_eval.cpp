@@ -10,6 +10,7 @@
 #include "emit/core/errors.hpp"
 #include "emit/jobs/eval_job.hpp"
 #include "emit/jobs/real_eval_job.hpp"
+#include "eval_merit.hpp"
 
 namespace emit::cli {
 
@@ -28,6 +29,7 @@ struct EvalArgs {
   RealEvalJob real;  ///< --real DIR: a real skin's presses
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
+  MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
 };
 
 /// `emit eval --realistic`: the realistic round on each chosen sheet (the 60 mm one by default).
@@ -76,6 +78,9 @@ void run_eval(EvalArgs args) {
   if (args.realistic->count() > 0) return run_realistic(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
+  if (run_merit_eval(args.merit, args.sheet, args.options.methods, args.options.mesh_seed, args.options.seed,
+                     args.options.quick))
+    return;
   const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet);
   std::printf("emit eval: twin on a finer mesh (seed %d), 12-bit ADC, 1 mV noise; %s grid of single presses\n",
               args.options.mesh_seed, args.options.quick ? "a coarse" : "a jittered");
@@ -140,6 +145,7 @@ void add_eval_command(CLI::App& app) {
                   "With --real: write the located presses as JSON Lines (\"frame\": the row of frames.csv)")
       ->type_name("FILE")
       ->needs(real);
+  add_merit_eval_options(cmd, a->merit);
   cmd->add_flag("!--no-mismatches", o.mismatches, "Skip the sensor-mismatch runs");
   cmd->add_option("--plots", a->plots_dir, "Folder for the error-versus-lambda and L-curve plots (\"\": none)")
       ->capture_default_str();

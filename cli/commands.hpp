@@ -24,6 +24,10 @@ struct SimulateReport;
 struct SheetEvalReport;
 struct RealEvalJob;
 struct RealEvalReport;
+struct FiguresOfMeritOptions;
+struct MeritEvalReport;
+struct ResolvabilityOptions;
+struct ResolvabilityStudy;
 }  // namespace emit
 
 namespace emit::cli {
@@ -95,6 +99,10 @@ void print_realistic_evaluation(const RealisticEvaluation& evaluation);
 void print_sheet_evaluation(const EvalCase& eval_case, const SheetEvalReport& report, bool sweep);
 /// `emit eval --real`'s report: the held-out error and its curve (eval_tables.cpp).
 void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report);
+/// `emit eval --figures-of-merit`'s table for one sheet: GREIT's figures per method (merit_tables.cpp).
+void print_figures_of_merit(const FiguresOfMeritOptions& options, const MeritEvalReport& report);
+/// `emit eval --resolvability`'s tables for one sheet: what a frame can tell (merit_tables.cpp).
+void print_resolvability(const ResolvabilityOptions& options, const ResolvabilityStudy& study);
 
 /// The realistic sheet's summary on stderr, for the user to compare a calibration with; `path`: the
 /// file holding all of it.
