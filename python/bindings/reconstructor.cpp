@@ -28,6 +28,7 @@ struct ContactRow {
   double x_mm, y_mm, z_mm, nx, ny, nz;
   double area_mm2, pressure_N_per_mm2, peak_pressure_N_per_mm2, force_N;
   double x_std_mm, y_std_mm, pressure_std_N_per_mm2, force_std_N;
+  double semi_major_mm, semi_minor_mm, orientation_deg, area_std_mm2, orientation_std_deg;
   std::int32_t element_count;
 };
 
@@ -47,6 +48,11 @@ ContactRow row_of(std::int64_t frame, const Contact& c) {
           c.y_std_mm,
           c.pressure_std_N_per_mm2,
           c.force_std_N,
+          c.semi_major_mm,
+          c.semi_minor_mm,
+          c.orientation_deg,
+          c.area_std_mm2,
+          c.orientation_std_deg,
           c.element_count};
 }
 
@@ -158,14 +164,15 @@ py::list contact_list(const std::vector<Contact>& contacts) {
 void bind_reconstructor(py::module_& m) {
   PYBIND11_NUMPY_DTYPE(ContactRow, frame, x_mm, y_mm, z_mm, nx, ny, nz, area_mm2, pressure_N_per_mm2,
                        peak_pressure_N_per_mm2, force_N, x_std_mm, y_std_mm, pressure_std_N_per_mm2, force_std_N,
-                       element_count);
+                       semi_major_mm, semi_minor_mm, orientation_deg, area_std_mm2, orientation_std_deg, element_count);
   m.attr("CONTACT_DTYPE") = py::dtype::of<ContactRow>();
 
   py::class_<Contact>(m, "Contact", R"(A contact: where the sheet is pressed and how hard.
 
 The point (x_mm, y_mm, z_mm) on the sheet and its outward normal (nx, ny, nz); the area [mm^2];
-mean and peak pressure [N/mm^2]; force [N]; and 1-sigma uncertainties (contact fitting; 0 where
-not estimated). Read-only.)")
+mean and peak pressure [N/mm^2]; force [N]; 1-sigma uncertainties (contact fitting; 0 where
+not estimated); the outline's ellipse of the same second moments, semi-axes [mm] and the major
+axis's angle from x [deg] (the `shapes` method fits it, with 1-sigma of area and angle). Read-only.)")
       .def_readonly("x_mm", &Contact::x_mm)
       .def_readonly("y_mm", &Contact::y_mm)
       .def_readonly("z_mm", &Contact::z_mm)
@@ -180,6 +187,11 @@ not estimated). Read-only.)")
       .def_readonly("y_std_mm", &Contact::y_std_mm)
       .def_readonly("pressure_std_N_per_mm2", &Contact::pressure_std_N_per_mm2)
       .def_readonly("force_std_N", &Contact::force_std_N)
+      .def_readonly("semi_major_mm", &Contact::semi_major_mm)
+      .def_readonly("semi_minor_mm", &Contact::semi_minor_mm)
+      .def_readonly("orientation_deg", &Contact::orientation_deg)
+      .def_readonly("area_std_mm2", &Contact::area_std_mm2)
+      .def_readonly("orientation_std_deg", &Contact::orientation_std_deg)
       .def_readonly("element_count", &Contact::element_count)
       .def(
           "as_dict",
