@@ -63,8 +63,8 @@ ForceFit fit_image_force_law(const std::vector<ForceSample>& samples) {
 
   ceres::Problem problem;
   for (const ForceSample& s : samples)
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LogForceResidual, 1, 1, 1, 1>(new LogForceResidual{
-                                 1.0 / s.integral_V_mm2, x_min, std::log(s.true_force_N)}),
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LogForceResidual, 1, 1, 1, 1>(
+                                 new LogForceResidual{1.0 / s.integral_V_mm2, x_min, std::log(s.true_force_N)}),
                              nullptr, &b1, &c, &b3);
   problem.SetParameterLowerBound(&b1, 0, 0.0);
   problem.SetParameterLowerBound(&c, 0, 1e-12 * c);

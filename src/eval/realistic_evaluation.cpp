@@ -173,9 +173,9 @@ void evaluate_paper(const EvalCase& c, const RealisticRuns& runs, RealisticEvalu
   const PressCalibrationResult calibration =
       calibrate_from_presses(c.sensor, options, runs.reference, runs.calibration_frames, runs.calibration);
   Pipeline paper(c.sensor, PipelineOptions{.method = Method::paper}, calibration.calibration, progress.stage);
-  result.paper = score_single_presses(reconstruct(paper, runs.reference, runs.test_frames, "test press (paper)",
-                                                  progress),
-                                      runs.test);
+  result.paper =
+      score_single_presses(reconstruct(paper, runs.reference, runs.test_frames, "test press (paper)", progress),
+                           runs.test);
   ContactSequence contacts;
   PressSequence presses;
   for (std::size_t k = 0; k < runs.indenters.size(); ++k) {

@@ -146,9 +146,9 @@ void evaluate_automatic_lambda(const EvalCase& c, const Runs& runs, Reconstructi
 /// presses (its force law; pipeline/press_calibration.hpp), and with eq. 8 alone (forces Σ P_k A_k
 /// over the 50 % region, as before the force law).
 void evaluate_linear_forces(const ReconstructionModel& model, const Runs& runs, MethodEvaluation& result) {
-  const PressCalibrationResult calibration = calibrate_linear(model, FrameOptions{}.threshold_fraction,
-                                                              runs.calibration.reference, runs.calibration.frames,
-                                                              runs.calibration.presses);
+  const PressCalibrationResult calibration =
+      calibrate_linear(model, FrameOptions{}.threshold_fraction, runs.calibration.reference, runs.calibration.frames,
+                       runs.calibration.presses);
   const auto score = [&](const LinearCalibration& linear) {
     Reconstructor reconstructor(model, linear);
     reconstructor.set_reference(runs.test.reference);

@@ -60,8 +60,9 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
 ImageForceLaw force_law_from_json(const std::string& path, const nlohmann::json& j) {
   const std::string where = path + ": force_law";
   if (!j.is_object())
-    throw InvalidInput(where + ": must be an object {\"b1_V_mm2\", \"b2\", \"b3\", \"log_std\", "
-                               "\"indenter_radius_mm\"}");
+    throw InvalidInput(where +
+                       ": must be an object {\"b1_V_mm2\", \"b2\", \"b3\", \"log_std\", "
+                       "\"indenter_radius_mm\"}");
   ImageForceLaw law;
   const std::pair<const char*, double*> fields[] = {{"b1_V_mm2", &law.b1_V_mm2},
                                                     {"b2", &law.b2},

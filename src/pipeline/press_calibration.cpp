@@ -105,7 +105,8 @@ PressCalibrationResult calibrate_linear(const ReconstructionModel& model, double
     const Press& press = truth[f][0];
     const std::vector<Contact>& contacts = reconstructor.process(frames[f]);
     samples.push_back(pressure_sample(reconstructor, threshold_fraction, press.pressure_N_per_mm2()));
-    if (const std::optional<double> integral = press_integral_V_mm2(image_forces, reconstructor.image(), contacts, press))
+    if (const std::optional<double> integral =
+            press_integral_V_mm2(image_forces, reconstructor.image(), contacts, press))
       force_samples.push_back({*integral, press.force_N, press.radius_mm});
   }
   const PressureFit fit = fit_pressure_calibration(samples);

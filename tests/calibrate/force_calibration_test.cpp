@@ -52,13 +52,21 @@ TEST(ForceCalibration, PowerLawAndItsScatter) {
 }
 
 TEST(ForceCalibration, InputsCheckedWithOneLineErrors) {
-  EXPECT_EQ(test::error_of([] { fit_image_force_law({{1, 1, 5}, {2, 2, 5}, {3, 3, 5}}); }),
+  EXPECT_EQ(test::error_of([] {
+              fit_image_force_law({{1, 1, 5}, {2, 2, 5}, {3, 3, 5}});
+            }),
             "force calibration needs at least 4 presses with a contact, got 3");
-  EXPECT_EQ(test::error_of([] { fit_image_force_law({{1, 1, 5}, {2, 2, 5}, {0, 3, 5}, {4, 4, 5}}); }),
+  EXPECT_EQ(test::error_of([] {
+              fit_image_force_law({{1, 1, 5}, {2, 2, 5}, {0, 3, 5}, {4, 4, 5}});
+            }),
             "force calibration press 2: its image's integral is not positive");
-  EXPECT_EQ(test::error_of([] { fit_image_force_law({{1, 1, 5}, {2, 0, 5}, {3, 3, 5}, {4, 4, 5}}); }),
+  EXPECT_EQ(test::error_of([] {
+              fit_image_force_law({{1, 1, 5}, {2, 0, 5}, {3, 3, 5}, {4, 4, 5}});
+            }),
             "force calibration press 1 has no force");
-  EXPECT_EQ(test::error_of([] { fit_image_force_law({{1, 2, 5}, {2, 2, 5}, {3, 2, 5}, {4, 2, 5}}); }),
+  EXPECT_EQ(test::error_of([] {
+              fit_image_force_law({{1, 2, 5}, {2, 2, 5}, {3, 2, 5}, {4, 2, 5}});
+            }),
             "force calibration needs presses of different forces");
 }
 

@@ -69,10 +69,11 @@ TEST(LinearForce, WithinFifteenPercentOnHeldOutPressesOfTheCalibrationsIndenter)
     Reconstructor equation_8(pipeline.model(), linear);
     equation_8.set_reference(reference);
     const double equation_8_error = mean_force_error(equation_8, held_out_frames, held_out);
-    std::printf("%s: mean |force error| %.1f %% on 10 held-out presses (calibration %.1f %%); eq. 8 over the "
-                "region %.0f %%\n",
-                method_name(method), 100 * error, 100 * calibration.force_error, 100 * equation_8_error);
-    EXPECT_LE(error, 0.15) << method_name(method);  // issue 31's bound
+    std::printf(
+        "%s: mean |force error| %.1f %% on 10 held-out presses (calibration %.1f %%); eq. 8 over the "
+        "region %.0f %%\n",
+        method_name(method), 100 * error, 100 * calibration.force_error, 100 * equation_8_error);
+    EXPECT_LE(error, 0.15) << method_name(method);            // issue 31's bound
     EXPECT_GT(equation_8_error, 1.0) << method_name(method);  // the image's force: several times the press's
   }
 }

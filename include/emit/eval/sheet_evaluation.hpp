@@ -62,9 +62,9 @@ struct MethodEvaluation {
   /// `emit reconstruct` reports them (force from emit's force law, model/force_law.hpp), and with
   /// eq. 8 alone (force Σ P_k A_k over the 50 % region, the image's: as before the force law).
   std::optional<SinglePressScore> calibrated, equation_8_forces;
-  double ms_per_frame = 0;                         ///< fit: the grid's frames
-  long fit_mesh_nodes = 0;                         ///< fit
-  std::vector<SweepPoint> sweep;                   ///< linear methods
+  double ms_per_frame = 0;        ///< fit: the grid's frames
+  long fit_mesh_nodes = 0;        ///< fit
+  std::vector<SweepPoint> sweep;  ///< linear methods
   /// Linear methods with no λ² given: the automatic rule's λ² (model/lambda_rule.hpp), its
   /// positional error on the same frames, and the spectrum's scale (trace/M of J Q⁻¹ Jᵀ).
   double auto_lambda2 = 0, spectrum_scale = 0;

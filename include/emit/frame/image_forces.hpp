@@ -31,7 +31,8 @@ class ImageForces {
 
   /// The contacts with force, area, pressures and σs from `law` on their integrals, strongest
   /// first; position and element count as found. Valid until the next call.
-  const std::vector<Contact>& apply(const ImageForceLaw& law, const Vector& image, const std::vector<Contact>& contacts);
+  const std::vector<Contact>& apply(const ImageForceLaw& law, const Vector& image,
+                                    const std::vector<Contact>& contacts);
 
  private:
   std::vector<double> areas_mm2_;
