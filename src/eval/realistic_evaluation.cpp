@@ -172,7 +172,7 @@ void evaluate_paper(const EvalCase& c, const RealisticRuns& runs, RealisticEvalu
   options.method = Method::paper;
   const PressCalibrationResult calibration =
       calibrate_from_presses(c.sensor, options, runs.reference, runs.calibration_frames, runs.calibration);
-  Pipeline paper(c.sensor, PipelineOptions{.method = Method::paper}, calibration.calibration, progress.stage);
+  Pipeline paper(c.sensor, PipelineOptions{Method::paper, 0, "", {}}, calibration.calibration, progress.stage);
   result.paper =
       score_single_presses(reconstruct(paper, runs.reference, runs.test_frames, "test press (paper)", progress),
                            runs.test);

@@ -19,7 +19,7 @@ namespace emit {
 namespace {
 
 /// A linear image's integral over the part of the sheet nearest the contact nearest the press
-/// (frame/image_forces.hpp); none when the frame shows no contact.
+/// (frame/image_forces.hpp); none when the frame shows no contact or that integral is not positive.
 std::optional<double> press_integral_V_mm2(ImageForces& image_forces, const Vector& image,
                                            const std::vector<Contact>& contacts, const Press& press) {
   if (contacts.empty()) return std::nullopt;
@@ -31,6 +31,7 @@ std::optional<double> press_integral_V_mm2(ImageForces& image_forces, const Vect
     };
     if (distance(contacts[j]) < distance(contacts[nearest])) nearest = j;
   }
+  if (!(integrals[nearest] > 0)) return std::nullopt;  // the contact's share of the image is noise
   return integrals[nearest];
 }
 

@@ -59,7 +59,8 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
 
 /// The linear methods' calibration on `model` as built (its operator, its λ²): eq. 8 fitted to the
 /// single presses' pressures and emit's force law to their contacts' integrals of the image (the
-/// contact nearest each press; presses without a contact are left out of the force law).
+/// contact nearest each press; presses without a contact, or whose contact's integral is not
+/// positive, are left out of the force law).
 /// calibrate_from_presses calls it for a linear method; the evaluation, on its own models.
 /// \throw InvalidInput (frames and truth of different lengths, too few single presses or presses
 /// with a contact, all of one force), SolverError.
