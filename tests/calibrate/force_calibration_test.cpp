@@ -16,6 +16,7 @@ namespace {
 
 std::vector<ForceSample> samples_of(const ImageForceLaw& law, const std::vector<double>& integrals, double radius_mm) {
   std::vector<ForceSample> samples;
+  samples.reserve(integrals.size());
   for (double I : integrals) samples.push_back({I, law.force_N(I), radius_mm});
   return samples;
 }

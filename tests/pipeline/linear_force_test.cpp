@@ -39,6 +39,7 @@ TEST(LinearForce, WithinFifteenPercentOnHeldOutPressesOfTheCalibrationsIndenter)
   twin_options.noise_seed = 17;
   Twin twin(sensor, twin_options);
   std::vector<Frame> untouched;
+  untouched.reserve(10);
   for (int i = 0; i < 10; ++i) untouched.push_back(twin.frame({}));
   const Reference reference = average_reference(untouched);
   PressStyle style;
