@@ -2,6 +2,7 @@
 // a3 for the linear methods; the sheet and the contact law as contact fitting sees them), and
 // eq. 2's alpha, gamma from resistance-pressure pairs.
 #include <cstdio>
+#include <optional>
 
 #include "commands.hpp"
 #include "emit/jobs/calibrate_job.hpp"
@@ -44,6 +45,12 @@ void print_presses(const CalibrateJob& job, const PressCalibrationResult& r) {
     const auto& linear = std::get<LinearCalibration>(r.calibration);
     std::printf("fitted P = (a1/dphi + a2)^a3 on %zu presses (%s, lambda2 = %g): a1 = %.6g, a2 = %.6g, a3 = %.6g\n",
                 r.presses, method_name(job.options.method), r.lambda2, linear.a1, linear.a2, linear.a3);
+    if (const std::optional<ImageForceLaw>& f = linear.force_law)
+      std::printf(
+          "fitted the force F = (b1/I + b2)^b3 on the image's integral I over %zu presses: b1 = %.6g V mm2, b2 = "
+          "%.6g, b3 = %.6g; mean |force error| %.1f %% (rms log %.3f); contacts will be reported with the presses' "
+          "mean indenter radius, %.2f mm\n",
+          r.force_presses, f->b1_V_mm2, f->b2, f->b3, 100 * r.force_error, f->log_std, f->indenter_radius_mm);
   }
   std::printf("residuals: rms %.4f N/mm2, largest %.4f N/mm2 (%.1f %% of a 0.5 N/mm2 full scale); wrote %s\n",
               r.rms_N_per_mm2, r.max_abs_N_per_mm2, 100 * r.max_abs_N_per_mm2 / 0.5, job.out_path.c_str());

@@ -32,6 +32,16 @@ void print_automatic(const MethodEvaluation& m) {
   std::printf("\n");
 }
 
+/// A linear method's test presses after `emit calibrate`: force by emit's force law, and by eq. 8
+/// summed over the 50 % region (as before the force law).
+void print_linear_forces(const SinglePressScore& law, const SinglePressScore& equation_8) {
+  std::printf(
+      "      calibrated force: %4.1f %% mean |error| (bias %+.1f %%; within 1 sigma %3.0f %%, 2 sigma %3.0f %%), "
+      "pressure F/A %.4f N/mm2; eq. 8 summed over the 50 %% region: %.1f %% (x%.2f)\n",
+      100 * law.force_error, 100 * law.force_bias, 100 * law.within_1_sigma, 100 * law.within_2_sigma,
+      law.pressure_error_N_per_mm2, 100 * equation_8.force_error, 1 + equation_8.force_bias);
+}
+
 void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
   if (sweep)
     for (const SweepPoint& p : m.sweep)
@@ -50,6 +60,7 @@ void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
     std::printf("  (%.0f ms a frame, %ld mesh nodes; 2 match: within 2 mm)", m.ms_per_frame, m.fit_mesh_nodes);
   std::printf("\n");
   if (is_linear(m.method)) print_automatic(m);
+  if (m.calibrated && m.equation_8_forces) print_linear_forces(*m.calibrated, *m.equation_8_forces);
 }
 
 void print_mismatches(const SheetEvaluation& e) {

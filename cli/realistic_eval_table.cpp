@@ -84,6 +84,13 @@ void print_realistic_evaluation(const RealisticEvaluation& e) {
   for (const IndenterScore& i : e.indenters)
     std::printf(" %s %.1f mm %+.1f %%%s", profile_name(i.profile), i.radius_mm, 100 * i.score.force_bias,
                 &i == &e.indenters.back() ? "\n" : ",");
+  const SinglePressScore &p = e.paper, &po = e.paper_other_indenters, &p8 = e.paper_equation_8;
+  std::printf(
+      "  paper method after emit calibrate --method paper (force from the image's integral): force %.1f %% "
+      "mean |error| (bias %+.1f %%), pressure %.4f N/mm2, position %.2f mm; other indenters: force %.1f %% "
+      "(within 1 sigma %.0f %%, 2 sigma %.0f %%); eq. 8 summed over the 50 %% region: force %.1f %% (x%.2f)\n",
+      100 * p.force_error, 100 * p.force_bias, p.pressure_error_N_per_mm2, p.position_mm.mean, 100 * po.force_error,
+      100 * po.within_1_sigma, 100 * po.within_2_sigma, 100 * p8.force_error, 1 + p8.force_bias);
   for (const std::string& w : e.calibration_warnings)
     std::fprintf(stderr, "emit: warning: calibration: %s\n", w.c_str());
 }

@@ -41,6 +41,22 @@ the contact law and sheet as contact fitting sees them. Made by emit.calibrate o
             return std::holds_alternative<LinearCalibration>(c.calibration) ? "linear" : "fit";
           },
           "'linear' (for paper, noser, laplacian) or 'fit' (for contact fitting).")
+      .def_property_readonly(
+          "force_law",
+          [](const PythonCalibration& c) -> std::optional<py::dict> {
+            const auto* linear = std::get_if<LinearCalibration>(&c.calibration);
+            if (!linear || !linear->force_law) return std::nullopt;
+            const ImageForceLaw& f = *linear->force_law;
+            py::dict law;
+            law["b1_V_mm2"] = f.b1_V_mm2;
+            law["b2"] = f.b2;
+            law["b3"] = f.b3;
+            law["log_std"] = f.log_std;
+            law["indenter_radius_mm"] = f.indenter_radius_mm;
+            return law;
+          },
+          "A linear calibration's force law, F = (b1/I + b2)^b3 on the image's integral I [V mm^2] (its keys as "
+          "in the file); None for contact fitting, or a file written before it (forces are then the image's).")
       .def_readonly("presses", &PythonCalibration::presses, "Single presses it was fitted on (0: read from a file).")
       .def_readonly("rms_N_per_mm2", &PythonCalibration::rms_N_per_mm2,
                     "The calibrated pressure's rms error over those presses (None: read from a file).")

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <variant>
 
 #include "emit/core/errors.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -162,6 +163,37 @@ RealisticRuns simulate_round(const EvalCase& c, const RealisticSheet& sheet, con
   return runs;
 }
 
+/// Step 4: the paper method, calibrated on the calibration presses as `emit calibrate --method
+/// paper` does, on the test presses and the other indenters; and with eq. 8 alone.
+void evaluate_paper(const EvalCase& c, const RealisticRuns& runs, RealisticEvaluation& result,
+                    const Progress& progress) {
+  progress.say("the paper method, calibrated as emit calibrate --method paper does");
+  PressCalibrationOptions options;
+  options.method = Method::paper;
+  const PressCalibrationResult calibration =
+      calibrate_from_presses(c.sensor, options, runs.reference, runs.calibration_frames, runs.calibration);
+  Pipeline paper(c.sensor, PipelineOptions{Method::paper, 0, "", {}}, calibration.calibration, progress.stage);
+  result.paper =
+      score_single_presses(reconstruct(paper, runs.reference, runs.test_frames, "test press (paper)", progress),
+                           runs.test);
+  ContactSequence contacts;
+  PressSequence presses;
+  for (std::size_t k = 0; k < runs.indenters.size(); ++k) {
+    const ContactSequence found =
+        reconstruct(paper, runs.reference, runs.indenter_frames[k], "other indenter's press (paper)", progress);
+    contacts.insert(contacts.end(), found.begin(), found.end());
+    presses.insert(presses.end(), runs.indenters[k].begin(), runs.indenters[k].end());
+  }
+  result.paper_other_indenters = score_single_presses(contacts, presses);
+  LinearCalibration equation_8 = std::get<LinearCalibration>(calibration.calibration);
+  equation_8.force_law.reset();
+  Reconstructor reconstructor(paper.model(), equation_8);
+  reconstructor.set_reference(runs.reference);
+  contacts.clear();
+  for (const Frame& frame : runs.test_frames) contacts.push_back(reconstructor.process(frame));
+  result.paper_equation_8 = score_single_presses(contacts, runs.test);
+}
+
 }  // namespace
 
 RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const RealisticEvalOptions& options,
@@ -188,6 +220,7 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
   result.calibration_s = seconds_since(calibration_start);
   if (calibration.sheet) result.calibration_warnings = calibration.sheet->warnings;
 
+  evaluate_paper(eval_case, runs, result, progress);
   {  // the nominal description, as before calibrating; its models freed before the calibrated ones
     progress.say("contact fitting with the nominal description");
     Pipeline nominal(eval_case.sensor, PipelineOptions{}, std::nullopt, progress.stage);

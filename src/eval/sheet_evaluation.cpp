@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <numbers>
 #include <tuple>
+#include <variant>
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/calibrate/contact_law_calibration.hpp"
@@ -24,6 +25,7 @@
 #include "emit/model/jacobian.hpp"
 #include "emit/model/lambda_rule.hpp"
 #include "emit/model/reconstruction_model.hpp"
+#include "emit/pipeline/press_calibration.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/line_plot.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -140,6 +142,26 @@ void evaluate_automatic_lambda(const EvalCase& c, const Runs& runs, Reconstructi
   if (c.pressure_and_two_press) result.auto_two_press = two_press_rates(tested, runs.two_press, 0.4 * c.radius_mm * 4);
 }
 
+/// The test presses as `emit reconstruct` reports them after `emit calibrate` on the calibration
+/// presses (its force law; pipeline/press_calibration.hpp), and with eq. 8 alone (forces Σ P_k A_k
+/// over the 50 % region, as before the force law).
+void evaluate_linear_forces(const ReconstructionModel& model, const Runs& runs, MethodEvaluation& result) {
+  const PressCalibrationResult calibration =
+      calibrate_linear(model, FrameOptions{}.threshold_fraction, runs.calibration.reference, runs.calibration.frames,
+                       runs.calibration.presses);
+  const auto score = [&](const LinearCalibration& linear) {
+    Reconstructor reconstructor(model, linear);
+    reconstructor.set_reference(runs.test.reference);
+    ContactSequence contacts;
+    for (const Frame& frame : runs.test.frames) contacts.push_back(reconstructor.process(frame));
+    return score_single_presses(contacts, runs.test.presses);
+  };
+  LinearCalibration linear = std::get<LinearCalibration>(calibration.calibration);
+  result.calibrated = score(linear);
+  linear.force_law.reset();
+  result.equation_8_forces = score(linear);
+}
+
 /// A linear method over the λ² sweep; the best λ² by the paper's positional error.
 MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, ReconstructionModel& model, const Matrix& J,
                                  Method method, const EvalOptions& options) {
@@ -172,6 +194,7 @@ MethodEvaluation evaluate_linear(const EvalCase& c, const Runs& runs, Reconstruc
     result.pressure_error_N_per_mm2 =
         pressure_errors(reconstructor, runs.calibration, runs.test, 0.5).error_N_per_mm2.mean;
     result.two_press = two_press_rates(reconstructor, runs.two_press, 0.4 * c.radius_mm * 4);
+    evaluate_linear_forces(model, runs, result);
   }
   return result;
 }

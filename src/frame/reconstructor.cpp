@@ -24,6 +24,10 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
       selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
       operator_scratch_(model.op.scratch()) {
   options.validate();
+  if (linear_.force_law) {
+    linear_.force_law->validate();
+    image_forces_.emplace(model.mesh);
+  }
   double sheet_area_mm2 = 0;
   for (Index t = 0; t < model.mesh.triangle_count(); ++t) sheet_area_mm2 += model.mesh.triangle_area_mm2(t);
   const double cell_mm2 = sheet_area_mm2 / std::max(1, model.measurements.size());
@@ -78,7 +82,8 @@ const std::vector<Contact>& Reconstructor::process(const FrameView& frame) {
   linear_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
   const std::vector<Contact>& linear =
       finder_.find(selected_, pressure_, dphi_, min_area_mm2_, &floor_);  // significant ones, a cell or more
-  return fitter_ ? fit_contacts(linear) : linear;
+  if (fitter_) return fit_contacts(linear);
+  return image_forces_ ? image_forces_->apply(*linear_.force_law, dphi_, linear) : linear;
 }
 
 const std::vector<Contact>& Reconstructor::fit_contacts(const std::vector<Contact>& linear) {

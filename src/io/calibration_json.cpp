@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -52,6 +55,36 @@ SheetCorrection sheet_correction_from_json(const std::string& path, const nlohma
   return c;
 }
 
+/// {"b1_V_mm2", "b2", "b3", "log_std", "indenter_radius_mm"}, every key required
+/// (model/force_law.hpp).
+ImageForceLaw force_law_from_json(const std::string& path, const nlohmann::json& j) {
+  const std::string where = path + ": force_law";
+  if (!j.is_object())
+    throw InvalidInput(where +
+                       ": must be an object {\"b1_V_mm2\", \"b2\", \"b3\", \"log_std\", "
+                       "\"indenter_radius_mm\"}");
+  ImageForceLaw law;
+  const std::pair<const char*, double*> fields[] = {{"b1_V_mm2", &law.b1_V_mm2},
+                                                    {"b2", &law.b2},
+                                                    {"b3", &law.b3},
+                                                    {"log_std", &law.log_std},
+                                                    {"indenter_radius_mm", &law.indenter_radius_mm}};
+  for (const auto& item : j.items())
+    if (std::none_of(std::begin(fields), std::end(fields), [&](const auto& f) { return item.key() == f.first; }))
+      throw InvalidInput(where + ": " + item.key() + ": unknown key");
+  for (const auto& [key, value] : fields) {
+    if (!j.contains(key)) throw InvalidInput(where + ": " + key + ": missing");
+    if (!j[key].is_number() || !std::isfinite(j[key].get<double>()))
+      throw InvalidInput(where + ": " + key + ": must be a finite number");
+    *value = j[key].get<double>();
+  }
+  if (!(law.b1_V_mm2 >= 0)) throw InvalidInput(where + ": b1_V_mm2 must not be negative");
+  if (!(law.b3 < 0)) throw InvalidInput(where + ": b3 must be negative (the force grows with the image)");
+  if (!(law.log_std >= 0)) throw InvalidInput(where + ": log_std must not be negative");
+  if (!(law.indenter_radius_mm > 0)) throw InvalidInput(where + ": indenter_radius_mm must be positive");
+  return law;
+}
+
 }  // namespace
 
 Calibration load_calibration(const std::string& path) {
@@ -92,6 +125,11 @@ Calibration load_calibration(const std::string& path) {
       fit.sensor_name = item.value().get<std::string>();
       continue;
     }
+    if (item.key() == "force_law") {
+      if (law) throw InvalidInput(path + ": force_law: unknown key in a contact-fitting calibration");
+      linear.force_law = force_law_from_json(path, item.value());
+      continue;
+    }
     if (law && item.key() == "report") {
       if (!item.value().is_object()) throw InvalidInput(path + ": report: must be an object");
       continue;  // what the calibration found, for people: not read back
@@ -127,7 +165,16 @@ Calibration load_calibration(const std::string& path) {
 
 namespace {
 
-nlohmann::json to_json(const LinearCalibration& c) { return {{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}}; }
+nlohmann::json to_json(const LinearCalibration& c) {
+  nlohmann::json j{{"a1", c.a1}, {"a2", c.a2}, {"a3", c.a3}};
+  if (const std::optional<ImageForceLaw>& f = c.force_law)
+    j["force_law"] = {{"b1_V_mm2", f->b1_V_mm2},
+                      {"b2", f->b2},
+                      {"b3", f->b3},
+                      {"log_std", f->log_std},
+                      {"indenter_radius_mm", f->indenter_radius_mm}};
+  return j;
+}
 
 nlohmann::json to_json(const FitCalibration& c) {
   nlohmann::json j{{"alpha_ohm_mm2", c.contact_law.alpha_ohm_mm2}, {"gamma", c.contact_law.gamma}};

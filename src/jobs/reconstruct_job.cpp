@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <variant>
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/core/errors.hpp"
@@ -89,6 +90,10 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   if (!job.calibration_path.empty()) {
     calibration = load_calibration(job.calibration_path);
     check_calibration_for_method(*calibration, job.method, job.calibration_path);
+    if (const auto* linear = std::get_if<LinearCalibration>(&*calibration); linear && !linear->force_law)
+      progress.warn(job.calibration_path +
+                    ": no force_law (written before emit calibrated forces): each contact's force and area are eq. "
+                    "8's over its 50 % region, the image's, several times the press's; run emit calibrate again");
   }
   prepare_output_folder({"--images", job.images_dir});
 

@@ -1,11 +1,14 @@
 #include "emit/pipeline/press_calibration.hpp"
 
+#include <optional>
 #include <tuple>
 
 #include "emit/calibrate/contact_law_calibration.hpp"
+#include "emit/calibrate/force_calibration.hpp"
 #include "emit/calibrate/pressure_calibration.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
+#include "emit/frame/image_forces.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/fit_model.hpp"
@@ -14,6 +17,23 @@
 namespace emit {
 
 namespace {
+
+/// A linear image's integral over the part of the sheet nearest the contact nearest the press
+/// (frame/image_forces.hpp); none when the frame shows no contact or that integral is not positive.
+std::optional<double> press_integral_V_mm2(ImageForces& image_forces, const Vector& image,
+                                           const std::vector<Contact>& contacts, const Press& press) {
+  if (contacts.empty()) return std::nullopt;
+  const std::vector<double>& integrals = image_forces.integrals(image, contacts);
+  std::size_t nearest = 0;
+  for (std::size_t j = 1; j < contacts.size(); ++j) {
+    const auto distance = [&](const Contact& c) {
+      return Vector3(c.x_mm - press.x_mm, c.y_mm - press.y_mm, c.z_mm - press.z_mm).norm();
+    };
+    if (distance(contacts[j]) < distance(contacts[nearest])) nearest = j;
+  }
+  if (!(integrals[nearest] > 0)) return std::nullopt;  // the contact's share of the image is noise
+  return integrals[nearest];
+}
 
 /// Contact fitting's calibration: the sheet (if asked), then the contact law on the corrected sheet.
 PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibrationOptions& options,
@@ -68,6 +88,43 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
 
 }  // namespace
 
+PressCalibrationResult calibrate_linear(const ReconstructionModel& model, double threshold_fraction,
+                                        const Reference& reference, const std::vector<Frame>& frames,
+                                        const PressSequence& truth) {
+  if (truth.size() != frames.size())
+    throw InvalidInput("calibration: " + std::to_string(truth.size()) + " frames of presses for " +
+                       std::to_string(frames.size()) + " frames");
+  FrameOptions frame_options;
+  frame_options.threshold_fraction = threshold_fraction;
+  Reconstructor reconstructor(model, model.uncalibrated, frame_options);
+  reconstructor.set_reference(reference);
+  ImageForces image_forces(model.mesh);
+  std::vector<PressureSample> samples;
+  std::vector<ForceSample> force_samples;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    const Press& press = truth[f][0];
+    const std::vector<Contact>& contacts = reconstructor.process(frames[f]);
+    samples.push_back(pressure_sample(reconstructor, threshold_fraction, press.pressure_N_per_mm2()));
+    if (const std::optional<double> integral =
+            press_integral_V_mm2(image_forces, reconstructor.image(), contacts, press))
+      force_samples.push_back({*integral, press.force_N, press.radius_mm});
+  }
+  const PressureFit fit = fit_pressure_calibration(samples);
+  LinearCalibration calibration = fit.calibration;
+  const ForceFit force = fit_image_force_law(force_samples);
+  calibration.force_law = force.law;
+  PressCalibrationResult result;
+  result.calibration = calibration;
+  result.presses = samples.size();
+  result.rms_N_per_mm2 = fit.rms_N_per_mm2;
+  result.max_abs_N_per_mm2 = fit.max_abs_N_per_mm2;
+  result.force_presses = force_samples.size();
+  result.force_error = force.mean_abs_relative_error;
+  result.lambda2 = model.options.lambda2;
+  return result;
+}
+
 PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressCalibrationOptions& options,
                                               const Reference& reference, const std::vector<Frame>& frames,
                                               const PressSequence& truth,
@@ -80,27 +137,9 @@ PressCalibrationResult calibrate_from_presses(const Sensor& sensor, const PressC
   if (options.lambda2 > 0) operator_options_.lambda2 = options.lambda2;
   const ReconstructionModel model =
       build_reconstruction_model(sensor, operator_options_, options.cache_dir, {}, progress);
-  PressCalibrationResult result;
-  if (!is_linear(options.method))
-    result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
+  if (is_linear(options.method)) return calibrate_linear(model, options.threshold_fraction, reference, frames, truth);
+  PressCalibrationResult result = calibrate_fitting(sensor, options, model, reference, frames, truth, progress);
   result.lambda2 = model.options.lambda2;  // the λ² chosen, when left to the rule
-  if (!is_linear(options.method)) return result;
-
-  FrameOptions frame_options;
-  frame_options.threshold_fraction = options.threshold_fraction;
-  Reconstructor reconstructor(model, model.uncalibrated, frame_options);
-  reconstructor.set_reference(reference);
-  std::vector<PressureSample> samples;
-  for (std::size_t f = 0; f < frames.size(); ++f) {
-    if (truth[f].size() != 1) continue;  // calibrate on single presses only
-    reconstructor.process(frames[f]);
-    samples.push_back(pressure_sample(reconstructor, options.threshold_fraction, truth[f][0].pressure_N_per_mm2()));
-  }
-  const PressureFit fit = fit_pressure_calibration(samples);
-  result.calibration = fit.calibration;
-  result.presses = samples.size();
-  result.rms_N_per_mm2 = fit.rms_N_per_mm2;
-  result.max_abs_N_per_mm2 = fit.max_abs_N_per_mm2;
   return result;
 }
 

@@ -90,13 +90,19 @@ TEST(Reconstruction, ProcessAllocatesNothing) {
   options.mesh = twin_mesh_options(s.sensor);
   Twin twin(s.sensor, options);
   const Frame frame = twin.frame({{30, 30, 5, 10}, {15, 45, 4, 8}});
-  Reconstructor reconstructor(s.model, LinearCalibration::uncalibrated(s.sensor));
-  reconstructor.set_reference({twin.frame({}), 1});
-  reconstructor.process(frame);  // warm-up
-  test::AllocationCounter counter;
-  const auto& contacts = reconstructor.process(frame);
-  EXPECT_EQ(counter.count(), 0);
-  EXPECT_GE(contacts.size(), 1u);
+  // Eq. 8 alone, and with a force law: the contacts' forces from the image's integral
+  // (frame/image_forces.hpp) in buffers sized at construction.
+  LinearCalibration with_force_law = LinearCalibration::uncalibrated(s.sensor);
+  with_force_law.force_law = ImageForceLaw{};
+  for (const LinearCalibration& calibration : {LinearCalibration::uncalibrated(s.sensor), with_force_law}) {
+    Reconstructor reconstructor(s.model, calibration);
+    reconstructor.set_reference({twin.frame({}), 1});
+    reconstructor.process(frame);  // warm-up
+    test::AllocationCounter counter;
+    const auto& contacts = reconstructor.process(frame);
+    EXPECT_EQ(counter.count(), 0);
+    EXPECT_GE(contacts.size(), 1u);
+  }
 }
 
 // On a curved sheet too: each contact is placed on the surface with its normal, in place.

@@ -160,6 +160,10 @@ def calibration_json_seeds():
     sheet = {"box_mm": [0, 0, 60, 60], "log_conductance": [0.01, -0.02, 0.03, 0.0, -0.01]}
     return {
         "linear.json": text({"a1": 0.8, "a2": 1.5, "a3": 0.02}),
+        "linear_force_law.json": text({"a1": 0.8, "a2": 1.5, "a3": 0.02,
+                                       "force_law": {"b1_V_mm2": 12.5, "b2": -0.02, "b3": -0.84, "log_std": 0.03,
+                                                     "indenter_radius_mm": 5}}),
+        "broken_force_law.json": text({"a1": 0.8, "a2": 1.5, "a3": 0.02, "force_law": {"b1_V_mm2": 1, "b3": 0.5}}),
         "fit.json": text({"alpha_ohm_mm2": 2.0e5, "gamma": -1.2}),
         "fit_indenter_sheet.json": text({"alpha_ohm_mm2": 1.9e5, "gamma": -1.1, "indenter_radius_mm": 4,
                                          "sheet_correction": sheet}),

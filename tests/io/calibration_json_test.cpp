@@ -24,6 +24,31 @@ TEST(CalibrationJson, LinearRoundTripIsExact) {
   EXPECT_EQ(c.a3, -1.0 / 1.3);
 }
 
+// With emit's force law (model/force_law.hpp): every field back exactly; and a file written
+// before the force law, a1, a2, a3 alone, still loads, without one (its contacts' force and area
+// are then the image's: frame/reconstructor.hpp).
+TEST(CalibrationJson, LinearForceLawRoundTripsAndOldFilesLoadWithout) {
+  const std::string dir = test::temp_folder("calibration_force_law");
+  LinearCalibration linear{3.25, -0.875, -1.0 / 1.3};
+  ImageForceLaw law;
+  law.b1_V_mm2 = 41.0 / 3, law.b2 = -0.0123456789, law.b3 = -0.84, law.log_std = 0.031, law.indenter_radius_mm = 5.25;
+  linear.force_law = law;
+  write_calibration(dir + "/new.json", linear);
+  const auto c = std::get<LinearCalibration>(load_calibration(dir + "/new.json"));
+  ASSERT_TRUE(c.force_law.has_value());
+  EXPECT_EQ(c.force_law->b1_V_mm2, law.b1_V_mm2);
+  EXPECT_EQ(c.force_law->b2, law.b2);
+  EXPECT_EQ(c.force_law->b3, law.b3);
+  EXPECT_EQ(c.force_law->log_std, law.log_std);
+  EXPECT_EQ(c.force_law->indenter_radius_mm, law.indenter_radius_mm);
+  std::ofstream(dir + "/old.json") << R"({"a1": 3.25, "a2": -0.875, "a3": -0.8})";
+  const auto old = std::get<LinearCalibration>(load_calibration(dir + "/old.json"));
+  EXPECT_EQ(old.a1, 3.25);
+  EXPECT_FALSE(old.force_law.has_value());
+  write_calibration(dir + "/old_again.json", old);  // and written back as it was: no force law
+  EXPECT_EQ(test::read_text(dir + "/old_again.json").find("force_law"), std::string::npos);
+}
+
 TEST(CalibrationJson, FitRoundTripKeepsTheSheetAndTheIndenter) {
   const std::string path = test::temp_folder("calibration_fit") + "/c.json";
   FitCalibration fit;
@@ -104,6 +129,30 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"unknown linear key", R"({"a1": 3.3, "a2": -1, "a3": -0.8, "a4": 1})", "a4: unknown key"},
         BadFile{"text value", R"({"a1": "three", "a2": -1, "a3": -0.8})", "a1: must be a finite number"},
         BadFile{"missing gamma", R"({"alpha_ohm_mm2": 2e5})", "gamma: missing"},
+        BadFile{"force law not an object", R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": 2})",
+                "force_law: must be an object {\"b1_V_mm2\", \"b2\", \"b3\", \"log_std\", \"indenter_radius_mm\"}"},
+        BadFile{
+            "force law missing b3",
+            R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": {"b1_V_mm2": 1, "b2": 0, "log_std": 0, "indenter_radius_mm": 5}})",
+            "force_law: b3: missing"},
+        BadFile{
+            "force law unknown key",
+            R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": {"b1_V_mm2": 1, "b2": 0, "b3": -1, "b4": 0, "log_std": 0, "indenter_radius_mm": 5}})",
+            "force_law: b4: unknown key"},
+        BadFile{
+            "force law text",
+            R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": {"b1_V_mm2": "x", "b2": 0, "b3": -1, "log_std": 0, "indenter_radius_mm": 5}})",
+            "force_law: b1_V_mm2: must be a finite number"},
+        BadFile{
+            "force law positive b3",
+            R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": {"b1_V_mm2": 1, "b2": 0, "b3": 1, "log_std": 0, "indenter_radius_mm": 5}})",
+            "force_law: b3 must be negative (the force grows with the image)"},
+        BadFile{
+            "force law no indenter",
+            R"({"a1": 3.3, "a2": -1, "a3": -0.8, "force_law": {"b1_V_mm2": 1, "b2": 0, "b3": -1, "log_std": 0, "indenter_radius_mm": 0}})",
+            "force_law: indenter_radius_mm must be positive"},
+        BadFile{"force law in a fit", R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "force_law": {}})",
+                "force_law: unknown key in a contact-fitting calibration"},
         BadFile{"linear key in a fit", R"({"alpha_ohm_mm2": 2e5, "gamma": -1.2, "a1": 3})",
                 "a1: unknown key in a contact-fitting calibration"},
         BadFile{"positive gamma", R"({"alpha_ohm_mm2": 2e5, "gamma": 1.2})",

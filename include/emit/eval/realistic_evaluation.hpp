@@ -11,7 +11,9 @@
 ///    the test presses reconstructed by contact fitting (Pipeline) with the nominal description
 ///    and with that calibration;
 /// 3. with the calibration: presses of other indenters (flat and spherical, 3 to 10 mm), and
-///    frames of three and of four presses at least 12 mm apart.
+///    frames of three and of four presses at least 12 mm apart;
+/// 4. the paper method calibrated as `emit calibrate --method paper` does on the same presses, its
+///    forces on the test presses and the other indenters.
 ///
 /// Lengths scale with the sheet's indenter (EvalCase::radius_mm / 5 mm) and forces with its
 /// square, so every sheet sees the 60 mm sheet's pressures.
@@ -88,6 +90,10 @@ struct RealisticEvaluation {
   double three_presses = 0, four_presses = 0;
   /// False contacts over every calibrated single press (test presses and other indenters).
   int false_contacts = 0, single_presses = 0;
+  /// The paper method after `emit calibrate --method paper` on the same presses (its force law,
+  /// model/force_law.hpp): the test presses, the other indenters, and the test presses with eq. 8
+  /// alone (force Σ P_k A_k over the 50 % region, as before the force law).
+  SinglePressScore paper, paper_other_indenters, paper_equation_8;
   double calibration_s = 0;         ///< wall time of the calibration (calibrate_from_presses)
   double fit_ms_per_frame = 0;      ///< wall time a calibrated test frame (one press)
   double several_ms_per_frame = 0;  ///< and a frame of three or four presses

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "emit/core/progress.hpp"
+#include "emit/eval/contact_scoring.hpp"
 #include "emit/eval/error_stats.hpp"
 #include "emit/eval/evaluation.hpp"
 #include "emit/model/method.hpp"
@@ -57,9 +58,13 @@ struct MethodEvaluation {
   ErrorStats strongest_contact;                    ///< the strongest contact's centroid
   std::optional<double> pressure_error_N_per_mm2;  ///< mean |error| after calibration on separate presses
   std::optional<TwoPressResult> two_press;         ///< matched within 0.4 × 4 radii (linear) or 2 mm (fit)
-  double ms_per_frame = 0;                         ///< fit: the grid's frames
-  long fit_mesh_nodes = 0;                         ///< fit
-  std::vector<SweepPoint> sweep;                   ///< linear methods
+  /// Linear methods: the test presses after `emit calibrate` on the calibration presses, as
+  /// `emit reconstruct` reports them (force from emit's force law, model/force_law.hpp), and with
+  /// eq. 8 alone (force Σ P_k A_k over the 50 % region, the image's: as before the force law).
+  std::optional<SinglePressScore> calibrated, equation_8_forces;
+  double ms_per_frame = 0;        ///< fit: the grid's frames
+  long fit_mesh_nodes = 0;        ///< fit
+  std::vector<SweepPoint> sweep;  ///< linear methods
   /// Linear methods with no λ² given: the automatic rule's λ² (model/lambda_rule.hpp), its
   /// positional error on the same frames, and the spectrum's scale (trace/M of J Q⁻¹ Jᵀ).
   double auto_lambda2 = 0, spectrum_scale = 0;

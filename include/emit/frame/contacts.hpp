@@ -25,7 +25,8 @@ struct Contact {
   double pressure_N_per_mm2 = 0;       ///< area-weighted mean pressure
   double peak_pressure_N_per_mm2 = 0;  ///< largest element pressure
   double force_N = 0;                  ///< Σ P_k A_k
-  /// 1σ uncertainties, from contact fitting's covariance; 0 where not estimated (linear methods).
+  /// 1σ uncertainties: contact fitting's from its covariance, a calibrated linear method's force and
+  /// pressure from its force law (frame/image_forces.hpp); 0 where not estimated.
   /// The position's are along the chart's two axes (sensor/surface.hpp): x and y on a flat sheet
   /// and a cap, along the axis and around it on a cylinder.
   double x_std_mm = 0, y_std_mm = 0, pressure_std_N_per_mm2 = 0;

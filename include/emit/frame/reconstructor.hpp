@@ -1,7 +1,9 @@
 #pragma once
 /// \file reconstructor.hpp
 /// The online half (docs/architecture.md, the online line): per frame, δV = V − V_ref → δφ = R·δV → threshold →
-/// pressure (eq. 8) → contacts. It allocates nothing per frame: every buffer is sized at construction.
+/// pressure (eq. 8) → contacts, their force from the image's integral when the calibration has a
+/// force law (frame/image_forces.hpp). It allocates nothing per frame: every buffer is sized at
+/// construction.
 #include <cstdint>
 #include <optional>
 #include <variant>
@@ -9,6 +11,7 @@
 
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/contacts.hpp"
+#include "emit/frame/image_forces.hpp"
 #include "emit/frame/reference.hpp"
 #include "emit/frame/shape_refiner.hpp"
 #include "emit/model/calibration.hpp"
@@ -44,8 +47,10 @@ struct FrameOptions {
 class Reconstructor {
  public:
   /// A linear method: eq. 7 by the model's operator, the threshold, eq. 8 by `calibration`, the
-  /// contacts. Keeps a reference to `model`, which must outlive it. \throw InvalidInput for a bad
-  /// option.
+  /// contacts. With the calibration's force law, each contact's force from the image's integral,
+  /// its area the calibration indenter's (frame/image_forces.hpp); without, its force Σ P_k A_k
+  /// and area over its 50 % region, the image's. Keeps a reference to `model`, which must outlive
+  /// it. \throw InvalidInput for a bad option or force law.
   Reconstructor(const ReconstructionModel& model, LinearCalibration calibration, FrameOptions options = {});
   /// Contact fitting (contact_fitter.hpp), seeded by the linear image's contacts (strongest first,
   /// by the model's uncalibrated eq. 8: only their order matters). Contacts are reported with
@@ -86,6 +91,7 @@ class Reconstructor {
   FrameOptions options_;
   double min_area_mm2_ = 0;  ///< the larger of min_contact_area_mm2 and min_contact_cells' area
   ContactFinder finder_;
+  std::optional<ImageForces> image_forces_;  ///< with linear_.force_law
   Vector reference_, dV_, dphi_, pressure_;
   Vector noise_per_volt_;  ///< ‖row k of R‖ times the significance's k
   Vector floor_;

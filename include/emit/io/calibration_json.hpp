@@ -1,11 +1,13 @@
 #pragma once
 /// \file calibration_json.hpp
 /// Pressure calibration files, as `emit calibrate` writes them: {"a1": …, "a2": …, "a3": …}
-/// (paper eq. 8) for the linear methods, {"alpha_ohm_mm2": …, "gamma": …} (eq. 2 as the fit
-/// sees it, with the sheet's correction, the drive voltage, the series resistances and the sensor
-/// it was made for) for contact fitting; other keys are errors. A contact-fitting file may carry a
-/// "report" (what the sensor calibration found, with uncertainties and its goodness of fit), for
-/// people: it is not read back.
+/// (paper eq. 8) for the linear methods, with "force_law": {"b1_V_mm2", "b2", "b3", "log_std",
+/// "indenter_radius_mm"} (emit's force from the image's integral, model/force_law.hpp; a file
+/// written before it loads without one, its contacts' force and area then the image's);
+/// {"alpha_ohm_mm2": …, "gamma": …} (eq. 2 as the fit sees it, with the sheet's correction, the
+/// drive voltage, the series resistances and the sensor it was made for) for contact fitting;
+/// other keys are errors. A contact-fitting file may carry a "report" (what the sensor calibration
+/// found, with uncertainties and its goodness of fit), for people: it is not read back.
 #include <ostream>
 #include <string>
 
