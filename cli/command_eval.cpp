@@ -68,10 +68,8 @@ void run_outlines(EvalArgs& args) {
   const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
   std::printf(
       "emit eval --outlines: flat punches of eight outlines on the twin (mesh seed %d; noise and presses from seed "
-      "%llu), %d of each, 4-16 N%s
-      ",
-      o.mesh_seed,
-      static_cast<unsigned long long>(o.seed), o.presses_per_family,
+      "%llu), %d of each, 4-16 N%s\n",
+      o.mesh_seed, static_cast<unsigned long long>(o.seed), o.presses_per_family,
       args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
   for (const auto& [c, electrodes] : sheets) {
     std::printf("\n%s, %d electrodes\n", c.name.c_str(), electrodes);

@@ -104,6 +104,8 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
                        "\" (or with z_mm after y_mm), got " + quote_input(line));
   const std::string expected = with_z ? ": expected frame,x_mm,y_mm,z_mm,radius_mm,force_N[,pressure_N_per_mm2], got "
                                       : ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
+  // The outline column only where the header names it: another 8th column stays an error.
+  const bool with_outline = line.find(",profile,outline") != std::string::npos;
   PressSequence sequence;
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
@@ -127,7 +129,7 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     if (fields == 6 && rest + 1 < line.size() && line[rest] == ',' &&
         std::isalpha(static_cast<unsigned char>(line[rest + 1]))) {
       std::string name = line.substr(rest + 1);
-      if (const std::size_t comma = name.find(','); comma != std::string::npos) {  // an outline after it
+      if (const std::size_t comma = name.find(','); with_outline && comma != std::string::npos) {  // an outline
         p.outline_mm = parse_outline_text(name.substr(comma + 1), lines.where());
         name.erase(comma);
       }

@@ -115,7 +115,7 @@ Press bar_press(const Vector2& centre_mm, double length_mm, double width_mm, dou
   check_size("bar length", length_mm);
   check_size("bar width", width_mm);
   std::vector<Vector2> polygon;
-  for (const Vector2 corner : {Vector2(-1, -1), Vector2(1, -1), Vector2(1, 1), Vector2(-1, 1)})
+  for (const Vector2& corner : {Vector2(-1, -1), Vector2(1, -1), Vector2(1, 1), Vector2(-1, 1)})
     polygon.push_back(rotated({corner.x() * length_mm / 2, corner.y() * width_mm / 2}, angle_deg));
   return outline_press(centre_mm, {polygon}, force_N);
 }

@@ -52,7 +52,7 @@ std::vector<Press> outline_presses(OutlineFamily family, const Vector2& centre_m
     case OutlineFamily::l_20x4: {
       // Legs along +x and +y from the corner, the bounding box's centre (10, 10) on the centre.
       std::vector<Vector2> l;
-      for (const Vector2 v :
+      for (const Vector2& v :
            {Vector2(0, 0), Vector2(20, 0), Vector2(20, 4), Vector2(4, 4), Vector2(4, 20), Vector2(0, 20)})
         l.push_back(turned(v - Vector2(10, 10), angle_deg));
       return {polygon_press(centre_mm, {l}, force_N)};

@@ -83,7 +83,7 @@ TEST(OutlinePress, DiscBesideAnOutlineKeepsItsConductance) {
 
 // A bar 30 × 3 mm and the same bar turned 90° give different frames: the frame sees orientation.
 // By how much, against the ADC's 1 mV noise: more than 10 mV in the largest reading's change
-// (measured: see the test's output).
+// (measured: 17 mV of a 689 mV signal, the bar at 20° and 110° in the centre).
 TEST(OutlinePress, TurnedBarChangesTheFrame) {
   TwinOptions options;
   options.adc = false;

@@ -30,7 +30,7 @@ struct Press {
   /// them. Empty: the disc of `radius_mm`. With an outline, `radius_mm` is the outline's reach
   /// (its farthest vertex from the centre: press_outline.hpp's constructors set it) and the
   /// profile must be flat.
-  std::vector<std::vector<Vector2>> outline_mm;
+  std::vector<std::vector<Vector2>> outline_mm = {};
   /// The mean pressure over the contact, F/(π r²) for a disc whatever the profile, F/area for an
   /// outline.
   double pressure_N_per_mm2() const;
