@@ -87,6 +87,7 @@ PressSequence calibration_script(const Sensor& sensor, int presses, std::uint64_
 std::vector<Frame> simulate(Twin& twin, const PressSequence& presses, const std::string& what,
                             const Progress& progress) {
   std::vector<Frame> frames;
+  frames.reserve(presses.size());
   for (const std::vector<Press>& p : presses) {
     frames.push_back(twin.frame(p));
     progress.step("simulating " + what, static_cast<long>(frames.size()), static_cast<long>(presses.size()));
@@ -117,6 +118,7 @@ OutlineEvaluation evaluate_outlines(const EvalCase& eval_case, const OutlineEval
   twin_options.noise_seed = options.seed;
   Twin twin(sensor, twin_options);
   std::vector<Frame> references;
+  references.reserve(static_cast<std::size_t>(options.reference_frames));
   for (int i = 0; i < options.reference_frames; ++i) references.push_back(twin.frame({}));
   const Reference reference = average_reference(references);
   const std::vector<Frame> calibration_frames = simulate(twin, calibration_presses, "calibration press", progress);

@@ -101,7 +101,8 @@ double area_dice(const Vector& areas_mm2, const Vector& reconstructed, const Vec
   return 2 * areas_mm2.dot(reconstructed.cwiseProduct(truth)) / (a + b);
 }
 
-double principal_angle_deg(const Eigen::Matrix2d& m) {
+double principal_angle_deg(const Eigen::Matrix2d& second_moments) {
+  const Eigen::Matrix2d& m = second_moments;
   const double angle = 0.5 * std::atan2(2 * m(0, 1), m(0, 0) - m(1, 1)) * 180 / std::numbers::pi;
   return angle <= -90 ? angle + 180 : angle;
 }

@@ -145,7 +145,7 @@ Press parse_outline_press(const std::string& text) {
   const std::size_t colon = text.find(':');
   const std::string kind = text.substr(0, colon), list = colon == std::string::npos ? "" : text.substr(colon + 1);
   const auto expect = [&](const std::string& fields, std::size_t count) {
-    const std::vector<double> v = numbers_of(text, list, fields);
+    std::vector<double> v = numbers_of(text, list, fields);
     if (v.size() != count)
       throw InvalidInput("press " + quote_input(text) + ": expected " + std::to_string(count) + " values " + fields +
                          ", got " + std::to_string(v.size()));
@@ -195,7 +195,7 @@ double press_area_mm2(const Press& press) {
 }
 
 Vector2 press_centroid_mm(const Press& press) {
-  const Vector2 centre(press.x_mm, press.y_mm);
+  Vector2 centre(press.x_mm, press.y_mm);
   if (press.outline_mm.empty()) return centre;
   const PolygonIntegrals s = outline_integrals(press.outline_mm);
   return centre + s.first / s.area;

@@ -20,6 +20,7 @@
 #include "emit/render/image.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/render/shaded_surface.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
@@ -52,6 +53,23 @@ TEST(Cli, SimulatesOnePress) {
   const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
   ASSERT_EQ(truth.size(), 1u);
   EXPECT_EQ(truth[0][0].force_N, 10.0);
+}
+
+// A flat punch of another outline (sensor/press_outline.hpp): a bar and a ring in one frame, the
+// truth with their outlines (README "Files"); each reads back with its area.
+TEST(Cli, SimulatesOutlinePresses) {
+  const std::string dir = test::temp_folder("cli_outline");
+  const auto r =
+      run_emit("simulate --press bar:20,40,20,6,30,8 --press ring:38,22,6,9,6 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/f.csv", 16);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_GT(frames[0].maxCoeff(), 0.1);  // 14 N read hundreds of mV
+  const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  ASSERT_EQ(truth[0].size(), 2u);
+  EXPECT_NEAR(press_area_mm2(truth[0][0]), 120, 1e-6);  // vertices to 9 digits
+  EXPECT_EQ(truth[0][1].outline_mm.size(), 2u);         // the ring's two circles
 }
 
 TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
@@ -795,6 +813,8 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
       << R"("electrodes":{"count":1000,"width_mm":0.1},"mesh":{"element_size_mm":0.9}})";
   std::ofstream(dir + "/long_name.json") << R"({"shape":{"type":"mesh","file":")" << std::string(5000, 'a')
                                          << R"(.step"},"electrodes":[{"at_mm":[0,0,0]},{"at_mm":[1,0,0]}]})";
+  std::ofstream(dir + "/dome.json")
+      << R"({"shape": {"type": "spherical_cap", "sphere_radius_mm": 25, "base_radius_mm": 20}, "electrodes": {"count": 16, "width_mm": 3}})";
   std::ofstream(dir + "/obj.json")
       << R"({"shape":{"type":"mesh","file":"sheet.obj"},"electrodes":[{"at_mm":[0,0,0]}]})";
   std::ofstream(dir + "/closed.json")
@@ -843,6 +863,11 @@ INSTANTIATE_TEST_SUITE_P(
                "simulate --realistic --realistic-drive-V 3.3,3.0 --press 30,30,5,10 --out OUT",
                "--realistic-drive-V: give LOW,HIGH volts with 0 < LOW <= HIGH"},
         BadRun{"unknown profile", "simulate --profile round --press 30,30,5,10 --out OUT", "--profile: round"},
+        BadRun{"unknown outline", "simulate --press star:30,30,5,10 --out OUT", "\"star\" is not an outline"},
+        BadRun{"outline on a dome", "simulate --sensor DIR/dome.json --press bar:0,0,10,4,0,5 --out OUT",
+               "an outline press needs a flat sheet"},
+        BadRun{"spherical outline", "simulate --profile spherical --press bar:30,30,10,4,0,5 --out OUT",
+               "an outline press must be flat"},
         BadRun{"realistic eval seed negative", "eval --realistic -1 --quick",
                "--realistic: the seed must be a whole number 0 or larger, got \"-1\""},
         BadRun{"realistic eval seed not a number", "eval --realistic x --quick",

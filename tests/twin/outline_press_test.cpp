@@ -52,7 +52,8 @@ TEST(OutlinePress, TotalConductanceIsGTimesTheArea) {
     const double area = press_area_mm2(press);
     const double g = sensor.contact.conductance_S_per_mm2(press.force_N / area);
     const double total = press_contact_load(mesh, {press}, sensor.contact, levels).total_conductance_S();
-    const double bound = 2 * d * perimeter_mm(press) + std::numbers::pi * d * d * press.outline_mm.size();
+    const double bound =
+        2 * d * perimeter_mm(press) + std::numbers::pi * d * d * static_cast<double>(press.outline_mm.size());
     EXPECT_LE(std::abs(total / g - area), bound) << "outline of area " << area;
     EXPECT_GT(bound, 0);
   }
