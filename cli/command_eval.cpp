@@ -1,6 +1,7 @@
 // emit eval: accuracy per method on the twin beside the paper's figures; --realistic, a user's
-// round on a realistic sheet beside its targets; --real, a real skin's presses (jobs/eval_job.hpp,
-// jobs/real_eval_job.hpp; their tables: eval_tables.cpp, realistic_eval_table.cpp).
+// round on a realistic sheet beside its targets; --outlines, pressed regions of many outlines per
+// method; --real, a real skin's presses (jobs/eval_job.hpp, jobs/real_eval_job.hpp; their tables:
+// eval_tables.cpp, realistic_eval_table.cpp, outline_eval_table.cpp).
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -26,7 +27,8 @@ struct EvalArgs {
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
   RealisticEvalOptions realistic_options;
-  RealEvalJob real;  ///< --real DIR: a real skin's presses
+  RealEvalJob real;       ///< --real DIR: a real skin's presses
+  bool outlines = false;  ///< --outlines
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
@@ -57,6 +59,27 @@ void run_realistic(EvalArgs& args) {
   }
 }
 
+/// `emit eval --outlines`: pressed outlines per method on each chosen sheet (the 60 mm one by default).
+void run_outlines(EvalArgs& args) {
+  OutlineEvalOptions o = args.options.quick ? quick_outline_options() : OutlineEvalOptions{};
+  o.methods.clear();
+  for (const std::string& name : args.methods) o.methods.push_back(parse_method(name));
+  o.mesh_seed = args.options.mesh_seed;
+  if (args.seed->count() > 0) o.seed = args.options.seed;
+  o.validate();
+  const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
+  std::printf(
+      "emit eval --outlines: flat punches of eight outlines on the twin (mesh seed %d; noise and presses from seed "
+      "%llu), %d of each, 4-16 N%s\n",
+      o.mesh_seed, static_cast<unsigned long long>(o.seed), o.presses_per_family,
+      args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
+  for (const auto& [c, electrodes] : sheets) {
+    std::printf("\n%s, %d electrodes\n", c.name.c_str(), electrodes);
+    std::fflush(stdout);
+    print_outline_evaluation(run_outline_eval_job(c, o, stderr_progress()));
+  }
+}
+
 /// `emit eval --real DIR --sensor S`: a real skin's presses, calibrated on the first N.
 void run_real(EvalArgs& args) {
   RealEvalJob& job = args.real;
@@ -76,6 +99,7 @@ void run_real(EvalArgs& args) {
 void run_eval(EvalArgs args) {
   if (!args.real.folder.empty()) return run_real(args);
   if (args.realistic->count() > 0) return run_realistic(args);
+  if (args.outlines) return run_outlines(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
   if (run_merit_eval(args.merit, args.sheet, args.options.methods, args.options.mesh_seed, args.options.seed,
@@ -107,8 +131,9 @@ void add_eval_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lambda2", o.lambda2, "lambda^2 values to sweep (default: 1 to 1e6, 8 per decade)")->delimiter(',');
   cmd->add_option("--mesh-seed", o.mesh_seed, "Seed of the twin's mesh")->capture_default_str();
-  a->seed =
-      cmd->add_option("--seed", o.seed, "Seed of the presses and of the ADC noise (default 1; with --realistic, 11)");
+  a->seed = cmd->add_option("--seed", o.seed,
+                            "Seed of the presses and of the ADC noise (default 1; with --realistic, 11; with "
+                            "--outlines, 21)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_option("--sheet", a->sheet,
                   "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve, fingertip)");
@@ -119,6 +144,11 @@ void add_eval_command(CLI::App& app) {
                                  "60 mm sheet unless --sheet says; --methods, --lambda2 and the sweep do not apply")
                      ->expected(0, 1)
                      ->type_name("[SEED]");
+  cmd->add_flag("--outlines", a->outlines,
+                "Pressed regions of flat punches of eight outlines (bars, an ellipse, a ring, a palm, an L, two "
+                "bars, a stylus) per method, each calibrated on 40 disc presses: Dice, force, centroid, "
+                "orientation and regions per outline (the 60 mm sheet unless --sheet says; --lambda2 does not apply)")
+      ->excludes(a->realistic);
   CLI::Option* real =
       cmd->add_option("--real", a->real.folder,
                       "A real skin's presses: a folder of frames.csv, references_per_frame.csv (or reference.csv) and "

@@ -82,8 +82,10 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--press", a->presses,
-                  "A press x_mm,y_mm,radius_mm,force_N, or x_mm,y_mm,z_mm,radius_mm,force_N on a curved sheet (repeat "
-                  "for simultaneous presses)");
+                  "A press x_mm,y_mm,radius_mm,force_N, or x_mm,y_mm,z_mm,radius_mm,force_N on a curved sheet; or a "
+                  "flat punch's outline on a flat sheet: bar:x,y,length,width,angle_deg,F, ellipse:x,y,a,b,angle_deg,F "
+                  "(semi-axes), ring:x,y,inner_r,outer_r,F, polygon:x,y,F,u1,v1,u2,v2,u3,v3[,...] (vertices relative "
+                  "to x,y) (repeat for simultaneous presses)");
   cmd->add_option("--script", a->script,
                   "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger or "
                   "moving");

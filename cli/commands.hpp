@@ -18,6 +18,7 @@
 namespace emit {
 struct EvalCase;
 struct RealisticEvaluation;
+struct OutlineEvaluation;
 struct RealisticSheet;
 struct SimulateJob;
 struct SimulateReport;
@@ -95,6 +96,9 @@ std::string examples_dir();
 /// `emit eval --realistic`'s table for one sheet: each figure beside its target
 /// (realistic_eval_table.cpp).
 void print_realistic_evaluation(const RealisticEvaluation& evaluation);
+/// `emit eval --outlines`'s table for one sheet: per method, each outline family's scores
+/// (outline_eval_table.cpp).
+void print_outline_evaluation(const OutlineEvaluation& evaluation);
 /// `emit eval`'s table for one sheet: each method's errors beside the paper's (eval_tables.cpp).
 void print_sheet_evaluation(const EvalCase& eval_case, const SheetEvalReport& report, bool sweep);
 /// `emit eval --real`'s report: the held-out error and its curve (eval_tables.cpp).

@@ -5,11 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/output_file.hpp"
 #include "emit/core/quote_input.hpp"
 #include "emit/io/line_reader.hpp"
+#include "emit/sensor/press_outline.hpp"
 
 namespace emit {
 
@@ -17,6 +20,43 @@ namespace {
 const char* const header = "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2";
 /// On a curved sheet the centre's height too (the surface's point above x, y).
 const char* const header_with_z = "frame,x_mm,y_mm,z_mm,radius_mm,force_N,pressure_N_per_mm2";
+
+/// An outline as one CSV field: "u v;u v;…", polygons separated by '|' (empty for a disc).
+std::string outline_text(const std::vector<std::vector<Vector2>>& outline) {
+  std::string text;
+  char vertex[64];
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    if (k > 0) text += '|';
+    for (std::size_t i = 0; i < outline[k].size(); ++i) {
+      std::snprintf(vertex, sizeof vertex, "%s%.9g %.9g", i > 0 ? ";" : "", outline[k][i].x(), outline[k][i].y());
+      text += vertex;
+    }
+  }
+  return text;
+}
+
+/// outline_text's inverse. \throw InvalidInput naming `where` for a vertex that is not two numbers.
+std::vector<std::vector<Vector2>> parse_outline_text(const std::string& text, const std::string& where) {
+  std::vector<std::vector<Vector2>> outline;
+  if (text.find_first_not_of(" \t") == std::string::npos) return outline;
+  outline.emplace_back();
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t end = text.find_first_of(";|", at);
+    const std::string vertex = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    double u = 0, v = 0;
+    int used = 0;
+    // NOLINTNEXTLINE(cert-err34-c): the field count and the end of the field check it
+    if (std::sscanf(vertex.c_str(), " %lf %lf %n", &u, &v, &used) != 2 ||
+        static_cast<std::size_t>(used) != vertex.size())
+      throw InvalidInput(where + ": outline vertex " + quote_input(vertex) + " is not two numbers \"u v\"");
+    outline.back().emplace_back(u, v);
+    if (end == std::string::npos) break;
+    if (text[end] == '|') outline.emplace_back();
+    at = end + 1;
+  }
+  return outline;
+}
 }  // namespace
 
 void write_presses_csv(const std::string& path, const PressSequence& sequence) {
@@ -28,13 +68,16 @@ void write_presses_csv(const std::string& path, const PressSequence& sequence) {
 void write_presses_csv(std::ostream& out, const PressSequence& sequence) {
   // The profile column only when some press is not flat, so files of flat presses stay as they were.
   // Likewise the z column only where some press is off the plane (a curved sheet).
-  bool profiles = false, heights = false;
+  // And the outline column only where some press has one (its profile written before it).
+  bool profiles = false, heights = false, outlines = false;
   for (const auto& frame : sequence)
     for (const Press& p : frame) {
       profiles = profiles || p.profile != PressProfile::flat;
       heights = heights || p.z_mm != 0;
+      outlines = outlines || !p.outline_mm.empty();
     }
-  out << (heights ? header_with_z : header) << (profiles ? ",profile" : "") << '\n';
+  profiles = profiles || outlines;
+  out << (heights ? header_with_z : header) << (profiles ? ",profile" : "") << (outlines ? ",outline" : "") << '\n';
   char row[256];
   for (std::size_t f = 0; f < sequence.size(); ++f)
     for (const Press& p : sequence[f]) {
@@ -46,6 +89,7 @@ void write_presses_csv(std::ostream& out, const PressSequence& sequence) {
                       p.pressure_N_per_mm2());
       out << row;
       if (profiles) out << ',' << profile_name(p.profile);
+      if (outlines) out << ',' << outline_text(p.outline_mm);
       out << '\n';
     }
 }
@@ -60,6 +104,8 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
                        "\" (or with z_mm after y_mm), got " + quote_input(line));
   const std::string expected = with_z ? ": expected frame,x_mm,y_mm,z_mm,radius_mm,force_N[,pressure_N_per_mm2], got "
                                       : ": expected frame,x_mm,y_mm,radius_mm,force_N[,pressure_N_per_mm2], got ";
+  // The outline column only where the header names it: another 8th column stays an error.
+  const bool with_outline = line.find(",profile,outline") != std::string::npos;
   PressSequence sequence;
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
@@ -83,6 +129,10 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     if (fields == 6 && rest + 1 < line.size() && line[rest] == ',' &&
         std::isalpha(static_cast<unsigned char>(line[rest + 1]))) {
       std::string name = line.substr(rest + 1);
+      if (const std::size_t comma = name.find(','); with_outline && comma != std::string::npos) {  // an outline
+        p.outline_mm = parse_outline_text(name.substr(comma + 1), lines.where());
+        name.erase(comma);
+      }
       name.erase(name.find_last_not_of(" \t") + 1);
       try {
         p.profile = parse_press_profile(name);
@@ -98,6 +148,10 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
         !std::isfinite(p.radius_mm) || !(p.force_N >= 0) || !std::isfinite(p.force_N))
       throw InvalidInput(lines.where() + ": a press needs a finite place, a radius > 0 and a force >= 0, got " +
                          quote_input(line));
+    if (!p.outline_mm.empty()) {
+      validate_outline(p.outline_mm, lines.where());
+      if (p.profile != PressProfile::flat) throw InvalidInput(lines.where() + ": an outline press must be flat");
+    }
     if (static_cast<std::size_t>(frame) >= max_frames)
       throw InvalidInput(lines.where() + ": frame " + std::to_string(frame) + " is beyond the " +
                          std::to_string(max_frames) + " frames it describes");

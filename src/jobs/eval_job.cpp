@@ -32,4 +32,9 @@ RealisticEvaluation run_realistic_eval_job(const EvalCase& eval_case, const Real
   return evaluate_realistic_sheet(eval_case, options, progress);
 }
 
+OutlineEvaluation run_outline_eval_job(const EvalCase& eval_case, const OutlineEvalOptions& options,
+                                       const Progress& progress) {
+  return evaluate_outlines(eval_case, options, progress);
+}
+
 }  // namespace emit

@@ -8,11 +8,15 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/surface.hpp"
 
 namespace emit {
 
-double Press::pressure_N_per_mm2() const { return force_N / (std::numbers::pi * radius_mm * radius_mm); }
+double Press::pressure_N_per_mm2() const {
+  if (!outline_mm.empty()) return force_N / press_area_mm2(*this);
+  return force_N / (std::numbers::pi * radius_mm * radius_mm);
+}
 
 double Press::pressure_at_N_per_mm2(double distance_mm) const {
   if (!(distance_mm <= radius_mm)) return 0.0;
@@ -31,6 +35,7 @@ PressProfile parse_press_profile(const std::string& name) {
 }
 
 Press parse_press(const std::string& text) {
+  if (text.find(':') != std::string::npos) return parse_outline_press(text);
   std::vector<double> values;
   std::stringstream in(text);
   std::string item;
@@ -79,6 +84,11 @@ void validate_press(const Sensor& sensor, const Press& press, const std::string&
     throw InvalidInput(where + ": values must be finite numbers");
   if (!(press.radius_mm > 0)) throw InvalidInput(where + ": radius must be positive");
   if (press.force_N < 0) throw InvalidInput(where + ": force must not be negative");
+  if (!press.outline_mm.empty()) {
+    if (is_curved(sensor.shape)) throw InvalidInput(where + ": an outline press needs a flat sheet");
+    if (press.profile != PressProfile::flat) throw InvalidInput(where + ": an outline press must be flat");
+    validate_outline(press.outline_mm, where);
+  }
   if (sensor.shape.kind == ShapeKind::cylinder) {
     // A cylinder's point is the one along the radius through the centre: one far off the surface
     // (a press given without its z lies on the axis' plane z = 0) is refused, not moved there.

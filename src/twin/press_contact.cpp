@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "emit/core/errors.hpp"
+#include "emit/mesh/flatness.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/twin/press_pressure.hpp"
 
 namespace emit {
@@ -182,6 +184,93 @@ class SmoothIntegrator {
   double target_mm_ = 1e300;
 };
 
+/// A flat press's contact on a flat sheet, a disc or an outline (sensor/press_outline.hpp), seen
+/// in the sheet's x, y: its polygons' edges (none for a disc), their bounding box, its pressure.
+struct FlatRegion {
+  const Press* press;
+  std::vector<std::vector<Vector2>> polygons;  ///< placed (absolute); empty for a disc
+  std::vector<std::array<Vector2, 2>> edges;
+  Eigen::AlignedBox2d box;
+  double pressure;
+};
+
+double orient(const Vector2& a, const Vector2& b, const Vector2& c) {
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+/// Whether the closed segments pq and ab meet (touching counts).
+bool segments_meet(const Vector2& p, const Vector2& q, const Vector2& a, const Vector2& b) {
+  const double d1 = orient(a, b, p), d2 = orient(a, b, q), d3 = orient(p, q, a), d4 = orient(p, q, b);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  const auto on = [](const Vector2& u, const Vector2& v, const Vector2& w, double d) {
+    return d == 0 && std::min(u.x(), v.x()) <= w.x() && w.x() <= std::max(u.x(), v.x()) &&
+           std::min(u.y(), v.y()) <= w.y() && w.y() <= std::max(u.y(), v.y());
+  };
+  return on(a, b, p, d1) || on(a, b, q, d2) || on(p, q, a, d3) || on(p, q, b, d4);
+}
+
+bool in_triangle(const std::array<Vector2, 3>& t, const Vector2& p) {
+  const double d0 = orient(t[0], t[1], p), d1 = orient(t[1], t[2], p), d2 = orient(t[2], t[0], p);
+  return !((d0 < 0 || d1 < 0 || d2 < 0) && (d0 > 0 || d1 > 0 || d2 > 0));
+}
+
+/// Whether a piece (2D) is wholly inside a region, wholly outside, or cut by its edge: cut when
+/// one of the outline's edges meets the piece, else inside or outside as its centroid is.
+Cover classify_outline(const std::array<Vector2, 3>& t, const FlatRegion& r) {
+  Eigen::AlignedBox2d box(t[0]);
+  box.extend(t[1]).extend(t[2]);
+  if (!box.intersects(r.box)) return Cover::none;
+  for (const auto& [a, b] : r.edges) {
+    if (!box.intersects(Eigen::AlignedBox2d(a.cwiseMin(b), a.cwiseMax(b)))) continue;
+    if (in_triangle(t, a) || in_triangle(t, b)) return Cover::partial;
+    for (int k = 0; k < 3; ++k)
+      if (segments_meet(t[k], t[(k + 1) % 3], a, b)) return Cover::partial;
+  }
+  return inside_polygons(r.polygons, (t[0] + t[1] + t[2]) / 3) ? Cover::full : Cover::none;
+}
+
+/// Flat presses of which some have an outline, on a flat sheet: Integrator's rule (exact on pieces
+/// wholly inside or outside every region, subdivided `levels` times where an edge cuts, the
+/// pressure at the last pieces' centroids), with discs classified as Integrator does.
+class OutlineIntegrator {
+ public:
+  OutlineIntegrator(const std::vector<FlatRegion>& regions, const ContactLaw& law) : regions_(regions), law_(law) {}
+
+  void add(const Piece& piece, double area, int levels_left, Eigen::Matrix3d& local) const {
+    const std::array<Vector2, 3> flat{piece.corner[0].head<2>(), piece.corner[1].head<2>(), piece.corner[2].head<2>()};
+    double pressure = 0;
+    bool cut = false;
+    for (const FlatRegion& r : regions_) {
+      const Cover cover = r.polygons.empty()
+                              ? classify(piece.corner, Disc{Vector3(r.press->x_mm, r.press->y_mm, r.press->z_mm),
+                                                            r.press->radius_mm, r.pressure})
+                              : classify_outline(flat, r);
+      if (cover == Cover::full) pressure += r.pressure;
+      if (cover == Cover::partial) cut = true;
+    }
+    if (cut && levels_left > 0) {
+      for (const Piece& child : subdivide(piece)) add(child, area / 4, levels_left - 1, local);
+      return;
+    }
+    if (cut) {
+      pressure = 0;
+      const Vector3 centroid = (piece.corner[0] + piece.corner[1] + piece.corner[2]) / 3;
+      for (const FlatRegion& r : regions_)
+        if (press_covers(*r.press, centroid.head<2>())) pressure += r.pressure;
+    }
+    const double g = law_.conductance_S_per_mm2(pressure);
+    if (g == 0) return;
+    for (int k = 0; k < 3; ++k) {
+      const Vector3 phi = 0.5 * (piece.barycentric[k] + piece.barycentric[(k + 1) % 3]);
+      local += (g * area / 3.0) * phi * phi.transpose();
+    }
+  }
+
+ private:
+  const std::vector<FlatRegion>& regions_;
+  const ContactLaw& law_;
+};
+
 }  // namespace
 
 namespace {
@@ -222,6 +311,42 @@ ContactLoad smooth_contact_load(const Mesh& mesh, const std::vector<Press>& pres
   return load;
 }
 
+/// Flat presses of which some have an outline, on a flat sheet: OutlineIntegrator.
+ContactLoad outline_contact_load(const Mesh& mesh, const std::vector<Press>& pressing, const ContactLaw& law,
+                                 int levels) {
+  std::vector<FlatRegion> regions;
+  Eigen::AlignedBox3d reach;
+  for (const Press& p : pressing) {
+    FlatRegion r{&p, placed_outline_mm(p), {}, {}, p.pressure_N_per_mm2()};
+    const Vector2 centre(p.x_mm, p.y_mm);
+    r.box.extend(centre);
+    if (r.polygons.empty()) {
+      r.box.extend(centre - Vector2::Constant(p.radius_mm)).extend(centre + Vector2::Constant(p.radius_mm));
+    }
+    for (const auto& polygon : r.polygons)
+      for (std::size_t i = 0; i < polygon.size(); ++i) {
+        r.edges.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
+        r.box.extend(polygon[i]);
+      }
+    reach.extend(Vector3(r.box.min().x(), r.box.min().y(), 0)).extend(Vector3(r.box.max().x(), r.box.max().y(), 0));
+    regions.push_back(std::move(r));
+  }
+  const OutlineIntegrator integrator(regions, law);
+  ContactLoad load;
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    Eigen::AlignedBox3d box;
+    const Piece piece = triangle_piece(mesh, t, box);
+    if (!box.intersects(reach)) continue;
+    Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
+    integrator.add(piece, mesh.triangle_area_mm2(t), levels, local);
+    if (local.sum() > 0) {
+      load.triangles.push_back(t);
+      load.local_S.push_back(local);
+    }
+  }
+  return load;
+}
+
 }  // namespace
 
 ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& presses, const ContactLaw& law, int levels,
@@ -230,6 +355,17 @@ ContactLoad press_contact_load(const Mesh& mesh, const std::vector<Press>& press
   std::vector<Press> pressing;
   for (const auto& p : presses)
     if (p.force_N > 0) pressing.push_back(p);
+  const bool outlined =
+      std::any_of(pressing.begin(), pressing.end(), [](const Press& p) { return !p.outline_mm.empty(); });
+  if (outlined) {
+    if (blur_mm > 0) throw InvalidInput("an outline press under a blurring cover is not simulated (cover blur 0 only)");
+    for (const Press& p : pressing)
+      if (p.profile != PressProfile::flat) throw InvalidInput("outline presses go with flat presses only");
+    if (!is_flat(mesh)) throw InvalidInput("an outline press needs a flat sheet");
+    for (const Press& p : pressing)
+      if (!p.outline_mm.empty()) validate_outline(p.outline_mm, "outline press");
+    return outline_contact_load(mesh, pressing, law, levels);
+  }
   const bool smooth = blur_mm > 0 || std::any_of(pressing.begin(), pressing.end(),
                                                  [](const Press& p) { return p.profile != PressProfile::flat; });
   if (smooth && !pressing.empty()) return smooth_contact_load(mesh, pressing, law, levels, blur_mm);

@@ -20,6 +20,7 @@
 #include "emit/render/image.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/render/shaded_surface.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
@@ -52,6 +53,23 @@ TEST(Cli, SimulatesOnePress) {
   const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
   ASSERT_EQ(truth.size(), 1u);
   EXPECT_EQ(truth[0][0].force_N, 10.0);
+}
+
+// A flat punch of another outline (sensor/press_outline.hpp): a bar and a ring in one frame, the
+// truth with their outlines (README "Files"); each reads back with its area.
+TEST(Cli, SimulatesOutlinePresses) {
+  const std::string dir = test::temp_folder("cli_outline");
+  const auto r =
+      run_emit("simulate --press bar:20,40,20,6,30,8 --press ring:38,22,6,9,6 --exact --out " + dir + "/f.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto frames = read_frames_csv(dir + "/f.csv", 16);
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_GT(frames[0].maxCoeff(), 0.1);  // 14 N read hundreds of mV
+  const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
+  ASSERT_EQ(truth.size(), 1u);
+  ASSERT_EQ(truth[0].size(), 2u);
+  EXPECT_NEAR(press_area_mm2(truth[0][0]), 120, 1e-6);  // vertices to 9 digits
+  EXPECT_EQ(truth[0][1].outline_mm.size(), 2u);         // the ring's two circles
 }
 
 TEST(Cli, GridScriptWritesOneFramePerPressAndTheTruth) {
@@ -503,6 +521,51 @@ TEST(Cli, EvalRealisticRunsTheRoundAgainstTheTargets) {
   EXPECT_NE(r.err.find("sensor calibration: iteration"), std::string::npos) << "progress on stderr";
 }
 
+/// A family's row of `method`'s block in `emit eval --outlines`' table: frames, Dice, |force
+/// error| %, force ratio and (when it has one) the centroid's error; false if not found.
+struct OutlineRow {
+  int frames = -1;
+  double dice = -1, force_error = -1, force_ratio = -1, centroid_mm = -1;
+};
+bool read_outline_row(const std::string& text, const std::string& method, const std::string& family, OutlineRow& row) {
+  const std::size_t block = text.find("\n  " + method + " (");
+  if (block == std::string::npos) return false;
+  const std::size_t at = text.find("\n  " + family + " ", block);
+  if (at == std::string::npos) return false;
+  // NOLINTNEXTLINE(cert-err34-c): emit's own output, the field count checks its shape
+  return std::sscanf(text.c_str() + at + 3 + family.size(), " %d %lf %lf %% x%lf %lf mm", &row.frames, &row.dice,
+                     &row.force_error, &row.force_ratio, &row.centroid_mm) >= 4;
+}
+
+// emit eval --outlines as a user runs it (--quick: one frame of each of the eight outlines), for
+// the paper's method and contact fitting, each calibrated on 40 disc presses. Bounds: every Dice
+// in [0, 1]; contact fitting's regions are centred within 3 mm over all outlines (its fitted discs
+// sit on the presses' centroids: 0.11 mm in issue 31's measurement); the paper's method's pressed
+// region is not the outline (Dice below 0.3: its 50 % region is blurred to 2-5 times a contact's
+// area, issue 31 measured 0.09) and below fit's on the 30 x 3 bar.
+TEST(Cli, EvalOutlinesScoresEachMethodPerOutline) {
+  const auto r = run_emit("eval --outlines --quick --methods paper,fit");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("60 x 60 mm sheet, 16 electrodes"), std::string::npos) << r.out;
+  OutlineRow paper, fit, paper_bar, fit_bar;
+  ASSERT_TRUE(read_outline_row(r.out, "paper", "all", paper)) << r.out;
+  ASSERT_TRUE(read_outline_row(r.out, "fit", "all", fit)) << r.out;
+  ASSERT_TRUE(read_outline_row(r.out, "paper", "bar 30x3", paper_bar)) << r.out;
+  ASSERT_TRUE(read_outline_row(r.out, "fit", "bar 30x3", fit_bar)) << r.out;
+  EXPECT_EQ(paper.frames, 8);
+  EXPECT_EQ(fit.frames, 8);
+  for (const OutlineRow& row : {paper, fit, paper_bar, fit_bar}) {
+    EXPECT_GE(row.dice, 0) << r.out;
+    EXPECT_LE(row.dice, 1) << r.out;
+  }
+  EXPECT_LT(fit.centroid_mm, 3.0) << r.out;
+  EXPECT_LT(paper.dice, 0.3) << r.out;
+  EXPECT_LT(paper_bar.dice, fit_bar.dice) << r.out;
+  for (const char* family :
+       {"bar 20x6", "ellipse 24x12", "ring 12-18", "disc r12", "L 20x4", "two bars 20x3", "stylus r2"})
+    EXPECT_NE(r.out.find(std::string("\n  ") + family + " "), std::string::npos) << family << "\n" << r.out;
+}
+
 // A disconnected electrode: a one-line warning, its measurements left out, contacts still found.
 TEST(Cli, ReconstructLeavesOutADeadElectrode) {
   const std::string d = test::temp_folder("cli_dead");
@@ -762,6 +825,8 @@ TEST_P(CliBadInput, OneLineErrorAndNothingOverwritten) {
       << R"("electrodes":{"count":1000,"width_mm":0.1},"mesh":{"element_size_mm":0.9}})";
   std::ofstream(dir + "/long_name.json") << R"({"shape":{"type":"mesh","file":")" << std::string(5000, 'a')
                                          << R"(.step"},"electrodes":[{"at_mm":[0,0,0]},{"at_mm":[1,0,0]}]})";
+  std::ofstream(dir + "/dome.json")
+      << R"({"shape": {"type": "spherical_cap", "sphere_radius_mm": 25, "base_radius_mm": 20}, "electrodes": {"count": 16, "width_mm": 3}})";
   std::ofstream(dir + "/obj.json")
       << R"({"shape":{"type":"mesh","file":"sheet.obj"},"electrodes":[{"at_mm":[0,0,0]}]})";
   std::ofstream(dir + "/closed.json")
@@ -810,6 +875,11 @@ INSTANTIATE_TEST_SUITE_P(
                "simulate --realistic --realistic-drive-V 3.3,3.0 --press 30,30,5,10 --out OUT",
                "--realistic-drive-V: give LOW,HIGH volts with 0 < LOW <= HIGH"},
         BadRun{"unknown profile", "simulate --profile round --press 30,30,5,10 --out OUT", "--profile: round"},
+        BadRun{"unknown outline", "simulate --press star:30,30,5,10 --out OUT", "\"star\" is not an outline"},
+        BadRun{"outline on a dome", "simulate --sensor DIR/dome.json --press bar:0,0,10,4,0,5 --out OUT",
+               "an outline press needs a flat sheet"},
+        BadRun{"spherical outline", "simulate --profile spherical --press bar:30,30,10,4,0,5 --out OUT",
+               "an outline press must be flat"},
         BadRun{"realistic eval seed negative", "eval --realistic -1 --quick",
                "--realistic: the seed must be a whole number 0 or larger, got \"-1\""},
         BadRun{"realistic eval seed not a number", "eval --realistic x --quick",

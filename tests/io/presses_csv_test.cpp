@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -33,6 +34,37 @@ TEST(PressesCsv, RoundTripKeepsFramesAndSimultaneousPresses) {
   EXPECT_EQ(read[2][1].force_N, 0.5);
   EXPECT_EQ(read[0][0].y_mm, 20.25);
   EXPECT_NEAR(read[0][0].pressure_N_per_mm2(), 12.5 / (std::numbers::pi * 25), 1e-15);
+}
+
+// Outlines go in an 8th column, vertices to 9 significant digits: they read back as written
+// (these values are exact to 9 digits), a disc beside them with an empty one.
+TEST(PressesCsv, RoundTripKeepsOutlines) {
+  const std::string path = test::temp_folder("presses_csv_outline") + "/p.csv";
+  const Press ring = ring_press({30, 30}, 6, 9, 8);
+  const Press triangle = polygon_press({20, 25}, {{{0, 0}, {4.5, 0}, {0, 3.25}}}, 5);
+  const PressSequence sequence = {{triangle, Press{10, 10, 2, 1}}, {ring}};
+  write_presses_csv(path, sequence);
+  const std::string text = test::read_text(path);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile,outline");
+  EXPECT_NE(text.find(",flat,0 0;4.5 0;0 3.25\n"), std::string::npos) << text;
+  EXPECT_NE(text.find(",flat,\n"), std::string::npos) << text;
+  const PressSequence read = read_presses_csv(path);
+  ASSERT_EQ(read.size(), 2u);
+  ASSERT_EQ(read[0].size(), 2u);
+  EXPECT_EQ(read[0][0].outline_mm, triangle.outline_mm);
+  EXPECT_TRUE(read[0][1].outline_mm.empty());
+  ASSERT_EQ(read[1][0].outline_mm.size(), 2u);  // the ring's two circles
+  EXPECT_NEAR(press_area_mm2(read[1][0]), press_area_mm2(ring), 1e-6 * press_area_mm2(ring));
+  EXPECT_DOUBLE_EQ(read[0][0].pressure_N_per_mm2(), 5 / 7.3125);
+  const std::string bad = test::temp_folder("presses_csv_outline") + "/bad.csv";
+  std::ofstream(bad)
+      << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile,outline\n0,1,2,3,4,0.1,flat,0 0;1 x\n";
+  EXPECT_EQ(test::error_of([&] { read_presses_csv(bad); }),
+            bad + ":2: outline vertex \"1 x\" is not two numbers \"u v\"");
+  std::ofstream(bad)
+      << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2,profile,outline\n0,1,2,3,4,0.1,flat,0 0;1 1\n";
+  EXPECT_EQ(test::error_of([&] { read_presses_csv(bad); }),
+            bad + ":2: outline polygon 0 has 2 vertices, 3 or more needed");
 }
 
 std::string error_of(const std::string& path) {

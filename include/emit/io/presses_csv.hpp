@@ -2,7 +2,10 @@
 /// \file presses_csv.hpp
 /// Ground truth of a simulated run: `frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2`, one
 /// row per press (several rows share a frame index for simultaneous presses), and a 7th column
-/// `profile` (flat or spherical) when some press is not flat; a row without it is flat.
+/// `profile` (flat or spherical) when some press is not flat; a row without it is flat. When some
+/// press is a flat punch's outline (sensor/press_outline.hpp), an 8th column `outline`: its
+/// polygons' vertices relative to (x, y), "u v;u v;…", polygons separated by '|', empty for a
+/// disc; its radius_mm is then the outline's reach and its pressure force/area.
 #include <cstddef>
 #include <ostream>
 #include <string>

@@ -2,12 +2,14 @@
 /// \file eval_job.hpp
 /// `emit eval` on the digital twin: the standard sheets, each evaluated per method beside the
 /// paper's figures (eval/sheet_evaluation.hpp) with its plots, or the round a user runs with a real
-/// sheet on a realistic one (`--realistic`, eval/realistic_evaluation.hpp). A sheet at a time, so
+/// sheet on a realistic one (`--realistic`, eval/realistic_evaluation.hpp), or pressed regions of
+/// many outlines (`--outlines`, eval/outline_evaluation.hpp). A sheet at a time, so
 /// the command can print each as it is done (an evaluation runs for minutes).
 #include <string>
 #include <vector>
 
 #include "emit/core/progress.hpp"
+#include "emit/eval/outline_evaluation.hpp"
 #include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
 
@@ -36,5 +38,10 @@ SheetEvalReport run_sheet_eval_job(const EvalCase& eval_case, const EvalOptions&
 /// The realistic round on one sheet. \throw InvalidInput (a bad option), SolverError.
 RealisticEvaluation run_realistic_eval_job(const EvalCase& eval_case, const RealisticEvalOptions& options,
                                            const Progress& progress = {});
+
+/// Pressed outlines scored per method on one flat sheet. \throw InvalidInput (a bad option, a
+/// curved sheet), SolverError.
+OutlineEvaluation run_outline_eval_job(const EvalCase& eval_case, const OutlineEvalOptions& options,
+                                       const Progress& progress = {});
 
 }  // namespace emit

@@ -3,6 +3,9 @@
 /// A press on the sheet: a circular indenter of radius r, by default flat, with uniform pressure
 /// force/(π r²) on its disc, or spherical, with Hertz's p(ρ) = p0·√(1 − ρ²/r²), p0 = 3F/(2π r²)
 /// (README, "Files"). Several presses in one frame add their pressures where they overlap.
+///
+/// A flat punch of any other outline (a bar, an ellipse, a ring, an L: sensor/press_outline.hpp)
+/// is a press with an `outline_mm`: uniform pressure force/area inside it, on flat sheets only.
 #include <string>
 #include <vector>
 
@@ -21,9 +24,18 @@ struct Press {
   double force_N = 10;
   PressProfile profile = PressProfile::flat;
   double z_mm = 0;
-  /// The mean pressure over the disc, F/(π r²), whatever the profile.
+  /// A flat punch's outline, in mm relative to (x, y) along the sheet's x and y: closed polygons
+  /// (the last vertex joins the first, either orientation), the first its boundary, any further
+  /// ones holes inside it (a ring: two circles). A point is pressed when inside an odd number of
+  /// them. Empty: the disc of `radius_mm`. With an outline, `radius_mm` is the outline's reach
+  /// (its farthest vertex from the centre: press_outline.hpp's constructors set it) and the
+  /// profile must be flat.
+  std::vector<std::vector<Vector2>> outline_mm = {};
+  /// The mean pressure over the contact, F/(π r²) for a disc whatever the profile, F/area for an
+  /// outline.
   double pressure_N_per_mm2() const;
-  /// The pressure at distance `distance_mm` from the centre (0 outside the disc).
+  /// The pressure at distance `distance_mm` from the centre (0 outside the disc). A disc's only:
+  /// an outline's pressure is not radial (press_outline.hpp's press_covers says where it is).
   double pressure_at_N_per_mm2(double distance_mm) const;
 };
 
@@ -35,7 +47,9 @@ PressProfile parse_press_profile(const std::string& name);
 /// The presses of each frame of a sequence.
 using PressSequence = std::vector<std::vector<Press>>;
 
-/// Parse "x,y,r,F" (mm, mm, mm, N) or "x,y,z,r,F". \throw InvalidInput naming the text.
+/// Parse "x,y,r,F" (mm, mm, mm, N) or "x,y,z,r,F"; or a flat punch's outline, "bar:…",
+/// "ellipse:…", "ring:…", "polygon:…" (press_outline.hpp's parse_outline_press).
+/// \throw InvalidInput naming the text.
 Press parse_press(const std::string& text);
 
 /// A press centred on the sheet's point named by chart point c (sensor/surface.hpp): its x, y
@@ -51,7 +65,8 @@ inline constexpr double press_surface_tolerance_mm = 1.0;
 
 /// \throw InvalidInput if a value is not finite, the radius is not positive, the force is
 /// negative, the centre is off the sheet, or on a cylinder more than press_surface_tolerance_mm
-/// off its surface. `where` prefixes the message.
+/// off its surface; for an outline, if the sheet is curved, the profile not flat, or the outline
+/// not valid (press_outline.hpp's validate_outline). `where` prefixes the message.
 void validate_press(const Sensor& sensor, const Press& press, const std::string& where);
 
 }  // namespace emit

@@ -1,0 +1,82 @@
+#pragma once
+/// \file outline_evaluation.hpp
+/// `emit eval --outlines`: how well each method images pressed regions of many outlines (issue
+/// 31), on a flat sheet (the 60 mm one by default). On the twin, on a mesh of another seed than the
+/// reconstruction's:
+///
+/// 1. a reference of no-press frames and calibration presses of a 5 mm flat disc at random places,
+///    2–39 N (as `emit eval --realistic`'s round); each method calibrated on them as `emit
+///    calibrate` would (pipeline/press_calibration.hpp, its defaults);
+/// 2. frames of flat punches of the families of twin/outline_scripts.hpp (bars, an ellipse, a
+///    ring, a palm-sized disc, an L, two parallel bars, a stylus tip) at random places and angles,
+///    4–16 N;
+/// 3. each frame reconstructed by each calibrated method (contact fitting cold, each frame on its
+///    own), its pressed region (Reconstructor::pressure() > 0) scored against the outlines by
+///    eval/outline_scoring.hpp, averaged per family.
+///
+/// Lengths are the 60 mm sheet's: another sheet must have room for a 30 mm bar.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "emit/core/progress.hpp"
+#include "emit/eval/outline_scoring.hpp"
+#include "emit/eval/sheet_evaluation.hpp"
+#include "emit/model/method.hpp"
+#include "emit/twin/outline_scripts.hpp"
+
+namespace emit {
+
+struct OutlineEvalOptions {
+  std::vector<Method> methods{Method::paper, Method::noser, Method::laplacian, Method::fit};
+  int mesh_seed = 3;        ///< the twin's mesh (another than the reconstruction's)
+  std::uint64_t seed = 21;  ///< the noise and the calibration presses; the outlines' from seed + 1 on
+  int reference_frames = 10;
+  int calibration_presses = 40;  ///< calibrate_sensor needs 8 or more
+  int presses_per_family = 6;    ///< 48 frames of outlines in all
+  /// Contact fitting's sensor calibration's most iterations (0: `emit calibrate`'s own).
+  int calibration_iterations = 0;
+  void validate() const;  ///< \throw InvalidInput naming the option
+};
+
+/// Options for a smoke test (`--quick`): one frame of each family, the sensor fit stopped after
+/// 2 iterations (as quick_realistic_counts).
+OutlineEvalOptions quick_outline_options();
+
+/// Scores averaged over one family's frames (or all of them).
+struct OutlineFamilyScore {
+  std::string family;
+  int frames = 0;
+  double dice = 0;         ///< mean
+  double force_error = 0;  ///< mean |F̂ − F| / F (a fraction)
+  double force_ratio = 0;  ///< mean F̂ / F
+  double centroid_mm = 0;  ///< mean over the frames with a region
+  int frames_without_region = 0;
+  double orientation_deg = 0;  ///< mean over elongated outlines' frames (NaN without any)
+  double regions = 0;          ///< mean count reported
+  double right_count = 0;      ///< fraction of frames reporting as many regions as presses
+};
+
+struct MethodOutlineScore {
+  Method method = Method::paper;
+  std::vector<OutlineFamilyScore> families;  ///< in outline_families()' order
+  OutlineFamilyScore all;
+  double calibration_rms_N_per_mm2 = 0;  ///< the calibration's own misfit on its presses
+  double ms_per_frame = 0;
+};
+
+struct OutlineEvaluation {
+  long triangles = 0;  ///< the reconstruction mesh's
+  int calibration_presses = 0;
+  std::vector<MethodOutlineScore> methods;
+};
+
+/// Averages frame scores into a family's (name `family`).
+OutlineFamilyScore summarize_outline_scores(const std::string& family, const std::vector<OutlineScore>& scores);
+
+/// The round on `eval_case`'s (flat) sheet. \throw InvalidInput (bad options, a curved sheet, one
+/// without room), SolverError.
+OutlineEvaluation evaluate_outlines(const EvalCase& eval_case, const OutlineEvalOptions& options,
+                                    const Progress& progress = {});
+
+}  // namespace emit
