@@ -22,7 +22,7 @@ TEST(Method, UnknownNameListsTheMethods) {
     parse_method("Paper");
     FAIL() << "no error";
   } catch (const InvalidInput& e) {
-    EXPECT_STREQ(e.what(), "unknown method \"Paper\" (fit, paper, noser, laplacian)");
+    EXPECT_STREQ(e.what(), "unknown method \"Paper\" (fit, shapes, paper, noser, laplacian)");
   }
 }
 
