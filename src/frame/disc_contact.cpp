@@ -44,8 +44,9 @@ void split(const Eigen::Matrix3d& B, int levels, double area_fraction, std::vect
   split(child, levels - 1, area_fraction / 4, out);
 }
 
-/// C¹ smoothstep of ξ = (r − d) / edge over [−1, 1], and its derivative in ξ.
-void smoothstep(double xi, double& s, double& ds_dxi) {
+}  // namespace
+
+void rim_smoothstep(double xi, double& s, double& ds_dxi) {
   if (xi >= 1) {
     s = 1, ds_dxi = 0;
   } else if (xi <= -1) {
@@ -62,8 +63,6 @@ Eigen::Matrix3d uniform_integral() {
   m.diagonal().setConstant(2.0 / 12);
   return m;
 }
-
-}  // namespace
 
 DiscContactIntegrator::DiscContactIntegrator(const Mesh& mesh, double edge_mm, int levels, Shape surface)
     : mesh_(&mesh), edge_mm_(edge_mm), surface_(std::move(surface)) {
@@ -141,7 +140,7 @@ void DiscContactIntegrator::add_triangle(std::size_t t, const Disc& disc, const 
     const Vector3 offset = corner.transpose() * piece.centroid_barycentric - centre.point_mm;
     const double distance = offset.norm();
     double s, ds_dxi;
-    smoothstep((r - distance) / h, s, ds_dxi);
+    rim_smoothstep((r - distance) / h, s, ds_dxi);
     if (s == 0 && ds_dxi == 0) continue;
     local += s * piece.integral;
     if (derivatives && ds_dxi != 0) {

@@ -18,25 +18,6 @@ void shape_functions(double e, double& S, double& T) {
   T = (2 * e * std::cosh(2 * e) - std::sinh(2 * e)) / (e * e * e);
 }
 
-/// C¹ smoothstep of ξ over [−1, 1] and its derivative (disc_contact.cpp's).
-void smoothstep(double xi, double& s, double& ds_dxi) {
-  if (xi >= 1) {
-    s = 1, ds_dxi = 0;
-  } else if (xi <= -1) {
-    s = 0, ds_dxi = 0;
-  } else {
-    const double t = (xi + 1) / 2;
-    s = t * t * (3 - 2 * t);
-    ds_dxi = 3 * t * (1 - t);
-  }
-}
-
-Eigen::Matrix3d uniform_integral() {
-  Eigen::Matrix3d m = Eigen::Matrix3d::Constant(1.0 / 12);
-  m.diagonal().setConstant(2.0 / 12);
-  return m;
-}
-
 }  // namespace
 
 Ellipse Ellipse::round(const Disc& disc) {
@@ -118,7 +99,7 @@ void EllipseContactIntegrator::integrate(const Ellipse& el, EllipseLoad& out, bo
       const Vector2 Qd = Q * d;
       const double rho = std::sqrt(d.dot(Qd));
       double s, ds_dxi;
-      smoothstep(length * (1 / rho - 1) / h, s, ds_dxi);  // ξ = (R(φ) − |d|)/h, R(φ) = |d|/ρ
+      rim_smoothstep(length * (1 / rho - 1) / h, s, ds_dxi);  // ξ = (R(φ) − |d|)/h, R(φ) = |d|/ρ
       if (s == 0 && ds_dxi == 0) continue;
       touched = true;
       local += s * piece.integral;

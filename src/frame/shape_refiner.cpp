@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 #include <ceres/ceres.h>
@@ -42,7 +43,7 @@ class ShapePrior : public ceres::SizedCostFunction<3, ellipse_parameters> {
     residuals[1] = p[3] / elongation_std_;
     residuals[2] = p[4] / elongation_std_;
     if (jacobians && jacobians[0]) {
-      std::fill(jacobians[0], jacobians[0] + 3 * ellipse_parameters, 0.0);
+      std::fill(jacobians[0], jacobians[0] + std::ptrdiff_t{3} * ellipse_parameters, 0.0);
       jacobians[0][0 * ellipse_parameters + 2] = 1 / radius_std_;
       jacobians[0][1 * ellipse_parameters + 3] = 1 / elongation_std_;
       jacobians[0][2 * ellipse_parameters + 4] = 1 / elongation_std_;
@@ -235,7 +236,7 @@ void ShapeRefiner::covariances(const Vector& dV, const std::vector<std::array<do
     const EllipseMisfit cost(*this, dV, count);
     if (cost.Evaluate(values.data(), residuals.data(), jacobians.data())) {
       for (int i = 0; i < count; ++i)
-        J.block(0, ellipse_parameters * i, M, ellipse_parameters) = jac[static_cast<std::size_t>(i)];
+        J.block(0, Index{ellipse_parameters} * i, M, ellipse_parameters) = jac[static_cast<std::size_t>(i)];
       rms_misfit_V_ = std::sqrt(residuals.cwiseQuotient(weight_).squaredNorm() / M);
     }
     for (int i = 0; i < count; ++i) {
@@ -256,7 +257,8 @@ void ShapeRefiner::covariances(const Vector& dV, const std::vector<std::array<do
   for (int i = 0; i < count; ++i) {
     const Ellipse e = to_ellipse(parameters[static_cast<std::size_t>(i)].data());
     const Eigen::Matrix<double, ellipse_parameters, ellipse_parameters> C =
-        covariance.block<ellipse_parameters, ellipse_parameters>(ellipse_parameters * i, ellipse_parameters * i);
+        covariance.block<ellipse_parameters, ellipse_parameters>(Index{ellipse_parameters} * i,
+                                                                 Index{ellipse_parameters} * i);
     const auto std_of = [&](const Eigen::Matrix<double, ellipse_parameters, 1>& gradient) {
       return std::sqrt(std::max(0.0, gradient.dot(C * gradient)));
     };

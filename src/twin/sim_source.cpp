@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 #include "emit/mesh/sheet_chart.hpp"
@@ -63,8 +64,8 @@ SimScript parse_sim_script(const std::string& spec) {
   return script;
 }
 
-SimSource::SimSource(const Sensor& sensor, const SimScript& script, const SourceOptions& options)
-    : sensor_(sensor), script_(script), options_(options), twin_(sensor, [&] {
+SimSource::SimSource(const Sensor& sensor, SimScript script, const SourceOptions& options)
+    : sensor_(sensor), script_(std::move(script)), options_(options), twin_(sensor, [&] {
         TwinOptions twin;
         twin.noise_seed = options.seed;
         return twin;

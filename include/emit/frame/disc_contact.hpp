@@ -41,6 +41,12 @@ struct DiscLoad {
   void clear();
 };
 
+/// The rim's smoothed indicator, disc and ellipse alike: a C¹ smoothstep of ξ = (R − d)/edge over
+/// [−1, 1] (0 outside, 1 inside), and its derivative in ξ.
+void rim_smoothstep(double xi, double& s, double& ds_dxi);
+/// ∫ φ_i φ_j over a triangle per unit area: (1 + δ_ij)/12.
+Eigen::Matrix3d uniform_integral();
+
 class DiscContactIntegrator {
  public:
   /// \param edge_mm  half-width of the smoothed rim; \param levels  subdivision depth of the

@@ -36,7 +36,7 @@ class SimSource : public FrameSource {
  public:
   /// Builds the twin (meshing takes a second); the frame thread starts at the first next().
   /// \throw InvalidInput for a bad script (e.g. a fixed press off the sheet) or sensor.
-  SimSource(const Sensor& sensor, const SimScript& script, const SourceOptions& options);
+  SimSource(const Sensor& sensor, SimScript script, const SourceOptions& options);
   ~SimSource() override;
   SimSource(const SimSource&) = delete;
   SimSource& operator=(const SimSource&) = delete;
