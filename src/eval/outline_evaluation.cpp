@@ -19,6 +19,7 @@ namespace emit {
 OutlineEvalOptions quick_outline_options() {
   OutlineEvalOptions options;
   options.presses_per_family = 1;
+  options.calibration_presses = 16;    // twice the sensor fit's least: a smoke test's calibration
   options.calibration_iterations = 2;  // as quick_realistic_counts: the misfit's bulk goes in two
   return options;
 }

@@ -39,8 +39,8 @@ struct OutlineEvalOptions {
   void validate() const;  ///< \throw InvalidInput naming the option
 };
 
-/// Options for a smoke test (`--quick`): one frame of each family, the sensor fit stopped after
-/// 2 iterations (as quick_realistic_counts).
+/// Options for a smoke test (`--quick`): one frame of each family, 16 calibration presses, the
+/// sensor fit stopped after 2 iterations (as quick_realistic_counts).
 OutlineEvalOptions quick_outline_options();
 
 /// Scores averaged over one family's frames (or all of them).
