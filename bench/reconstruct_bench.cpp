@@ -18,6 +18,7 @@
 #include "emit/model/method.hpp"
 #include "emit/model/reconstruction_model.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
 #include "emit/twin/press_contact.hpp"
@@ -51,10 +52,17 @@ struct Bench {
   Frame reference = twin.frame({});
   std::vector<Frame> frames;  // single presses across the sheet
   std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
+  std::vector<Frame> bars;    // a ruler's edge, 30 x 3 mm, at angles across the sheet
+  std::vector<Frame> fours;   // four fingers 20 mm apart
   Bench() {
     set_thread_count(1);
     for (double x : {12.0, 30.0, 47.0})
       for (double y : {14.0, 33.0, 50.0}) frames.push_back(twin.frame({{x, y, 5, 8}}));
+    for (double angle_deg : {0.0, 35.0, 70.0, 110.0})
+      bars.push_back(twin.frame({bar_press({30 - 0.05 * angle_deg, 28 + 0.04 * angle_deg}, 30, 3, angle_deg, 10)}));
+    for (double shift : {0.0, 3.0, 6.0})
+      fours.push_back(twin.frame({{18 + shift, 18, 5, 8}, {38 + shift, 18, 5, 10}, {18, 38 + shift, 5, 12},
+                                  {38, 38 - shift, 5, 9}}));
     for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
   }
 };
@@ -181,10 +189,11 @@ CurvedBench& fingertip_bench() {
 /// Contact fitting over `frames` in turn; cold (seeded from the linear image every frame) or
 /// tracking (each frame started from the last one's contacts).
 template <class Sheet>
-void fit_frames(benchmark::State& state, Sheet& b, const std::vector<Frame>& frames, bool track) {
+void fit_frames(benchmark::State& state, Sheet& b, const std::vector<Frame>& frames, bool track, bool shapes = false) {
   const FitPrecompute fit(b.sensor, b.fit_model.mesh, b.fit_model.green, b.model.measurements);
   FrameOptions options;
   options.track_contacts = track;
+  options.contact_shapes = shapes;
   Reconstructor reconstructor(b.model, fit, FitCalibration::uncalibrated(b.sensor), options);
   reconstructor.set_reference({b.reference, 1});
   std::size_t f = 0;
@@ -200,6 +209,13 @@ void fit_frames(benchmark::State& state, Sheet& b, const std::vector<Frame>& fra
 }
 
 void BM_FitFrame(benchmark::State& state) { fit_frames(state, bench(), bench().frames, false); }
+/// `--method shapes`: the disc fit, then each contact refitted as an ellipse and the regions the
+/// frame supports chosen (shape_refiner.hpp). Single presses, a bar, four fingers; BM_FitFrame the
+/// baseline.
+void BM_ShapesFrame(benchmark::State& state) { fit_frames(state, bench(), bench().frames, false, true); }
+void BM_ShapesFrameBar(benchmark::State& state) { fit_frames(state, bench(), bench().bars, false, true); }
+void BM_ShapesFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false, true); }
+void BM_FitFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false); }
 void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench(), bench().moving, false); }
 void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true); }
 void BM_FitFrameDome(benchmark::State& state) { fit_frames(state, dome_bench(), dome_bench().frames, false); }
@@ -255,6 +271,10 @@ BENCHMARK(BM_PaperFrameBefore)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameFour)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapesFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapesFrameBar)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapesFrameFour)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameDome)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameSleeve)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameFingertip)->Unit(benchmark::kMillisecond);
