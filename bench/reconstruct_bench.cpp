@@ -61,8 +61,8 @@ struct Bench {
     for (double angle_deg : {0.0, 35.0, 70.0, 110.0})
       bars.push_back(twin.frame({bar_press({30 - 0.05 * angle_deg, 28 + 0.04 * angle_deg}, 30, 3, angle_deg, 10)}));
     for (double shift : {0.0, 3.0, 6.0})
-      fours.push_back(twin.frame({{18 + shift, 18, 5, 8}, {38 + shift, 18, 5, 10}, {18, 38 + shift, 5, 12},
-                                  {38, 38 - shift, 5, 9}}));
+      fours.push_back(twin.frame(
+          {{18 + shift, 18, 5, 8}, {38 + shift, 18, 5, 10}, {18, 38 + shift, 5, 12}, {38, 38 - shift, 5, 9}}));
     for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
   }
 };
@@ -216,6 +216,7 @@ void BM_ShapesFrame(benchmark::State& state) { fit_frames(state, bench(), bench(
 void BM_ShapesFrameBar(benchmark::State& state) { fit_frames(state, bench(), bench().bars, false, true); }
 void BM_ShapesFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false, true); }
 void BM_FitFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false); }
+void BM_FitFrameBar(benchmark::State& state) { fit_frames(state, bench(), bench().bars, false); }
 void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench(), bench().moving, false); }
 void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true); }
 void BM_FitFrameDome(benchmark::State& state) { fit_frames(state, dome_bench(), dome_bench().frames, false); }
@@ -272,6 +273,7 @@ BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameFour)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameBar)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShapesFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShapesFrameBar)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ShapesFrameFour)->Unit(benchmark::kMillisecond);

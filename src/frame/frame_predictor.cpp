@@ -2,13 +2,17 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 
 namespace emit {
 
 FramePredictor::FramePredictor(const Mesh& mesh, const DenseGreenFunction& green)
-    : mesh_(mesh), green_(green), patch_of_dof_(green.dofs.dof_count, -1) {}
+    : mesh_(mesh),
+      green_(green),
+      patch_of_dof_(green.dofs.dof_count, -1),
+      previous_patch_of_dof_(green.dofs.dof_count, -1) {}
 
 void FramePredictor::set_series_resistance(const std::vector<double>& ohm) {
   const int N = green_.dofs.electrode_count;
@@ -20,9 +24,11 @@ void FramePredictor::set_series_resistance(const std::vector<double>& ohm) {
   series_ohm_ = ohm;
 }
 
-/// Numbers the dofs the contact touches and assembles C on them.
-void FramePredictor::gather_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S) {
-  for (int dof : patch_dofs_) patch_of_dof_[dof] = -1;
+/// Numbers the dofs the contact touches; the last call's numbering is kept beside it.
+void FramePredictor::gather_patch(const std::vector<Index>& triangles) {
+  std::swap(patch_of_dof_, previous_patch_of_dof_);
+  std::swap(patch_dofs_, previous_patch_dofs_);
+  for (int dof : patch_dofs_) patch_of_dof_[dof] = -1;  // the numbering before the last
   patch_dofs_.clear();
   for (Index t : triangles)
     for (int k = 0; k < 3; ++k) {
@@ -32,18 +38,29 @@ void FramePredictor::gather_patch(const std::vector<Index>& triangles, const std
         patch_dofs_.push_back(dof);
       }
     }
-  assemble_on_patch(triangles, local_S, C_);
 }
 
-void FramePredictor::assemble_on_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
-                                       Matrix& out) const {
+/// G0 on the patch. G0 is ~180 MB: its entries on a patch of p dofs are p² cache misses (a third
+/// of a four-contact frame's time), while a fit's next evaluation mostly touches the same dofs. So
+/// what the last patch had is copied from the last G_pp and only the new dofs' entries read.
+void FramePredictor::gather_green() {
   const auto p = static_cast<Index>(patch_dofs_.size());
-  out.setZero(p, p);
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        out(patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], a)]],
-            patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], b)]]) += local_S[i](a, b);
+  const int N = green_.dofs.electrode_count;
+  std::swap(G_pp_, previous_G_pp_);
+  G_pp_.resize(p, p);
+  for (Index j = 0; j < p; ++j) {
+    const int previous_j = previous_patch_of_dof_[patch_dofs_[j]];
+    const auto column = green_.column(patch_dofs_[j]);
+    for (Index i = 0; i < p; ++i) {
+      const int previous_i = previous_j < 0 ? -1 : previous_patch_of_dof_[patch_dofs_[i]];
+      G_pp_(i, j) = previous_i < 0 ? column[patch_dofs_[i]] : previous_G_pp_(previous_i, previous_j);
+    }
+  }
+  G_pe_.resize(p, N);
+  for (int e = 0; e < N; ++e) {
+    const auto column = green_.column(e);
+    for (Index i = 0; i < p; ++i) G_pe_(i, e) = column[patch_dofs_[i]];
+  }
 }
 
 void FramePredictor::predict(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
@@ -51,23 +68,29 @@ void FramePredictor::predict(const std::vector<Index>& triangles, const std::vec
   const double E = drive_voltage_V;
   const int N = green_.dofs.electrode_count;  // electrode e is dof e
   frame.setZero(N, N);
+  gather_patch(triangles);  // empty: derivative() then gives 0
   if (triangles.empty()) return;
-  gather_patch(triangles, local_S);
+  gather_green();
   const auto p = static_cast<Index>(patch_dofs_.size());
-  G_pp_.resize(p, p);
-  G_pe_.resize(p, N);
-  for (Index i = 0; i < p; ++i) {
-    for (Index j = 0; j < p; ++j) G_pp_(i, j) = green_.at(patch_dofs_[i], patch_dofs_[j]);
-    for (int e = 0; e < N; ++e) G_pe_(i, e) = green_.at(patch_dofs_[i], e);
-  }
-  c1_.noalias() = C_.rowwise().sum();  // C·1: the contact's pull per volt of drive
-
+  // C is sparse on the patch (a dof's few neighbours): M = I + C G_pp, C G_pe and C·1 from the
+  // triangles' matrices, O(p) rows each, not dense products of O(p³). Mᵀ's columns are the
+  // contiguous ones (C and G_pp symmetric: Mᵀ = I + G_pp C), so M_ holds Mᵀ.
   M_.setIdentity(p, p);
-  M_.noalias() += C_ * G_pp_;
-  lu_.compute(M_);
-  Y_.resize(p, N);  // column 0: unit drive; column l: unit current into electrode l
-  Y_.col(0) = c1_;
-  Y_.rightCols(N - 1).noalias() = C_ * G_pe_.rightCols(N - 1);
+  Y_.setZero(p, N);  // column 0: unit drive; column l: unit current into electrode l
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const int row = patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], a)]];
+      for (int b = 0; b < 3; ++b) {
+        const double s = local_S[i](a, b);
+        const int col = patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], b)]];
+        M_.col(row) += s * G_pp_.col(col);
+        Y_(row, 0) += s;
+        Y_.row(row).tail(N - 1) += s * G_pe_.row(col).tail(N - 1);
+      }
+    }
+  c1_ = Y_.col(0);  // C·1: the contact's pull per volt of drive
+  lu_.compute(M_.transpose());
+  adjoint_ready_ = false;
   Y_ = lu_.solve(Y_);
   Z_p_.noalias() = G_pp_ * Y_;
   Z_e_.noalias() = G_pe_.transpose() * Y_;
@@ -111,23 +134,43 @@ void FramePredictor::derivative(const std::vector<Index>& triangles, const std::
   const int N = green_.dofs.electrode_count;
   d_frame.setZero(N, N);
   if (patch_dofs_.empty()) return;
-  assemble_on_patch(triangles, d_local_S, dC_);
-  dc1_.noalias() = dC_.rowwise().sum();
-  dY_.noalias() = dC_ * Q_;
-  dY_ = lu_.solve(dY_);
-  dZ_p_.noalias() = G_pp_ * dY_;
-  dZ_e_.noalias() = G_pe_.transpose() * dY_;
+  const auto p = static_cast<Index>(patch_dofs_.size());
+  if (!adjoint_ready_) {
+    // dY = M⁻¹ dC Q is only ever seen through G_peᵀ dY (the electrodes) and c1ᵀ G_pp dY (the
+    // contact's currents): one transposed solve for [G_pe, G_pp c1] per predict() leaves each
+    // direction O(p·N²) instead of the solve's O(p²·N).
+    adjoint_.resize(p, N + 1);
+    adjoint_.leftCols(N) = G_pe_;
+    adjoint_.col(N).noalias() = G_pp_ * c1_;  // G_pp symmetric: (c1ᵀ G_pp)ᵀ
+    adjoint_ = lu_.transpose().solve(adjoint_);
+    adjoint_ready_ = true;
+  }
+  // dC Q and dC·1 straight from the triangles' matrices: dC is sparse on the patch.
+  dCQ_.setZero(p, N);
+  dc1_.setZero(p);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      const int row = patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], a)]];
+      for (int b = 0; b < 3; ++b) {
+        const double s = d_local_S[i](a, b);
+        if (s == 0) continue;
+        dCQ_.row(row) += s * Q_.row(patch_of_dof_[green_.dofs.dof_of_node[mesh_.triangles(triangles[i], b)]]);
+        dc1_[row] += s;
+      }
+    }
+  dZ_e_.noalias() = adjoint_.leftCols(N).transpose() * dCQ_;
+  c1_dZ_p_.noalias() = dCQ_.transpose() * adjoint_.col(N);  // c1ᵀ dZ_p, per column
   const auto a_p = Z_p_.col(0);
   const auto a_e = Z_e_.col(0);
   const auto da_e = dZ_e_.col(0);
-  const double d_drawn = dc1_.sum() - dc1_.dot(a_p) - c1_.dot(dZ_p_.col(0));
+  const double d_drawn = dc1_.sum() - dc1_.dot(a_p) - c1_dZ_p_[0];
   // x0 = E / (1 + R0·D): dx0 = −E·R0·dD / (1 + R0·D)²; row 0 = (E − x0) + x0·a.
   const double R0 = series_ohm_.empty() ? 0.0 : series_ohm_[0];
   const double dx0 = -E_ * R0 * d_drawn / ((1.0 + R0 * drawn_by_a_) * (1.0 + R0 * drawn_by_a_));
   d_frame.row(0) = (Vector::Constant(N, -dx0) + dx0 * a_e + x0_ * da_e).transpose();
   for (int l = 1; l < N; ++l) {
     const auto dw_e = -dZ_e_.col(l);  // w_l = G0·l − Z·l
-    const double d_lost = dc1_.dot(Q_.col(l)) - c1_.dot(dZ_p_.col(l));
+    const double d_lost = dc1_.dot(Q_.col(l)) - c1_dZ_p_[l];
     Eigen::Matrix2d dA;
     dA << da_e[l], dw_e[l], d_drawn, -d_lost;
     const Eigen::Vector2d d_xI = -regrounding_[l].partialPivLu().solve(dA * xI_[l]);

@@ -171,6 +171,16 @@ Parameters merged(const Parameters& a, const Parameters& b) {
   return {w * a[0] + (1 - w) * b[0], w * a[1] + (1 - w) * b[1], a[2], 0, 0, std::log(ga + gb) - 2 * a[2]};
 }
 
+/// Whether two contacts may be one region: the gap between their ellipses' circumscribed circles
+/// under the separation that tells two presses apart (three of the fit's held radii, as
+/// FitPrecompute::plausible_separation_mm).
+/// Farther apart, one ellipse cannot cover both without leaving a frame the merge never pays for
+/// (four fingers 20 mm apart: 7.3 s of merge trials a frame, BM_ShapesFrameFour, none merged).
+bool within_reach(const Parameters& a, const Parameters& b, double separation_mm) {
+  const Ellipse p = to_ellipse(a.data()), q = to_ellipse(b.data());
+  return std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) - p.semi_major_mm() - q.semi_major_mm() < separation_mm;
+}
+
 }  // namespace
 
 const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const std::vector<Disc>& discs,
@@ -202,6 +212,7 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
     double best_chi2 = 0;
     for (std::size_t i = 0; i < parameters.size(); ++i)
       for (std::size_t j = i + 1; j < parameters.size(); ++j) {
+        if (!within_reach(parameters[i], parameters[j], 3 * shared_.options().prior_radius_mm)) continue;
         std::vector<Parameters> trial;
         for (std::size_t k = 0; k < parameters.size(); ++k)
           if (k != i && k != j) trial.push_back(parameters[k]);

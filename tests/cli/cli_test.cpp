@@ -538,11 +538,11 @@ bool read_outline_row(const std::string& text, const std::string& method, const 
 }
 
 // emit eval --outlines as a user runs it (--quick: one frame of each of the eight outlines), for
-// the paper's method and contact fitting, each calibrated on 16 disc presses (--quick; 40 in a full run). Bounds: every Dice
-// in [0, 1]; contact fitting's regions are centred within 3 mm over all outlines (its fitted discs
-// sit on the presses' centroids: 0.11 mm in issue 31's measurement); the paper's method's pressed
-// region is not the outline (Dice below 0.3: its 50 % region is blurred to 2-5 times a contact's
-// area, issue 31 measured 0.09) and below fit's on the 30 x 3 bar.
+// the paper's method and contact fitting, each calibrated on 16 disc presses (--quick; 40 in a full run). Bounds: every
+// Dice in [0, 1]; contact fitting's regions are centred within 3 mm over all outlines (its fitted discs sit on the
+// presses' centroids: 0.11 mm in issue 31's measurement); the paper's method's pressed region is not the outline (Dice
+// below 0.3: its 50 % region is blurred to 2-5 times a contact's area, issue 31 measured 0.09) and below fit's on the
+// 30 x 3 bar.
 TEST(Cli, EvalOutlinesScoresEachMethodPerOutline) {
   const auto r = run_emit("eval --outlines --quick --methods paper,fit");
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -37,18 +37,20 @@ class FramePredictor {
 
   /// After predict(): the frame's derivative along a change dC of the contact matrices of the
   /// same triangles (d_local_S[i] for triangles[i]), by differentiating the Woodbury solve and
-  /// the 2×2 regrounding: dY = M⁻¹ dC Q, Q = [1 − a, w_1 … w_{N−1}] on the patch.
+  /// the 2×2 regrounding: dY = M⁻¹ dC Q, Q = [1 − a, w_1 … w_{N−1}] on the patch, seen through
+  /// the adjoint M⁻ᵀ[G_pe, G_pp c1] (solved once after each predict): O(p·N²) a direction.
   void derivative(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& d_local_S, Frame& d_frame);
 
  private:
-  void gather_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S);
-  void assemble_on_patch(const std::vector<Index>& triangles, const std::vector<Eigen::Matrix3d>& local_S,
-                         Matrix& out) const;
+  void gather_patch(const std::vector<Index>& triangles);
+  void gather_green();
   const Mesh& mesh_;
   const DenseGreenFunction& green_;
   std::vector<int> patch_of_dof_;  ///< −1 off the patch
   std::vector<int> patch_dofs_;
-  Matrix C_, G_pp_, G_pe_, M_, Y_, Z_p_, Z_e_;
+  std::vector<int> previous_patch_of_dof_, previous_patch_dofs_;  ///< the last predict()'s patch
+  Matrix previous_G_pp_;                                          ///< and G0 on it
+  Matrix G_pp_, G_pe_, M_, Y_, Z_p_, Z_e_;
   Vector c1_;
   // Kept from predict() for derivative(): the fields on the patch (Q) and the electrodes, and per
   // grounding l the 2×2 system and its solution.
@@ -57,8 +59,10 @@ class FramePredictor {
   Matrix Q_, W_e_;                          ///< W_e_.col(l) = w_l on the electrodes
   std::vector<Eigen::Matrix2d> regrounding_;
   std::vector<Eigen::Vector2d> xI_;
-  Matrix dC_, dY_, dZ_p_, dZ_e_;
-  Vector dc1_;
+  Matrix adjoint_;  ///< M⁻ᵀ [G_pe, G_pp c1], on the first derivative() after a predict()
+  bool adjoint_ready_ = false;
+  Matrix dCQ_, dZ_e_;
+  Vector dc1_, c1_dZ_p_;
   Eigen::PartialPivLU<Matrix> lu_;
 };
 
