@@ -420,8 +420,8 @@ double longest_edge_mm(const Mesh& mesh) {
   return longest;
 }
 
-/// A circle (or an ellipse) as drawn: its points in the surface's tangent plane at its centre, and under each the
-/// surface's nearest point, whose visibility decides the mark's.
+/// A circle (or an ellipse) as drawn: its points in the surface's tangent plane at its centre, and
+/// under each the surface's nearest point, whose visibility decides the mark's.
 struct Ring {
   std::array<Vector3, ring_segments + 1> points, under;
 };

@@ -1,10 +1,10 @@
 #pragma once
 /// \file pressure_map.hpp
 /// A pressure image as a picture: the per-element pressure drawn smooth over the mesh (N/mm², from
-/// 0), with circles or ellipses outlined (contacts found: contact_outline; or the true presses). A flat sheet is drawn
-/// from +z (render_field); a curved one, a mesh not flat (mesh/flatness.hpp), as the shaded picture
-/// (render_shaded_surface: an oblique view and the top view, and the bottom view for a sheet those
-/// leave partly unseen), shaded_pressure_map_width_px wide.
+/// 0), with circles or ellipses outlined (contacts found: contact_outline; or the true presses). A
+/// flat sheet is drawn from +z (render_field); a curved one, a mesh not flat (mesh/flatness.hpp),
+/// as the shaded picture (render_shaded_surface: an oblique view and the top view, and the bottom
+/// view for a sheet those leave partly unseen), shaded_pressure_map_width_px wide.
 #include <string>
 #include <vector>
 
