@@ -94,7 +94,8 @@ void add_live_command(CLI::App& app) {
       "  emit live --source file:session.emitrec --contacts - --fps 0\n"
       "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
   cmd->add_option("--source", job.source,
-                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], file:REC (a recording), "
+                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], sim:fixed:OUTLINE (a flat "
+                  "punch held, as simulate --press takes it: bar:x,y,L,W,angle,F, ellipse:…), file:REC (a recording), "
                   "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
       ->capture_default_str();
   cmd->add_option("--record", job.record_path, "Record every frame the source gives to this file (replay with file:)");

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <numbers>
 #include <type_traits>
 
 namespace emit {
@@ -54,6 +55,12 @@ constexpr std::string_view tactile_contacts_fields =
     "float64 position_std_y          # m, along its second\n"
     "float64 pressure_std            # Pa, 1 sigma\n"
     "float64 force_std               # N, 1 sigma\n"
+    "# The outline as the ellipse of its second moments (all 0: none, a disc of the area):\n"
+    "float64 semi_major_m            # m, the semi-axes\n"
+    "float64 semi_minor_m            # m\n"
+    "float64 orientation_rad         # rad, the major axis from the chart's first axis, in (-pi/2, pi/2]\n"
+    "float64 area_std_m2             # m^2, 1 sigma of the area (0: not estimated)\n"
+    "float64 orientation_std_rad     # rad, 1 sigma of the orientation (0: not estimated)\n"
     "================================================================================\n"
     "MSG: geometry_msgs/Wrench\n"
     "Vector3 force\n"
@@ -129,6 +136,8 @@ class CdrWriter {
   std::vector<std::uint8_t>& out_;
 };
 
+constexpr double degrees_to_radians = std::numbers::pi / 180;
+
 static_assert(std::endian::native == std::endian::little, "CDR_LE is written as the host's bytes");
 
 }  // namespace
@@ -170,7 +179,12 @@ Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
           1e-3 * c.x_std_mm,
           1e-3 * c.y_std_mm,
           1e6 * c.pressure_std_N_per_mm2,
-          c.force_std_N};
+          c.force_std_N,
+          1e-3 * c.semi_major_mm,
+          1e-3 * c.semi_minor_mm,
+          degrees_to_radians * c.orientation_deg,
+          1e-6 * c.area_std_mm2,
+          degrees_to_radians * c.orientation_std_deg};
 }
 
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
@@ -196,8 +210,9 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
     cdr.vector3(c.normal);
     cdr.vector3(c.force_N);        // the wrench's force
     cdr.vector3(Vector3::Zero());  // and torque
-    for (const double v : {c.area_m2, c.pressure_Pa, c.peak_pressure_Pa, c.position_std_x_m, c.position_std_y_m,
-                           c.pressure_std_Pa, c.force_std_N})
+    for (const double v :
+         {c.area_m2, c.pressure_Pa, c.peak_pressure_Pa, c.position_std_x_m, c.position_std_y_m, c.pressure_std_Pa,
+          c.force_std_N, c.semi_major_m, c.semi_minor_m, c.orientation_rad, c.area_std_m2, c.orientation_std_rad})
       cdr.put(v);
   }
 }

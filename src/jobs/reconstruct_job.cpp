@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <variant>
 
@@ -33,8 +32,7 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
                  Method method, const std::string& dir) {
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
-  for (const Contact& c : contacts)
-    outlines.push_back({Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi), c.z_mm});
+  for (const Contact& c : contacts) outlines.push_back(contact_outline(c));
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,

@@ -146,7 +146,12 @@ void DdsPublisher::publish(const LiveFrame& frame) {
                              c.position_std_x_m,
                              c.position_std_y_m,
                              c.pressure_std_Pa,
-                             c.force_std_N};
+                             c.force_std_N,
+                             c.semi_major_m,
+                             c.semi_minor_m,
+                             c.orientation_rad,
+                             c.area_std_m2,
+                             c.orientation_std_rad};
   }
   emit_msgs_msg_dds__TactileContacts_ contacts_message{};
   contacts_message.header = header;

@@ -77,6 +77,11 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
                     {"area_mm2", c.area_mm2},
                     {"pressure_N_per_mm2", c.pressure_N_per_mm2},
                     {"force_N", c.force_N}};
+    if (c.semi_major_mm > 0) {  // the outline's ellipse, as the JSON Lines name it
+      contact["semi_major_mm"] = c.semi_major_mm;
+      contact["semi_minor_mm"] = c.semi_minor_mm;
+      contact["orientation_deg"] = c.orientation_deg;
+    }
     if (curved) {
       contact["z_mm"] = c.z_mm;
       contact["normal"] = {c.nx, c.ny, c.nz};

@@ -29,6 +29,8 @@ inline constexpr int bar_width_px = 18;
 inline constexpr int bar_label_gap_px = 6;               ///< between the colour bar and its labels
 inline constexpr double electrode_half_width_px = 1.75;  ///< 3–4 px lines
 inline constexpr double border_half_width_px = 0.75;
+/// The sides of an outlined ellipse's polygon (a circle's: within 0.06 % of its radius).
+inline constexpr int ellipse_segments = 96;
 
 /// A rectangle of pixels, x right and y down.
 struct Box {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
@@ -154,11 +155,31 @@ void draw_electrodes(Image& image, const FieldLayout& layout, const Mesh& mesh, 
   }
 }
 
+/// An ellipse's outline as a closed polygon of detail::ellipse_segments sides, in pixels.
+void draw_ellipse(Image& image, const FieldLayout& layout, const Circle& ellipse, double half_width, Rgb colour) {
+  const double angle = ellipse.orientation_deg * std::numbers::pi / 180;
+  const Vector2 major(std::cos(angle), std::sin(angle)), minor(-major.y(), major.x());
+  const auto point = [&](int k) {
+    const double phi = 2 * std::numbers::pi * k / detail::ellipse_segments;
+    const Vector2 p =
+        ellipse.center_mm + ellipse.radius_mm * std::cos(phi) * major + ellipse.semi_minor_mm * std::sin(phi) * minor;
+    return to_px(layout, p.x(), p.y());
+  };
+  for (int k = 0; k < detail::ellipse_segments; ++k)
+    detail::draw_segment(image, point(k), point(k + 1), half_width, colour);
+}
+
 /// White rings 2 px wide, with a 1 px dark ring either side so they show on the bright end of the
-/// map as well as on the dark one.
+/// map as well as on the dark one; an ellipse the same way.
 void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Circle>& outlines) {
   for (const Circle& circle : outlines) {
     if (!circle.center_mm.allFinite() || !std::isfinite(circle.radius_mm)) continue;  // nothing sensible to draw
+    if (circle.ellipse) {
+      if (!std::isfinite(circle.semi_minor_mm) || !std::isfinite(circle.orientation_deg)) continue;
+      draw_ellipse(image, layout, circle, 2.0, detail::outline_shadow);
+      draw_ellipse(image, layout, circle, 1.0, detail::white);
+      continue;
+    }
     const Vector2 centre = to_px(layout, circle.center_mm.x(), circle.center_mm.y());
     const double radius = circle.radius_mm * layout.scale_px_per_mm;
     detail::draw_ring(image, centre, radius, 2.0, detail::outline_shadow);

@@ -1,6 +1,8 @@
 #include "emit/render/pressure_map.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "emit/mesh/element_to_node.hpp"
 #include "emit/mesh/flatness.hpp"
@@ -8,6 +10,17 @@
 #include "emit/render/shaded_surface.hpp"
 
 namespace emit {
+
+Circle contact_outline(const Contact& c) {
+  Circle mark{Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi), c.z_mm};
+  if (c.semi_major_mm > 0) {
+    mark.ellipse = true;
+    mark.radius_mm = c.semi_major_mm;
+    mark.semi_minor_mm = c.semi_minor_mm;
+    mark.orientation_deg = c.orientation_deg;
+  }
+  return mark;
+}
 
 Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
                          FieldImageOptions options) {

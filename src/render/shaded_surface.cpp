@@ -420,8 +420,8 @@ double longest_edge_mm(const Mesh& mesh) {
   return longest;
 }
 
-/// A circle as drawn: its points in the surface's tangent plane at its centre, and under each the
-/// surface's nearest point, whose visibility decides the mark's.
+/// A circle (or an ellipse) as drawn: its points in the surface's tangent plane at its centre, and
+/// under each the surface's nearest point, whose visibility decides the mark's.
 struct Ring {
   std::array<Vector3, ring_segments + 1> points, under;
 };
@@ -435,11 +435,22 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
     const Vector3 centre(circle.center_mm.x(), circle.center_mm.y(), circle.z_mm);
     if (!centre.allFinite() || !std::isfinite(circle.radius_mm)) continue;
     const NearestFacet facet = facet_near(mesh, centre);
-    const Vector3 e1 = facet.normal.unitOrthogonal(), e2 = facet.normal.cross(e1);
+    Vector3 e1 = facet.normal.unitOrthogonal();
+    double minor_mm = circle.radius_mm;
+    if (circle.ellipse && std::isfinite(circle.semi_minor_mm) && std::isfinite(circle.orientation_deg)) {
+      // The major axis along its direction seen from +z, projected into the tangent plane (where
+      // the plane is near vertical and that direction nearly along the normal: any tangent).
+      const double angle = circle.orientation_deg * std::numbers::pi / 180;
+      const Vector3 major(std::cos(angle), std::sin(angle), 0);
+      const Vector3 along = major - major.dot(facet.normal) * facet.normal;
+      if (along.norm() > 0.1) e1 = along.normalized();
+      minor_mm = circle.semi_minor_mm;
+    }
+    const Vector3 e2 = facet.normal.cross(e1);
     Ring ring;
     for (int k = 0; k <= ring_segments; ++k) {
       const double angle = 2 * std::numbers::pi * k / ring_segments;
-      ring.points[k] = centre + circle.radius_mm * (std::cos(angle) * e1 + std::sin(angle) * e2);
+      ring.points[k] = centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2;
     }
     // A ring point p is within r of the centre, which is within d of a centroid, so p's nearest
     // surface point is within r + d of p, 2r + d of the centre, and its triangle's centroid within

@@ -10,6 +10,7 @@
 #include "emit/core/errors.hpp"
 #include "emit/mesh/sheet_chart.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/surface.hpp"
 
 namespace emit {
@@ -49,7 +50,17 @@ SimScript parse_sim_script(const std::string& spec) {
   }
   const std::string fixed = "sim:fixed:";
   if (spec.rfind(fixed, 0) != 0)
-    throw InvalidInput("source \"" + spec + "\": expected sim, sim:random or sim:fixed:X,Y[,F]");
+    throw InvalidInput("source \"" + spec + "\": expected sim, sim:random, sim:fixed:X,Y[,F] or sim:fixed:OUTLINE");
+  if (const std::string outline = spec.substr(fixed.size()); outline.find(':') != std::string::npos) {
+    // A flat punch of another outline (bar:…, ellipse:…, ring:…, polygon:…), as `simulate --press`.
+    script.kind = SimScript::Kind::fixed;
+    try {
+      script.fixed = parse_outline_press(outline);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("source \"" + spec + "\": " + e.what());
+    }
+    return script;
+  }
   std::vector<double> values;
   std::string rest = spec.substr(fixed.size());
   for (std::size_t at; !rest.empty();) {

@@ -6,6 +6,7 @@
 #include "emit/io/ros2_messages.hpp"
 
 #include <cstring>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -60,6 +61,16 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 112), -2.5);     // wrench force z [N]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 144), 20e-6);    // area [m²]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 152), 0.125e6);  // pressure [Pa]
+  // After peak pressure (160) and the four 1σ (168 to 192): the outline's ellipse, SI and radians.
+  c.semi_major_mm = 6, c.semi_minor_mm = 1.5, c.orientation_deg = 45, c.area_std_mm2 = 2, c.orientation_std_deg = 9;
+  encode_tactile_contacts(out, {}, "", 9, {c});
+  ASSERT_EQ(out.size(), 4u + 240u);                                        // the last double, orientation_std, at 232
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 200), 6e-3);                   // semi_major [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 208), 1.5e-3);                 // semi_minor [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 216), std::numbers::pi / 4);   // orientation [rad]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 224), 2e-6);                   // area_std [m²]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 232), std::numbers::pi / 20);  // orientation_std [rad]
+  EXPECT_NE(tactile_contacts_message().definition.find("float64 orientation_rad "), std::string::npos);
   // Every definition names the types it uses once each, as ROS 2 bags carry them.
   for (const Ros2MessageType* type :
        {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(), &mesh_message()}) {

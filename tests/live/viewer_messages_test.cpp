@@ -86,6 +86,25 @@ TEST(ViewerMessages, CurvedFrameContactsCarryHeightAndNormal) {
   EXPECT_EQ(flat.size(), 5u);
 }
 
+// A contact with an outline carries its ellipse under the JSON Lines' names; one without, none.
+TEST(ViewerMessages, AContactsOutlineIsItsEllipse) {
+  std::vector<Contact> contacts(2);
+  contacts[0].semi_major_mm = 7.5, contacts[0].semi_minor_mm = 1.25, contacts[0].orientation_deg = -30;
+  const Vector pressure = Vector::Zero(2);
+  LiveFrame frame;
+  frame.contacts = &contacts;
+  frame.pressure_N_per_mm2 = &pressure;
+  const std::string message = frame_message(frame, 0);
+  std::uint32_t bytes = 0;
+  std::memcpy(&bytes, message.data(), 4);
+  const auto listed = nlohmann::json::parse(message.substr(4, bytes))["contacts"];
+  EXPECT_EQ(listed[0]["semi_major_mm"], 7.5);
+  EXPECT_EQ(listed[0]["semi_minor_mm"], 1.25);
+  EXPECT_EQ(listed[0]["orientation_deg"], -30.0);
+  EXPECT_FALSE(listed[1].contains("semi_major_mm"));
+  EXPECT_EQ(listed[1].size(), 5u);
+}
+
 TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   std::vector<Contact> contacts(1);
   contacts[0].x_mm = 12.5;

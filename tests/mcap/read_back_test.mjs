@@ -41,6 +41,20 @@ function readRecords(bytes) {
   return { records, complete: reader.done() && error === null, error };
 }
 
+/** Every number of a decoded emit_msgs/TactileContact against its JSON Lines object (6 significant
+ *  digits there; an absent key is 0), in SI units. */
+function compareContact(c, j, what) {
+  const pairs = [["x_mm", c.position.x, 1e-3], ["y_mm", c.position.y, 1e-3], ["area_mm2", c.area, 1e-6],
+    ["pressure_N_per_mm2", c.pressure, 1e6], ["peak_pressure_N_per_mm2", c.peak_pressure, 1e6],
+    ["force_N", -c.wrench.force.z, 1], ["x_std_mm", c.position_std_x, 1e-3], ["y_std_mm", c.position_std_y, 1e-3],
+    ["pressure_std_N_per_mm2", c.pressure_std, 1e6], ["force_std_N", c.force_std, 1],
+    ["semi_major_mm", c.semi_major_m, 1e-3], ["semi_minor_mm", c.semi_minor_m, 1e-3],
+    ["orientation_deg", c.orientation_rad, Math.PI / 180], ["area_std_mm2", c.area_std_m2, 1e-6],
+    ["orientation_std_deg", c.orientation_std_rad, Math.PI / 180]];
+  for (const [key, value, scale] of pairs)
+    check(close(value, scale * (j[key] ?? 0), 1e-5), `${what} ${key}: ${value} against ${scale * (j[key] ?? 0)}`);
+}
+
 /** The messages of each topic, decoded from the schemas the file carries. */
 function decode(records) {
   const schemas = new Map(), channels = new Map(), topics = {};
@@ -118,15 +132,32 @@ contacts.forEach((m, f) => {
   check(m.contacts.length === lines[f].contacts.length, `contacts ${f}: count`);
   m.contacts.forEach((c, i) => {
     const j = lines[f].contacts[i];
-    const pairs = [[c.position.x, 1e-3 * j.x_mm], [c.position.y, 1e-3 * j.y_mm], [c.area, 1e-6 * j.area_mm2],
-      [c.pressure, 1e6 * j.pressure_N_per_mm2], [c.peak_pressure, 1e6 * j.peak_pressure_N_per_mm2],
-      [-c.wrench.force.z, j.force_N], [c.position_std_x, 1e-3 * (j.x_std_mm ?? 0)]];
-    pairs.forEach(([a, b], k) => check(close(a, b, 1e-5), `contacts ${f}.${i} field ${k}: ${a} against ${b}`));
+    compareContact(c, j, `contacts ${f}.${i}`);
     check(c.normal.z === 1 && c.position.z === 0 && c.name === `contact_${i}`, `contacts ${f}.${i}: flat sheet, name`);
     compared++;
   });
 });
 check(compared >= 2 * lines.length - 1, `two contacts a frame (${compared} in ${lines.length} frames)`);
+
+// A bar 24 x 4 mm at 30 degrees, `shapes`: its contact's outline (the ellipse of its second
+// moments, and their 1 sigma) decoded as the JSON Lines say, in SI units; twice as long as wide,
+// along the bar within the issue's 10 degrees (the bar's own ellipse is 6 times).
+run("simulate", "--press", "bar:30,30,24,4,30,10", "--out", at("bar.csv"));
+run("reconstruct", "--method", "shapes", "--reference", at("ref.csv"), "--frames", at("bar.csv"), "--contacts",
+    at("bar.jsonl"), "--mcap", at("bar.mcap"), ...cache);
+const barLine = JSON.parse(readFileSync(at("bar.jsonl"), "utf8").trim());
+const barRead = readRecords(new Uint8Array(readFileSync(at("bar.mcap"))));
+const [barMessage] = decode(barRead.records).topics["/emit/contacts"];
+check(barRead.complete && barMessage.contacts.length === barLine.contacts.length && barLine.contacts.length >= 1,
+      `the bar's contacts: ${barMessage.contacts.length} against ${barLine.contacts.length}`);
+const bar = barMessage.contacts[0];
+compareContact(bar, barLine.contacts[0], "the bar's contact");
+const offDeg = ((bar.orientation_rad * 180 / Math.PI - 30) % 180 + 270) % 180 - 90;
+check(bar.semi_major_m >= 2 * bar.semi_minor_m && bar.semi_minor_m > 0 && Math.abs(offDeg) <= 10,
+      `the bar's ellipse: ${bar.semi_major_m} by ${bar.semi_minor_m} m, ${offDeg} degrees off`);
+check(bar.area_std_m2 > 0 && bar.orientation_std_rad > 0, "the bar's shape has its 1 sigma");
+console.log(`mcap: the bar's contact ${(1e3 * bar.semi_major_m).toFixed(2)} x ${(1e3 * bar.semi_minor_m).toFixed(2)} mm ` +
+            `at ${(bar.orientation_rad * 180 / Math.PI).toFixed(1)} deg (area ${(1e6 * bar.area).toFixed(1)} mm^2)`);
 
 // Pressure images: one float per triangle; their largest is the strongest contact's peak.
 topics["/emit/pressure"].forEach((p, f) => {

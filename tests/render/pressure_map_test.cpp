@@ -2,14 +2,19 @@
 // two-panel one.
 #include "emit/render/pressure_map.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "emit/frame/contacts.hpp"
 #include "emit/mesh/element_to_node.hpp"
 #include "emit/mesh/flatness.hpp"
 #include "emit/mesh/generate_mesh.hpp"
+#include "emit/render/field_image.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/shaded_surface.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -73,6 +78,67 @@ TEST(PressureMap, CurvedSheetGetsTheShadedTwoPanelPicture) {
   const Vector nodal = element_to_node(mesh, Vector::Constant(mesh.triangle_count(), 0.1));
   EXPECT_EQ(image.rgb(), render_shaded_surface(mesh, nodal, {{Vector2(3, 4), 2.0, 9.0}}, options).rgb());
   fs::remove_all(folder);
+}
+
+/// The sheet points [mm] of the picture's white pixels (the outlines' 1 px white middle: the map's
+/// colours all have blue or green below 230) within `reach_mm` of `centre`.
+std::vector<Vector2> white_points(const Image& image, const FieldLayout& layout, const Vector2& centre,
+                                  double reach_mm) {
+  std::vector<Vector2> points;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const Rgb c = image.get(x, y);
+      const Vector2 p(layout.min_x_mm + (x + 0.5 - layout.origin_x_px) / layout.scale_px_per_mm,
+                      layout.max_y_mm - (y + 0.5 - layout.origin_y_px) / layout.scale_px_per_mm);
+      if (c.r >= 230 && c.g >= 230 && c.b >= 230 && (p - centre).norm() < reach_mm) points.push_back(p);
+    }
+  return points;
+}
+
+// A contact with an outline is marked by its ellipse, not by the circle of its area: a bar's
+// contact (semi-axes 4 and 1 mm, at 30°) is drawn as a ring whose white pixels reach 4 mm along
+// 30° and 1 mm across it; the same contact without an outline gets the circle of its area, and
+// a round outline a circle of its radius.
+TEST(PressureMap, AContactsMarkIsItsOutlinesEllipse) {
+  const Mesh mesh = test::strip_mesh(10, 10, 10, 10);
+  Contact bar;
+  bar.x_mm = 5, bar.y_mm = 5, bar.area_mm2 = 4 * std::numbers::pi;  // π·4·1
+  bar.semi_major_mm = 4, bar.semi_minor_mm = 1, bar.orientation_deg = 30;
+  const Circle mark = contact_outline(bar);
+  EXPECT_TRUE(mark.ellipse);
+  EXPECT_EQ(mark.radius_mm, 4.0);
+  EXPECT_EQ(mark.semi_minor_mm, 1.0);
+  FieldLayout layout;
+  const Image image = render_field(mesh, mesh.nodes_mm.col(0), {mark}, {}, &layout);  // about 50 px/mm
+  const Vector2 centre(5, 5), along(std::cos(std::numbers::pi / 6), std::sin(std::numbers::pi / 6));
+  const Vector2 across(-along.y(), along.x());
+  const std::vector<Vector2> white = white_points(image, layout, centre, 4.6);
+  ASSERT_GT(white.size(), 200u);
+  double reach_along = 0, reach_across = 0;
+  for (const Vector2& p : white) {
+    reach_along = std::max(reach_along, std::abs((p - centre).dot(along)));
+    reach_across = std::max(reach_across, std::abs((p - centre).dot(across)));
+  }
+  // The white line is 2 px wide about the ellipse: its pixels' centres reach the semi-axis plus
+  // at most a pixel's diagonal (0.03 mm at this scale), and at least the semi-axis less one.
+  const double pixel_mm = std::sqrt(2.0) / layout.scale_px_per_mm;
+  EXPECT_NEAR(reach_along, 4.0, pixel_mm);
+  EXPECT_NEAR(reach_across, 1.0, pixel_mm);
+
+  Contact disc = bar;
+  disc.semi_major_mm = 0;  // no outline: the circle of its area, radius 2 mm
+  const Circle circle = contact_outline(disc);
+  EXPECT_FALSE(circle.ellipse);
+  EXPECT_NEAR(circle.radius_mm, 2.0, 1e-12);
+  disc.semi_major_mm = disc.semi_minor_mm = 2;  // a round outline stays a circle
+  const Image round = render_field(mesh, mesh.nodes_mm.col(0), {contact_outline(disc)}, {}, &layout);
+  double nearest = 10, farthest = 0;
+  for (const Vector2& p : white_points(round, layout, centre, 4.6)) {
+    nearest = std::min(nearest, (p - centre).norm());
+    farthest = std::max(farthest, (p - centre).norm());
+  }
+  EXPECT_NEAR(nearest, 2.0, pixel_mm);
+  EXPECT_NEAR(farthest, 2.0, pixel_mm);
 }
 
 // mesh/flatness.hpp: heights of round-off (1e-9 of the 10 mm extent) are flat; a micrometre is not.

@@ -207,6 +207,40 @@ TEST(ShadedSurface, CirclesAreDrawnWhereTheyAreInSight) {
   EXPECT_GT(changed_pixels(plain, far_ring, layout.top), 100);
 }
 
+// An ellipse (a contact's outline) is drawn in the tangent plane along its direction seen from +z:
+// at the dome's apex, where that plane is level, the top view shows it as it is. Semi-axes 6 and
+// 1.5 mm at 30°: the pixels it changes reach the semi-axes (times the view's px/mm) along 30° and
+// across, plus the 2 px half-width of its dark edge and a pixel's half-diagonal, no more.
+TEST(ShadedSurface, AnEllipseIsDrawnAlongItsAxes) {
+  const Mesh& mesh = test::dome_mesh();
+  const Vector3 apex = surface_point_mm(test::dome_sensor().shape, Vector2(0, 0));
+  const Vector values = Vector::Constant(mesh.node_count(), 1);
+  ShadedLayout layout;
+  const Image plain = render_shaded_surface(mesh, values, {}, {}, &layout);
+  Circle ellipse{apex.head<2>(), 6.0, apex.z()};
+  ellipse.ellipse = true, ellipse.semi_minor_mm = 1.5, ellipse.orientation_deg = 30;
+  const Image drawn = render_shaded_surface(mesh, values, {ellipse}, {});
+  const SurfaceView& top = layout.top;
+  const Vector2 centre = top.to_px(apex);
+  const Vector3 major(std::cos(std::numbers::pi / 6), std::sin(std::numbers::pi / 6), 0);
+  const Vector2 along = (top.to_px(apex + major) - centre).normalized();
+  const double px_per_mm = (top.to_px(apex + major) - centre).norm();
+  const Vector2 across(-along.y(), along.x());
+  double reach_along = 0, reach_across = 0;
+  for (int y = top.top_px; y < top.top_px + top.size_px; ++y)
+    for (int x = top.left_px; x < top.left_px + top.size_px; ++x)
+      if (!(plain.get(x, y) == drawn.get(x, y))) {
+        const Vector2 d = Vector2(x + 0.5, y + 0.5) - centre;
+        reach_along = std::max(reach_along, std::abs(d.dot(along)));
+        reach_across = std::max(reach_across, std::abs(d.dot(across)));
+      }
+  const double edge_px = 2 + std::sqrt(0.5);
+  EXPECT_GE(reach_along, 6 * px_per_mm);
+  EXPECT_LE(reach_along, 6 * px_per_mm + edge_px);
+  EXPECT_GE(reach_across, 1.5 * px_per_mm);
+  EXPECT_LE(reach_across, 1.5 * px_per_mm + edge_px);
+}
+
 // The layout depends on the width, title and unit, not the values: the two panels are squares side
 // by side, the colour bar to their right, all within the width.
 TEST(ShadedSurface, LayoutIsTwoSquarePanelsWithinTheWidth) {

@@ -2,23 +2,34 @@
 // it joins the domain, subscribes to rt/PREFIX/contacts and rt/PREFIX/mesh with ROS 2's type
 // names, starts `emit live … --dds PREFIX --dds-domain D` and checks what arrives: every frame's
 // contacts, in order, none lost (the source's frame numbers run on by one), with the right
-// contents (a held press found where it is; nothing on the twin's untouched frames), and the mesh.
+// contents (a held press found where it is; nothing on the twin's untouched frames; every field of
+// every contact as the JSON Lines emit writes in the same run, `--contacts`, say), and the mesh.
+// With --elongated ANGLE_DEG (a held bar, `--source sim:fixed:bar:…`), every touched frame's
+// strongest contact must also be an ellipse twice as long as wide along the bar, within 10°.
 // It prints the publish-to-receive latency (receive time − the header's stamp, one clock).
 //
-//   emit_dds_check EMIT DOMAIN PREFIX FRAMES X_MM Y_MM [emit live's other arguments…]
+//   emit_dds_check EMIT DOMAIN PREFIX FRAMES X_MM Y_MM [--elongated ANGLE_DEG] [emit live's other arguments…]
 //
 // Exit 0 when every check holds; 1, naming the first that failed.
 #include <dds/dds.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <numbers>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "emit_ros2.h"
 
@@ -48,11 +59,87 @@ dds_entity_t reader(dds_entity_t participant, const std::string& topic, const dd
   return r;
 }
 
+/// A contact's numbers as the message carries them, in the order of json_keys below.
+constexpr int field_count = 19;
+using Fields = std::array<double, field_count>;
+
+Fields fields_of(const emit_msgs_msg_dds__TactileContact_& c) {
+  return {c.position.x,
+          c.position.y,
+          c.position.z,
+          c.normal.x,
+          c.normal.y,
+          c.normal.z,
+          c.area,
+          c.pressure,
+          c.peak_pressure,
+          -c.wrench.force.z,
+          c.position_std_x,
+          c.position_std_y,
+          c.pressure_std,
+          c.force_std,
+          c.semi_major_m,
+          c.semi_minor_m,
+          c.orientation_rad,
+          c.area_std_m2,
+          c.orientation_std_rad};
+}
+
+/// The same from the JSON Lines (src/io/contacts_jsonl.cpp; an absent key is 0, the normal's z 1),
+/// in SI units. The wrench's z is −force·nz: on the flat sheets this is run on, nz = 1.
+struct JsonKey {
+  const char* key;
+  double scale, absent;
+};
+constexpr JsonKey json_keys[field_count] = {
+    {"x_mm", 1e-3, 0},
+    {"y_mm", 1e-3, 0},
+    {"z_mm", 1e-3, 0},
+    {"nx", 1, 0},
+    {"ny", 1, 0},
+    {"nz", 1, 1},
+    {"area_mm2", 1e-6, 0},
+    {"pressure_N_per_mm2", 1e6, 0},
+    {"peak_pressure_N_per_mm2", 1e6, 0},
+    {"force_N", 1, 0},
+    {"x_std_mm", 1e-3, 0},
+    {"y_std_mm", 1e-3, 0},
+    {"pressure_std_N_per_mm2", 1e6, 0},
+    {"force_std_N", 1, 0},
+    {"semi_major_mm", 1e-3, 0},
+    {"semi_minor_mm", 1e-3, 0},
+    {"orientation_deg", std::numbers::pi / 180, 0},
+    {"area_std_mm2", 1e-6, 0},
+    {"orientation_std_deg", std::numbers::pi / 180, 0},
+};
+
+/// JSON Lines carry 6 significant digits (%.6g): within 5e-6 relative of the double sent.
+bool agree(double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-15; }
+
+/// Every frame's contacts in the JSON Lines file, by frame number.
+std::map<std::uint64_t, std::vector<Fields>> read_json_lines(const std::string& path) {
+  std::map<std::uint64_t, std::vector<Fields>> frames;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    const nlohmann::json j = nlohmann::json::parse(line);
+    std::vector<Fields>& contacts = frames[j.at("frame").get<std::uint64_t>()];
+    for (const nlohmann::json& c : j.at("contacts")) {
+      Fields f{};
+      for (int k = 0; k < field_count; ++k)
+        f[static_cast<std::size_t>(k)] = json_keys[k].scale * c.value(json_keys[k].key, json_keys[k].absent);
+      contacts.push_back(f);
+    }
+  }
+  return frames;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 7) {
-    std::fprintf(stderr, "usage: emit_dds_check EMIT DOMAIN PREFIX FRAMES X_MM Y_MM [emit live's arguments…]\n");
+    std::fprintf(stderr,
+                 "usage: emit_dds_check EMIT DOMAIN PREFIX FRAMES X_MM Y_MM [--elongated ANGLE_DEG] "
+                 "[emit live's arguments…]\n");
     return 2;
   }
   const std::string emit = argv[1], prefix = argv[3];
@@ -66,6 +153,19 @@ int main(int argc, char** argv) {
   const auto domain = static_cast<int>(given[0]);
   const auto frames = static_cast<long>(given[1]);
   const double x_m = 1e-3 * given[2], y_m = 1e-3 * given[3];
+  int rest = 7;
+  double bar_deg = std::numeric_limits<double>::quiet_NaN();
+  if (argc > rest + 1 && std::string(argv[rest]) == "--elongated") {
+    char* end = nullptr;
+    bar_deg = std::strtod(argv[rest + 1], &end);
+    if (end == argv[rest + 1] || *end != '\0') return fail(std::string("not an angle: \"") + argv[rest + 1] + "\"");
+    rest += 2;
+  }
+  // The JSON Lines emit writes beside DDS, to compare every field with.
+  char json_path[] = "/tmp/emit_dds_check_XXXXXX";
+  const int json_file = mkstemp(json_path);
+  if (json_file < 0) return fail("creating a temporary file");
+  close(json_file);
 
   const dds_entity_t participant = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
   if (participant < 0) return fail(std::string("joining the domain: ") + dds_strretcode(participant));
@@ -77,8 +177,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> args = {emit,           "live",
                                    "--dds",        prefix,
                                    "--dds-domain", std::to_string(domain),
-                                   "--frames",     std::to_string(frames)};
-  for (int i = 7; i < argc; ++i) args.emplace_back(argv[i]);
+                                   "--frames",     std::to_string(frames),
+                                   "--contacts",   json_path};
+  for (int i = rest; i < argc; ++i) args.emplace_back(argv[i]);
   std::vector<char*> child_argv;
   child_argv.reserve(args.size() + 1);
   for (std::string& a : args) child_argv.push_back(a.data());
@@ -90,6 +191,8 @@ int main(int argc, char** argv) {
   // Take the contacts as they come, until all frames are in or the publisher has ended and
   // nothing more arrives.
   std::vector<std::uint64_t> numbers;
+  std::map<std::uint64_t, std::vector<Fields>> received_contacts;
+  long elongated = 0;
   std::vector<double> latency_ms;
   std::string problem;
   long touched = 0;
@@ -112,6 +215,8 @@ int main(int argc, char** argv) {
           static_cast<std::uint64_t>(m->header.stamp.sec) * 1'000'000'000u + m->header.stamp.nanosec;
       latency_ms.push_back(1e-6 * static_cast<double>(received - stamp));
       numbers.push_back(m->frame);
+      std::vector<Fields>& kept = received_contacts[m->frame];
+      for (std::uint32_t c = 0; c < m->contacts._length; ++c) kept.push_back(fields_of(m->contacts._buffer[c]));
       if (problem.empty() && std::string(m->header.frame_id) != "emit_sheet") problem = "header.frame_id";
       // The twin's first 15 frames are untouched; the press is found within the paper method's
       // p95 on this sheet, 8.05 mm (README).
@@ -122,6 +227,18 @@ int main(int argc, char** argv) {
         const bool found = m->contacts._length >= 1 && std::hypot(m->contacts._buffer[0].position.x - x_m,
                                                                   m->contacts._buffer[0].position.y - y_m) < 8.05e-3;
         if (!found && problem.empty()) problem = "the press not found on frame " + std::to_string(m->frame);
+        if (found && std::isfinite(bar_deg)) {
+          // A bar's outline is far longer than wide (24 × 4 mm: its second moments' ellipse is 6
+          // times); twice, along the bar within the 10°, is what the frame must show.
+          const auto& c = m->contacts._buffer[0];
+          const double off_deg =
+              std::remainder(c.orientation_rad * 180 / std::numbers::pi - bar_deg, 180.0);  // an axis: mod 180°
+          if (c.semi_major_m >= 2 * c.semi_minor_m && c.semi_minor_m > 0 && std::abs(off_deg) <= 10) ++elongated;
+          else if (problem.empty())
+            problem = "frame " + std::to_string(m->frame) + "'s contact is not the bar's ellipse: semi-axes " +
+                      std::to_string(1e3 * c.semi_major_m) + " and " + std::to_string(1e3 * c.semi_minor_m) + " mm, " +
+                      std::to_string(off_deg) + " deg off its angle";
+        }
       }
     }
     if (n > 0) {
@@ -152,6 +269,33 @@ int main(int argc, char** argv) {
   }
   dds_delete(participant);
 
+  // Every field of every contact received, as the JSON Lines say.
+  std::map<std::uint64_t, std::vector<Fields>> written;
+  try {
+    written = read_json_lines(json_path);
+  } catch (const std::exception& e) {
+    std::remove(json_path);
+    return fail(std::string("reading the JSON Lines: ") + e.what());
+  }
+  std::remove(json_path);
+  long compared = 0;
+  for (const auto& [frame, contacts_received] : received_contacts) {
+    const auto line = written.find(frame);
+    if (line == written.end() || line->second.size() != contacts_received.size()) {
+      if (problem.empty()) problem = "frame " + std::to_string(frame) + "'s contacts are not the JSON Lines'";
+      continue;
+    }
+    for (std::size_t c = 0; c < contacts_received.size(); ++c)
+      for (int k = 0; k < field_count; ++k) {
+        const double a = contacts_received[c][static_cast<std::size_t>(k)],
+                     b = line->second[c][static_cast<std::size_t>(k)];
+        if (!agree(a, b) && problem.empty())
+          problem = "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s " + json_keys[k].key +
+                    ": " + std::to_string(a) + " (SI) against the JSON Lines' " + std::to_string(b);
+        ++compared;
+      }
+  }
+
   std::vector<double> sorted = latency_ms;
   std::sort(sorted.begin(), sorted.end());
   const auto at = [&](double q) {
@@ -161,15 +305,19 @@ int main(int argc, char** argv) {
   for (std::size_t i = 1; i < numbers.size(); ++i) out_of_order += numbers[i] != numbers[i - 1] + 1;
   std::printf(
       "dds_check: %zu of %ld frames' contacts received, %ld out of order or missing between, first %llu; "
-      "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2\n",
+      "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2; %ld contact fields as in the JSON Lines%s\n",
       numbers.size(), frames, out_of_order, numbers.empty() ? 0ULL : static_cast<unsigned long long>(numbers[0]),
-      at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2);
+      at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2, compared,
+      std::isfinite(bar_deg) ? (", " + std::to_string(elongated) + " touched frames' contact the bar's ellipse").c_str()
+                             : "");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return fail("emit live exited with " + std::to_string(status));
   if (static_cast<long>(numbers.size()) != frames) return fail("frames lost");
   if (out_of_order != 0) return fail("frames out of order");
   if (numbers[0] != 10) return fail("the first frame is not the one after the baseline's 10");
   if (!problem.empty()) return fail(problem);
   if (touched == 0) return fail("no touched frame");
+  if (compared == 0) return fail("no contact to compare with the JSON Lines");
+  if (std::isfinite(bar_deg) && elongated != touched) return fail("not every touched frame's contact the bar's");
   if (std::abs(area_m2 - 3.6e-3) > 1e-9) return fail("the mesh's area");
   return 0;
 }

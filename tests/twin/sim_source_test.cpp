@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/sensor/press_outline.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
@@ -66,6 +67,28 @@ TEST(SimSource, PacedSourceDropsWhatIsNotRead) {
   ASSERT_TRUE(source.next(frame, std::chrono::seconds(1)));
   EXPECT_GT(frame.sequence, 1u) << "the oldest frames were dropped";
   EXPECT_FALSE(source.finished());
+}
+
+// sim:fixed takes any outline `simulate --press` does: a bar 12 × 3 mm at 30°, held, its area
+// 36 mm² exactly (a rectangle's polygon); a bad outline is refused naming the source.
+TEST(SimSource, FixedHoldsAnOutline) {
+  const SimScript bar = parse_sim_script("sim:fixed:bar:15,15,12,3,30,5");
+  ASSERT_EQ(bar.kind, SimScript::Kind::fixed);
+  EXPECT_EQ(bar.fixed.x_mm, 15.0);
+  EXPECT_EQ(bar.fixed.force_N, 5.0);
+  ASSERT_EQ(bar.fixed.outline_mm.size(), 1u);
+  EXPECT_NEAR(press_area_mm2(bar.fixed), 36.0, 1e-9);  // L·W, in doubles
+  SourceOptions options;
+  options.frames_per_s = 0;
+  const SimSource source(coarse_sensor(), bar, options);
+  ASSERT_EQ(source.presses_of(20).size(), 1u);
+  EXPECT_EQ(source.presses_of(20)[0].outline_mm.size(), 1u);
+  try {
+    parse_sim_script("sim:fixed:bar:15,15,12");
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("source \"sim:fixed:bar:15,15,12\": ", 0), 0u) << e.what();
+  }
 }
 
 TEST(SimSource, RefusesABadPace) {

@@ -8,7 +8,9 @@
 /// The messages are modelled on tactile_msgs (`TactileState`: a header and each sensor's name and
 /// values; `TactileContact`: name, position, normal, wrench), in ROS's SI units (REP 103): metres,
 /// newtons, pascals. emit's contacts are in mm and N/mm², so positions are × 1e-3, areas × 1e-6
-/// and pressures × 1e6 here.
+/// and pressures × 1e6 here; angles are in radians. A contact's outline is the ellipse of its second
+/// moments (semi_major_m, semi_minor_m, orientation_rad, with the 1σ area_std_m2 and
+/// orientation_std_rad: JSON Lines' semi_major_mm, … in SI units), all 0 when it has none.
 ///
 ///   emit_msgs/msg/TactileState     a raw frame: sensors[0] = {sensor name, N·N volts ground-major}
 ///   emit_msgs/msg/TactileContacts  a frame's contacts, strongest first (none: an empty list)
@@ -62,6 +64,9 @@ struct Ros2Contact {
   std::array<char, 32> name;            ///< "contact_<i>", i its rank in the frame (strongest first)
   Vector3 position_m, normal, force_N;  ///< force: the press on the sheet, −force_N · normal
   double area_m2, pressure_Pa, peak_pressure_Pa, position_std_x_m, position_std_y_m, pressure_std_Pa, force_std_N;
+  /// The outline's ellipse (frame/contacts.hpp; all 0 when it has none) and the 1σ of its area and
+  /// angle; the angle from the chart's first axis, in (−π/2, π/2].
+  double semi_major_m, semi_minor_m, orientation_rad, area_std_m2, orientation_std_rad;
 };
 Ros2Contact ros2_contact(const Contact& contact, std::size_t rank);
 

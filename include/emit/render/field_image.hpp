@@ -15,11 +15,16 @@ namespace emit {
 
 /// An outlined circle (a contact, a press): its centre (x, y) and, on a curved sheet, the centre's
 /// height z (render_field ignores it; render_shaded_surface draws the circle in the sheet's
-/// tangent plane there).
+/// tangent plane there). Or an outlined ellipse (a contact's outline, frame/contacts.hpp).
 struct Circle {
   Vector2 center_mm{0, 0};
-  double radius_mm = 0;
+  double radius_mm = 0;  ///< a circle's radius; an ellipse's semi-major axis
   double z_mm = 0;
+  /// Drawn as an ellipse when `ellipse`: semi-axes radius_mm and semi_minor_mm (≤ radius_mm), the
+  /// major axis at orientation_deg from the sheet's x axis seen from +z (on a curved sheet, in the
+  /// tangent plane along that direction's projection).
+  bool ellipse = false;
+  double semi_minor_mm = 0, orientation_deg = 0;
 };
 
 struct FieldImageOptions {

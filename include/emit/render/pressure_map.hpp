@@ -1,19 +1,24 @@
 #pragma once
 /// \file pressure_map.hpp
 /// A pressure image as a picture: the per-element pressure drawn smooth over the mesh (N/mm², from
-/// 0), with circles outlined (contacts found, or the true presses). A flat sheet is drawn from +z
-/// (render_field); a curved one, a mesh not flat (mesh/flatness.hpp), as the shaded picture
-/// (render_shaded_surface: an oblique view and the top view, and the bottom view for a sheet those
-/// leave partly unseen), shaded_pressure_map_width_px wide.
+/// 0), with circles or ellipses outlined (contacts found: contact_outline; or the true presses). A
+/// flat sheet is drawn from +z (render_field); a curved one, a mesh not flat (mesh/flatness.hpp),
+/// as the shaded picture (render_shaded_surface: an oblique view and the top view, and the bottom
+/// view for a sheet those leave partly unseen), shaded_pressure_map_width_px wide.
 #include <string>
 #include <vector>
 
+#include "emit/frame/contacts.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/render/field_image.hpp"
 
 namespace emit {
 
 inline constexpr int shaded_pressure_map_width_px = 1024;  ///< two panels of 341 px beside the colour bar
+
+/// A contact's mark: the ellipse of its outline when it has one (semi_major_mm > 0:
+/// frame/contacts.hpp), else the circle of its area.
+Circle contact_outline(const Contact& contact);
 
 /// A field on the sheet as a picture: render_field for a flat sheet, render_shaded_surface (at
 /// least shaded_pressure_map_width_px wide) for a curved one. \param nodal_values  #V values.

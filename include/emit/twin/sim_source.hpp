@@ -21,7 +21,7 @@ struct SimScript {
   enum class Kind {
     loop,    ///< a figure-eight over the sheet, 6 s pressed then 1 s lifted, again and again
     random,  ///< a press at a random place for 0.6 s, then 0.2 s lifted, again and again
-    fixed,   ///< one press held at `fixed`
+    fixed,   ///< one press held: `fixed`, a disc or an outline
   };
   Kind kind = Kind::loop;
   Press fixed{30, 30, 5, 10};               ///< kind fixed: where and how hard
@@ -29,7 +29,9 @@ struct SimScript {
   double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
 };
 
-/// "sim", "sim:loop", "sim:random", "sim:fixed:X,Y[,F]". \throw InvalidInput naming the spec.
+/// "sim", "sim:loop", "sim:random", "sim:fixed:X,Y[,F]", or "sim:fixed:OUTLINE": a flat punch of any
+/// outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…, ring:…, polygon:…; flat
+/// sheets only: sensor/press_outline.hpp), held. \throw InvalidInput naming the spec.
 SimScript parse_sim_script(const std::string& spec);
 
 class SimSource : public FrameSource {
