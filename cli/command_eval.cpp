@@ -27,8 +27,9 @@ struct EvalArgs {
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
   RealisticEvalOptions realistic_options;
-  RealEvalJob real;       ///< --real DIR: a real skin's presses
-  bool outlines = false;  ///< --outlines
+  RealEvalJob real;        ///< --real DIR: a real skin's presses
+  bool outlines = false;   ///< --outlines
+  bool indenters = false;  ///< --indenters
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
@@ -66,13 +67,14 @@ void run_outlines(EvalArgs& args) {
   for (const std::string& name : args.methods) o.methods.push_back(parse_method(name));
   o.mesh_seed = args.options.mesh_seed;
   if (args.seed->count() > 0) o.seed = args.options.seed;
+  o.indenters = args.indenters;
   o.validate();
   const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
-  std::printf(
-      "emit eval --outlines: flat punches of eight outlines on the twin (mesh seed %d; noise and presses from seed "
-      "%llu), %d of each, 4-16 N%s\n",
-      o.mesh_seed, static_cast<unsigned long long>(o.seed), o.presses_per_family,
-      args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
+  std::printf("emit eval %s on the twin (mesh seed %d; noise and presses from seed %llu), %d of each, 4-16 N%s\n",
+              o.indenters ? "--indenters: flat discs of radius 2, 3, 5, 7 and 10 mm"
+                          : "--outlines: flat punches of eight outlines",
+              o.mesh_seed, static_cast<unsigned long long>(o.seed), o.presses_per_family,
+              args.options.quick ? " (--quick: a smoke test, too few presses to judge by)" : "");
   for (const auto& [c, electrodes] : sheets) {
     std::printf("\n%s, %d electrodes\n", c.name.c_str(), electrodes);
     std::fflush(stdout);
@@ -99,7 +101,7 @@ void run_real(EvalArgs& args) {
 void run_eval(EvalArgs args) {
   if (!args.real.folder.empty()) return run_real(args);
   if (args.realistic->count() > 0) return run_realistic(args);
-  if (args.outlines) return run_outlines(args);
+  if (args.outlines || args.indenters) return run_outlines(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
   if (run_merit_eval(args.merit, args.sheet, args.options.methods, args.options.mesh_seed, args.options.seed,
@@ -133,7 +135,7 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--mesh-seed", o.mesh_seed, "Seed of the twin's mesh")->capture_default_str();
   a->seed = cmd->add_option("--seed", o.seed,
                             "Seed of the presses and of the ADC noise (default 1; with --realistic, 11; with "
-                            "--outlines, 21)");
+                            "--outlines and --indenters, 21)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_option("--sheet", a->sheet,
                   "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve, fingertip)");
@@ -149,6 +151,12 @@ void add_eval_command(CLI::App& app) {
                 "bars, a stylus) per method, each calibrated on 40 disc presses: Dice, force, centroid, "
                 "orientation and regions per outline (the 60 mm sheet unless --sheet says; --lambda2 does not apply)")
       ->excludes(a->realistic);
+  cmd->add_flag("--indenters", a->indenters,
+                "As --outlines, with flat discs of radius 2, 3, 5, 7 and 10 mm for outlines after the same calibration "
+                "with 5 mm discs: area, force and whether they lie within their reported 1 and 2 sigma; fit and shapes "
+                "also with each radius declared (--contact-radius-mm)")
+      ->excludes(a->realistic)
+      ->excludes("--outlines");
   CLI::Option* real =
       cmd->add_option("--real", a->real.folder,
                       "A real skin's presses: a folder of frames.csv, references_per_frame.csv (or reference.csv) and "

@@ -113,6 +113,11 @@ void add_live_command(CLI::App& app) {
                   "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
+  cmd->add_option(
+         "--contact-radius-mm", job.contact_radius_mm,
+         "fit and shapes: the indenter's radius, declared (a 3 mm stylus, a 10 mm finger pad): every contact's "
+         "area held at pi R^2 (5 % on R) instead of the calibration indenter's, its force and pressure from it")
+      ->check(checked_by(&FrameOptions::contact_radius_mm));
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--calibration", job.calibration_path, "Pressure calibration (JSON from 'emit calibrate')")

@@ -67,6 +67,11 @@ void add_reconstruct_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--min-area-mm2", job.min_contact_area_mm2, "Drop contacts smaller than this")
       ->check(checked_by(&FrameOptions::min_contact_area_mm2));
+  cmd->add_option(
+         "--contact-radius-mm", job.contact_radius_mm,
+         "fit and shapes: the indenter's radius, declared (a 3 mm stylus, a 10 mm finger pad): every contact's "
+         "area held at pi R^2 (5 % on R) instead of the calibration indenter's, its force and pressure from it")
+      ->check(checked_by(&FrameOptions::contact_radius_mm));
   cmd->add_option("--images", job.images_dir, "Write a pressure map per frame (PNG) into this folder");
   cmd->add_option("--mcap", job.mcap_path,
                   "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");

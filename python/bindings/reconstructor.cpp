@@ -217,7 +217,8 @@ seconds, once; with cache_dir the linear operator is kept on disk for the next t
 set_reference(untouched frames), and reconstruct(frames) per frame or per stack.)")
       .def(py::init([](const Sensor& sensor, const std::string& method,
                        const std::optional<PythonCalibration>& calibration, const std::string& cache_dir,
-                       double lambda2, double threshold_fraction, double min_contact_area_mm2, bool track_contacts) {
+                       double lambda2, double threshold_fraction, double min_contact_area_mm2, bool track_contacts,
+                       double contact_radius_mm) {
              PipelineOptions pipeline;
              pipeline.method = parse_method(method);
              pipeline.lambda2 = lambda2;
@@ -226,15 +227,18 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
              options.threshold_fraction = threshold_fraction;
              options.min_contact_area_mm2 = min_contact_area_mm2;
              options.track_contacts = track_contacts;
+             options.contact_radius_mm = contact_radius_mm;
              pipeline.validate();  // the library's rules, as the CLI's options say them, before any work
-             options.validate();
+             check_frame_options(pipeline.method, options);
              const EmitCall call;
              return std::make_unique<PythonReconstructor>(sensor, pipeline, options, calibration);
            }),
            py::arg("sensor"), py::arg("method") = "fit", py::arg("calibration") = py::none(), py::kw_only(),
            py::arg("cache_dir") = "", py::arg("lambda2") = 0.0, py::arg("threshold_fraction") = 0.5,
-           py::arg("min_contact_area_mm2") = 0.0, py::arg("track_contacts") = true,
-           "method: one of emit.methods(). calibration: an emit.Calibration of the method's kind, or None.")
+           py::arg("min_contact_area_mm2") = 0.0, py::arg("track_contacts") = true, py::arg("contact_radius_mm") = 0.0,
+           "method: one of emit.methods(). calibration: an emit.Calibration of the method's kind, or None. "
+           "contact_radius_mm: for 'fit' and 'shapes', the indenter's radius declared (0: not): every contact's "
+           "area held at pi R^2.")
       .def(
           "set_reference",
           [](PythonReconstructor& self, const py::handle& frames) {

@@ -170,6 +170,7 @@ class Reconstructor:
         threshold_fraction: float = 0.5,
         min_contact_area_mm2: float = 0.0,
         track_contacts: bool = True,
+        contact_radius_mm: float = 0.0,
     ) -> None: ...
     def set_reference(self, frames: ArrayLike) -> None: ...
     def reconstruct(

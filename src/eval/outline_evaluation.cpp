@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -35,15 +36,26 @@ void OutlineEvalOptions::validate() const {
   at_least(presses_per_family, 1, "presses_per_family");
   at_least(calibration_iterations, 0, "calibration_iterations");
   if (methods.empty()) throw InvalidInput("outline evaluation: no method to evaluate");
+  if (indenters && indenter_radii_mm.empty()) throw InvalidInput("outline evaluation: no indenter radius");
+  for (const double r : indenter_radii_mm)
+    if (!(r > 0 && r <= 12))
+      throw InvalidInput("outline evaluation: an indenter's radius must be in (0, 12] mm, got " + std::to_string(r));
 }
 
 OutlineFamilyScore summarize_outline_scores(const std::string& family, const std::vector<OutlineScore>& scores) {
   OutlineFamilyScore s;
   s.family = family;
   s.frames = static_cast<int>(scores.size());
-  int centroids = 0, orientations = 0;
+  int centroids = 0, orientations = 0, area_sigmas = 0, force_sigmas = 0;
   double orientation_sum = 0;
   for (const OutlineScore& f : scores) {
+    s.area_ratio += f.true_area_mm2 > 0 ? f.area_mm2 / f.true_area_mm2 : 0;
+    area_sigmas += f.area_std_mm2 > 0;
+    force_sigmas += f.force_std_N > 0;
+    s.area_within_1sigma += within_sigmas(f.area_mm2, f.area_std_mm2, f.true_area_mm2, 1);
+    s.area_within_2sigma += within_sigmas(f.area_mm2, f.area_std_mm2, f.true_area_mm2, 2);
+    s.force_within_1sigma += within_sigmas(f.force_N, f.force_std_N, f.true_force_N, 1);
+    s.force_within_2sigma += within_sigmas(f.force_N, f.force_std_N, f.true_force_N, 2);
     s.dice += f.dice;
     const double ratio = f.true_force_N > 0 ? f.force_N / f.true_force_N : 0;
     s.force_ratio += ratio;
@@ -63,8 +75,12 @@ OutlineFamilyScore summarize_outline_scores(const std::string& family, const std
   }
   if (s.frames > 0) {
     const double n = s.frames;
-    s.dice /= n, s.force_ratio /= n, s.force_error /= n, s.regions /= n, s.right_count /= n;
+    s.dice /= n, s.force_ratio /= n, s.force_error /= n, s.regions /= n, s.right_count /= n, s.area_ratio /= n;
+    s.area_within_1sigma /= n, s.area_within_2sigma /= n, s.force_within_1sigma /= n, s.force_within_2sigma /= n;
   }
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  if (area_sigmas == 0) s.area_within_1sigma = s.area_within_2sigma = none;
+  if (force_sigmas == 0) s.force_within_1sigma = s.force_within_2sigma = none;
   s.centroid_mm = centroids > 0 ? s.centroid_mm / centroids : std::numeric_limits<double>::quiet_NaN();
   s.orientation_deg = orientations > 0 ? orientation_sum / orientations : std::numeric_limits<double>::quiet_NaN();
   return s;
@@ -104,12 +120,31 @@ OutlineEvaluation evaluate_outlines(const EvalCase& eval_case, const OutlineEval
   const Sensor& sensor = eval_case.sensor;
   if (is_curved(sensor.shape)) throw InvalidInput("outline evaluation: the sheet must be flat");
   // The outlines first: a sheet without room for them is refused before any solve.
-  const std::vector<OutlineFamily>& families = outline_families();
+  // Each family's name, frames' presses and, in the indenter sweep, its radius (to declare).
+  std::vector<std::string> names;
   std::vector<PressSequence> outlines;
-  for (std::size_t k = 0; k < families.size(); ++k) {
-    OutlineStyle style;
-    style.seed = options.seed + 1 + k;
-    outlines.push_back(outline_script(sensor, families[k], options.presses_per_family, style));
+  std::vector<double> radii_mm;
+  if (options.indenters) {
+    for (std::size_t k = 0; k < options.indenter_radii_mm.size(); ++k) {
+      PressStyle style;  // as the outlines: 4–16 N, every point of the disc 3 mm inside the border
+      style.radius_mm = options.indenter_radii_mm[k];
+      style.min_force_N = 4, style.max_force_N = 16;
+      style.margin_mm = style.radius_mm + 3;
+      style.seed = options.seed + 101 + k;
+      char name[32];
+      std::snprintf(name, sizeof name, "disc r%g", style.radius_mm);
+      names.emplace_back(name);
+      outlines.push_back(random_script(sensor, options.presses_per_family, style));
+      radii_mm.push_back(style.radius_mm);
+    }
+  } else {
+    for (std::size_t k = 0; k < outline_families().size(); ++k) {
+      OutlineStyle style;
+      style.seed = options.seed + 1 + k;
+      names.emplace_back(outline_family_name(outline_families()[k]));
+      outlines.push_back(outline_script(sensor, outline_families()[k], options.presses_per_family, style));
+      radii_mm.push_back(0);
+    }
   }
   const PressSequence calibration_presses = calibration_script(sensor, options.calibration_presses, options.seed);
 
@@ -124,11 +159,12 @@ OutlineEvaluation evaluate_outlines(const EvalCase& eval_case, const OutlineEval
   const Reference reference = average_reference(references);
   const std::vector<Frame> calibration_frames = simulate(twin, calibration_presses, "calibration press", progress);
   std::vector<std::vector<Frame>> outline_frames;
-  for (std::size_t k = 0; k < families.size(); ++k)
-    outline_frames.push_back(simulate(twin, outlines[k], outline_family_name(families[k]), progress));
+  for (std::size_t k = 0; k < outlines.size(); ++k)
+    outline_frames.push_back(simulate(twin, outlines[k], names[k], progress));
 
   OutlineEvaluation result;
   result.calibration_presses = options.calibration_presses;
+  result.indenters = options.indenters;
   std::vector<std::vector<Vector>> coverage;  // per family and frame, on the reconstruction mesh
   for (const Method method : options.methods) {
     progress.say(std::string("calibrating ") + method_name(method) + " on " +
@@ -155,27 +191,41 @@ OutlineEvaluation evaluate_outlines(const EvalCase& eval_case, const OutlineEval
         for (const std::vector<Press>& presses : family) coverage.back().push_back(outline_coverage(mesh, presses));
       }
     }
-    MethodOutlineScore scored;
-    scored.method = method;
-    scored.calibration_rms_N_per_mm2 = calibration.rms_N_per_mm2;
-    std::vector<OutlineScore> all;
-    const Clock::time_point start = Clock::now();
-    for (std::size_t k = 0; k < families.size(); ++k) {
-      std::vector<OutlineScore> scores;
-      for (std::size_t f = 0; f < outlines[k].size(); ++f) {
-        const std::vector<Contact>& contacts = reconstructor.process(outline_frames[k][f]);
-        scores.push_back(score_outline_frame(mesh, coverage[k][f], reconstructor.pressure(), contacts, outlines[k][f]));
-        progress.step(std::string("reconstructing outlines (") + method_name(method) + ")",
-                      static_cast<long>(all.size() + scores.size()),
-                      static_cast<long>(families.size() * outlines[k].size()));
+    // Contact fitting's methods in the indenter sweep: also with each disc's radius declared.
+    for (const bool declared : {false, true}) {
+      if (declared && (is_linear(method) || !options.indenters)) break;
+      MethodOutlineScore scored;
+      scored.method = method;
+      scored.declared_radius = declared;
+      scored.calibration_rms_N_per_mm2 = calibration.rms_N_per_mm2;
+      std::vector<OutlineScore> all;
+      const Clock::time_point start = Clock::now();
+      for (std::size_t k = 0; k < outlines.size(); ++k) {
+        std::optional<Reconstructor> declaring;  // the family's radius declared
+        if (declared) {
+          FrameOptions o = frame_options;
+          o.contact_radius_mm = radii_mm[k];
+          declaring.emplace(pipeline.reconstructor(o));
+          declaring->set_reference(reference);
+        }
+        Reconstructor& r = declared ? *declaring : reconstructor;
+        std::vector<OutlineScore> scores;
+        for (std::size_t f = 0; f < outlines[k].size(); ++f) {
+          const std::vector<Contact>& contacts = r.process(outline_frames[k][f]);
+          scores.push_back(score_outline_frame(mesh, coverage[k][f], r.pressure(), contacts, outlines[k][f]));
+          progress.step(std::string("reconstructing ") + (options.indenters ? "indenters (" : "outlines (") +
+                            method_name(method) + (declared ? ", declared radius)" : ")"),
+                        static_cast<long>(all.size() + scores.size()),
+                        static_cast<long>(outlines.size() * outlines[k].size()));
+        }
+        scored.families.push_back(summarize_outline_scores(names[k], scores));
+        all.insert(all.end(), scores.begin(), scores.end());
       }
-      scored.families.push_back(summarize_outline_scores(outline_family_name(families[k]), scores));
-      all.insert(all.end(), scores.begin(), scores.end());
+      scored.ms_per_frame = 1e3 * std::chrono::duration<double>(Clock::now() - start).count() /
+                            static_cast<double>(std::max<std::size_t>(all.size(), 1));
+      scored.all = summarize_outline_scores("all", all);
+      result.methods.push_back(std::move(scored));
     }
-    scored.ms_per_frame = 1e3 * std::chrono::duration<double>(Clock::now() - start).count() /
-                          static_cast<double>(std::max<std::size_t>(all.size(), 1));
-    scored.all = summarize_outline_scores("all", all);
-    result.methods.push_back(std::move(scored));
   }
   return result;
 }

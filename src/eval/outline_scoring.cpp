@@ -133,6 +133,11 @@ OutlineTruth outline_truth(const std::vector<Press>& presses) {
   return truth;
 }
 
+bool within_sigmas(double value, double std, double truth, double k) {
+  if (!(value > 0 && truth > 0)) return false;
+  return std::abs(std::log(value / truth)) <= k * std / value;
+}
+
 OutlineScore score_outline_frame(const Mesh& mesh, const Vector& coverage, const Vector& pressure,
                                  const std::vector<Contact>& contacts, const std::vector<Press>& presses) {
   if (pressure.size() != mesh.triangle_count() || coverage.size() != mesh.triangle_count())
@@ -154,8 +159,17 @@ OutlineScore score_outline_frame(const Mesh& mesh, const Vector& coverage, const
   }
   OutlineScore score;
   score.dice = area_dice(areas, region, coverage);
-  for (const Contact& c : contacts) score.force_N += c.force_N;
+  double area_var = 0, force_var = 0;
+  for (const Contact& c : contacts) {
+    score.force_N += c.force_N;
+    score.area_mm2 += c.area_mm2;
+    area_var += c.area_std_mm2 * c.area_std_mm2;
+    force_var += c.force_std_N * c.force_std_N;
+  }
+  score.area_std_mm2 = std::sqrt(area_var);
+  score.force_std_N = std::sqrt(force_var);
   const OutlineTruth truth = outline_truth(presses);
+  score.true_area_mm2 = truth.area_mm2;
   score.true_force_N = truth.force_N;
   score.region_area_mm2 = area;
   score.regions = static_cast<int>(contacts.size());

@@ -184,10 +184,12 @@ bool within_reach(const Parameters& a, const Parameters& b, double separation_mm
 }  // namespace
 
 const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const std::vector<Disc>& discs,
-                                                        double typical_radius_mm) {
+                                                        const AreaPrior& prior) {
   if (dV.size() != shared_.measurements().size())
     throw InvalidInput("contact shapes: one value per measurement is needed");
-  if (!(typical_radius_mm > 0)) throw InvalidInput("contact shapes: the typical radius must be positive");
+  if (!(prior.radius_mm > 0)) throw InvalidInput("contact shapes: the prior's radius must be positive");
+  if (!(prior.log_radius_std > 0)) throw InvalidInput("contact shapes: the prior's σ must be positive");
+  const double typical_radius_mm = prior.radius_mm;
   result_.clear();
   if (discs.empty()) return result_;
   const double log_radius = std::log(typical_radius_mm);
@@ -224,13 +226,14 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
     parameters = std::move(best);
     chi2 = solve(dV, parameters, options_.max_iterations);
   }
-  covariances(dV, parameters, chi2);
+  covariances(dV, parameters, chi2, prior.log_radius_std);
   return result_;
 }
 
 /// Each contact's 1σ from the covariance at the solution, (JᵀJ)⁻¹ over the frame's rows and the
 /// prior's, the held area's σ the prior's.
-void ShapeRefiner::covariances(const Vector& dV, const std::vector<std::array<double, 6>>& parameters, double chi2) {
+void ShapeRefiner::covariances(const Vector& dV, const std::vector<std::array<double, 6>>& parameters, double chi2,
+                               double log_radius_std) {
   const int count = static_cast<int>(parameters.size());
   const int M = shared_.measurements().size(), n = ellipse_parameters * count;
   Matrix J = Matrix::Zero(M + 3 * count, n);
@@ -263,7 +266,7 @@ void ShapeRefiner::covariances(const Vector& dV, const std::vector<std::array<do
     const int l = ellipse_parameters * i + 2;
     covariance.row(l).setZero();
     covariance.col(l).setZero();
-    covariance(l, l) = options_.log_radius_std * options_.log_radius_std;
+    covariance(l, l) = log_radius_std * log_radius_std;
   }
   for (int i = 0; i < count; ++i) {
     const Ellipse e = to_ellipse(parameters[static_cast<std::size_t>(i)].data());

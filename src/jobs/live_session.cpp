@@ -42,6 +42,9 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
   if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain}.validate();
+  LiveOptions live_options;
+  live_options.frame.contact_radius_mm = job.contact_radius_mm;
+  check_frame_options(job.method, live_options.frame);
   // Every output opened before any input is read: one that cannot be opened touches none. Each
   // file grows as PATH.partial while the run lasts and is renamed to PATH at its end.
   s.outputs =
@@ -66,7 +69,6 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   s.source = open_source(job.source, s.sensor, source_options);
   s.pipeline.emplace(s.sensor, PipelineOptions{job.method, 0, job.cache_dir, {}}, calibration, progress.stage,
                      job.calibration_path);
-  LiveOptions live_options;
   live_options.max_frames = job.frames;
   live_options.max_seconds = job.seconds;
   s.loop.emplace(*s.source, *s.pipeline, live_options);

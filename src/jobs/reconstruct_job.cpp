@@ -82,6 +82,9 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                               {OutputRequest{{"--contacts", job.contacts_path}, {.standard_output = true}},
                                OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
   auto& [contacts_file, mcap_file] = outputs;
+  FrameOptions declared;  // checked before anything is read
+  declared.contact_radius_mm = job.contact_radius_mm;
+  check_frame_options(job.method, declared);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
   std::optional<Calibration> calibration;
@@ -122,6 +125,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   FrameOptions frame_options;
   frame_options.threshold_fraction = job.threshold_fraction;
   frame_options.min_contact_area_mm2 = job.min_contact_area_mm2;
+  frame_options.contact_radius_mm = job.contact_radius_mm;
   // Frames independent: split across threads (unless each frame's image is wanted).
   const bool batch = is_linear(job.method) && job.images_dir.empty() && job.mcap_path.empty();
   std::optional<Reconstructor> reconstructor;

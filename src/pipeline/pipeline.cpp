@@ -65,7 +65,16 @@ Pipeline::Pipeline(const Sensor& sensor, const PipelineOptions& options, const s
   fit_.emplace(fit_sensor_, fit_model_->mesh, fit_model_->green, model_.measurements);
 }
 
+void check_frame_options(Method method, const FrameOptions& options) {
+  options.validate();
+  if (options.contact_radius_mm > 0 && is_linear(method))
+    throw InvalidInput(std::string("a declared contact radius is for contact fitting (fit, shapes), which holds a "
+                                   "contact's area; ") +
+                       method_name(method) + "'s comes from its image");
+}
+
 Reconstructor Pipeline::reconstructor(const FrameOptions& options) const {
+  check_frame_options(method_, options);
   if (fit_) {
     FrameOptions o = options;
     o.contact_shapes = o.contact_shapes || method_ == Method::shapes;

@@ -59,5 +59,34 @@ TEST(OutlineEvaluation, SummaryAveragesFrames) {
   EXPECT_DOUBLE_EQ(s.right_count, 0.5);
 }
 
+// Coverage reads a reported σ as one of the log (σ/value): 100 ± 50 is ln-σ 0.5, so a truth of
+// 60 (ln 100/60 = 0.51) is outside 1σ and inside 2σ, one of 140 (0.34) inside 1σ; nothing
+// reported, or a σ of 0, covers nothing.
+TEST(OutlineEvaluation, CoverageIsOnTheLogOfTheValue) {
+  EXPECT_FALSE(within_sigmas(100, 50, 60, 1));
+  EXPECT_TRUE(within_sigmas(100, 50, 60, 2));
+  EXPECT_TRUE(within_sigmas(100, 50, 140, 1));
+  EXPECT_FALSE(within_sigmas(0, 50, 60, 2));
+  EXPECT_FALSE(within_sigmas(100, 0, 99, 2));
+  EXPECT_TRUE(within_sigmas(100, 0, 100, 1));
+}
+
+// The summary's coverage: fractions of all frames (one without contacts outside), NaN for a
+// method that reports no σ of a quantity (its table prints "-").
+TEST(OutlineEvaluation, SummaryCountsCoverageOnlyWhereSigmasAreReported) {
+  OutlineScore a, b, c;
+  a.area_mm2 = 100, a.area_std_mm2 = 50, a.true_area_mm2 = 60;   // 2σ
+  a.force_N = 10, a.true_force_N = 10;                           // no force σ
+  b.area_mm2 = 100, b.area_std_mm2 = 50, b.true_area_mm2 = 100;  // 1σ
+  b.force_N = 10, b.true_force_N = 10;
+  c.true_area_mm2 = 50, c.true_force_N = 5;  // nothing reported
+  const OutlineFamilyScore s = summarize_outline_scores("disc", {a, b, c});
+  EXPECT_DOUBLE_EQ(s.area_within_1sigma, 1.0 / 3);
+  EXPECT_DOUBLE_EQ(s.area_within_2sigma, 2.0 / 3);
+  EXPECT_TRUE(std::isnan(s.force_within_1sigma));
+  EXPECT_TRUE(std::isnan(s.force_within_2sigma));
+  EXPECT_DOUBLE_EQ(s.area_ratio, (100.0 / 60 + 1 + 0) / 3);
+}
+
 }  // namespace
 }  // namespace emit

@@ -121,7 +121,7 @@ TEST(ShapeRefiner, RecoversTheEllipseThatMadeTheFrame) {
                    truth.conductance_S_per_mm2 * truth.area_mm2() /
                        (std::numbers::pi * std::pow(s.fit.options().prior_radius_mm, 2))};
   // The area is held at the prior's (a frame does not tell it): here the truth's.
-  const std::vector<RefinedContact>& r = refiner.refine(dV, {start}, std::sqrt(30.0));
+  const std::vector<RefinedContact>& r = refiner.refine(dV, {start}, {std::sqrt(30.0), ShapeOptions{}.log_radius_std});
   ASSERT_EQ(r.size(), 1u);
   const Ellipse& got = r[0].ellipse;
   std::printf("semi-axes %.3f x %.3f mm at %.2f deg (truth 10 x 3 at 35); sigma area %.3f, angle %.2f deg\n",
@@ -154,7 +154,8 @@ TEST(ShapeRefiner, KeepsRoundPressesInPlaceWithAnHonestArea) {
     const Vector dV = frame_difference(s.measurements, twin.frame({press}), twin.frame({}));
     const FitResult& fit = fitter.fit(dV, {Disc{press.x_mm + 2, press.y_mm - 2, 0, 0}});
     ASSERT_EQ(fit.contacts.size(), 1u);
-    const std::vector<RefinedContact>& r = refiner.refine(dV, {fit.contacts[0].disc}, 5.0);
+    const std::vector<RefinedContact>& r =
+        refiner.refine(dV, {fit.contacts[0].disc}, {5.0, ShapeOptions{}.log_radius_std});
     ASSERT_EQ(r.size(), 1u);
     const double error = std::hypot(r[0].ellipse.x_mm - press.x_mm, r[0].ellipse.y_mm - press.y_mm);
     const double true_area = std::numbers::pi * press.radius_mm * press.radius_mm;
@@ -193,7 +194,7 @@ TEST(ShapeRefiner, MakesABarOneRegionAlongIt) {
   std::vector<Disc> discs;
   for (const FittedContact& f : fit.contacts) discs.push_back(f.disc);
   ShapeRefiner refiner(s.fit);
-  const std::vector<RefinedContact>& r = refiner.refine(dV, discs, 5.0);
+  const std::vector<RefinedContact>& r = refiner.refine(dV, discs, {5.0, ShapeOptions{}.log_radius_std});
   ASSERT_EQ(r.size(), 1u) << "the disc fit gave " << discs.size();
   const Ellipse& e = r[0].ellipse;
   std::printf("bar: %zu discs -> 1 region %.2f x %.2f mm at %.1f deg (1 sigma %.1f), centre %.2f, %.2f\n", discs.size(),

@@ -207,3 +207,14 @@ def test_threads_and_frames_beyond_the_limits(sensor, paper, reference):
                                                 r"holds in memory \(256 MiB of readings\); simulate them in parts$"):
         emit.simulate(sensor, [[]] * 131073)
     assert time.monotonic() - start < 5  # refused, not worked through (4096 threads took 17.6 s)
+
+
+# A declared contact radius (--contact-radius-mm) is contact fitting's: a linear method's area is
+# its image's. Refused before any model is built, in the CLI's words.
+def test_a_contact_radius_for_a_linear_method_is_refused(sensor):
+    with pytest.raises(emit.InvalidInput) as error:
+        emit.Reconstructor(sensor, method="paper", contact_radius_mm=3.0)
+    assert str(error.value) == ("a declared contact radius is for contact fitting (fit, shapes), which holds a "
+                                "contact's area; paper's comes from its image")
+    with pytest.raises(emit.InvalidInput, match=r"^FrameOptions::contact_radius_mm must be 0 or more, got -1"):
+        emit.Reconstructor(sensor, method="fit", contact_radius_mm=-1.0)

@@ -14,6 +14,14 @@
 ///    own), its pressed region (Reconstructor::pressure() > 0) scored against the outlines by
 ///    eval/outline_scoring.hpp, averaged per family.
 ///
+/// Each family's reported area and force are also scored for coverage: the fraction of frames
+/// whose true area (force) lies within the reported 1σ and 2σ (outline_scoring.hpp's
+/// within_sigmas), for methods that report σ.
+///
+/// `--indenters` (OutlineEvalOptions::indenters): the same round with flat discs of radius 2, 3,
+/// 5, 7 and 10 mm for families, after the same calibration with 5 mm discs; contact fitting's
+/// methods then also with each disc's radius declared (FrameOptions::contact_radius_mm).
+///
 /// Lengths are the 60 mm sheet's: another sheet must have room for a 30 mm bar.
 #include <cstdint>
 #include <string>
@@ -36,6 +44,9 @@ struct OutlineEvalOptions {
   int presses_per_family = 6;    ///< 48 frames of outlines in all
   /// Contact fitting's sensor calibration's most iterations (0: `emit calibrate`'s own).
   int calibration_iterations = 0;
+  /// The indenter sweep instead of the outlines: flat discs of these radii, a family each.
+  bool indenters = false;
+  std::vector<double> indenter_radii_mm{2, 3, 5, 7, 10};
   void validate() const;  ///< \throw InvalidInput naming the option
 };
 
@@ -55,11 +66,17 @@ struct OutlineFamilyScore {
   double orientation_deg = 0;  ///< mean over elongated outlines' frames (NaN without any)
   double regions = 0;          ///< mean count reported
   double right_count = 0;      ///< fraction of frames reporting as many regions as presses
+  double area_ratio = 0;       ///< mean Â/A, the contacts' total area against the outlines'
+  /// Fractions of the frames whose true area (force) lies within the reported 1σ (2σ) (a frame
+  /// without contacts counts as outside); NaN where no frame reported a σ of it.
+  double area_within_1sigma = 0, area_within_2sigma = 0;
+  double force_within_1sigma = 0, force_within_2sigma = 0;
 };
 
 struct MethodOutlineScore {
   Method method = Method::paper;
-  std::vector<OutlineFamilyScore> families;  ///< in outline_families()' order
+  bool declared_radius = false;              ///< each indenter's radius declared (--indenters)
+  std::vector<OutlineFamilyScore> families;  ///< in outline_families()' (the radii's) order
   OutlineFamilyScore all;
   double calibration_rms_N_per_mm2 = 0;  ///< the calibration's own misfit on its presses
   double ms_per_frame = 0;
@@ -68,6 +85,7 @@ struct MethodOutlineScore {
 struct OutlineEvaluation {
   long triangles = 0;  ///< the reconstruction mesh's
   int calibration_presses = 0;
+  bool indenters = false;  ///< the indenter sweep's families
   std::vector<MethodOutlineScore> methods;
 };
 

@@ -11,7 +11,9 @@
 /// - centroid: the region's area-weighted centroid against the outlines' (exact, polygons');
 /// - orientation: the principal axis of the region's second moments against the outlines', for
 ///   outlines elongated enough to have one (eigenvalue ratio ≥ `elongated_ratio`);
-/// - the number of regions (contacts) reported, against the number of presses.
+/// - the number of regions (contacts) reported, against the number of presses;
+/// - the contacts' total area and force against the outlines', with their reported 1σ (summed in
+///   quadrature over the contacts), for coverage: whether the truth lies within 1σ and 2σ.
 ///
 /// Flat sheets only (a region's moments are in the sheet's x, y).
 #include <vector>
@@ -66,7 +68,16 @@ struct OutlineScore {
   /// when it is and no region was reported.
   double orientation_error_deg = 0;
   int regions = 0, presses = 0;  ///< contacts reported; presses made
+  /// Σ of the contacts' areas and their 1σ (in quadrature); the outlines' area [mm²].
+  double area_mm2 = 0, area_std_mm2 = 0, true_area_mm2 = 0;
+  double force_std_N = 0;  ///< of force_N, in quadrature over the contacts
 };
+
+/// Whether `truth` lies within `k` reported σ of `value`, read as a σ of the logarithm
+/// (σ/value): |ln(value/truth)| ≤ k σ/value. Every σ the contact fits report is one of log A or
+/// log F times the value (frame/reconstructor.hpp), and a σ of 0.9 on log A is a factor 2.5, not
+/// ±90 %. False for a value or truth that is not positive.
+bool within_sigmas(double value, double std, double truth, double k);
 
 /// Scores a frame: `coverage`, outline_coverage(mesh, presses) (computed once for every method
 /// on one mesh); `pressure`, #F per triangle of the flat `mesh` (the reconstructor's pressure());

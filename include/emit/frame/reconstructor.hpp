@@ -41,6 +41,15 @@ struct FrameOptions {
   /// and drawn as that ellipse in pressure(). Off: the disc fit's contacts with the calibration
   /// indenter's area. The `shapes` method sets it (pipeline/pipeline.hpp).
   bool contact_shapes = false;
+  /// A declared indenter (contact fitting, `--contact-radius-mm`): a user who knows what presses
+  /// (a 3 mm stylus, a 10 mm finger pad) states its radius R [mm], and every contact's area is
+  /// held at π R² with the small σ below instead of the calibration indenter's with the prior's
+  /// σ of radii 2–10 mm (shape_refiner.hpp); its pressure and force follow from that area. 0: not
+  /// declared.
+  double contact_radius_mm = 0;
+  /// The declared radius' σ of log r: 5 %, a stated indenter's tolerance (a finger pad's contact
+  /// grows with its force by more; declare its typical radius).
+  double contact_radius_log_std = 0.05;
   void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 

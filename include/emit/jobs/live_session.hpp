@@ -35,10 +35,11 @@ struct LiveJob {
   std::string calibration_path;  ///< empty: uncalibrated
   std::string cache_dir;         ///< the operator cache; empty: none
   Method method = Method::fit;
-  std::uint64_t frames = 0;  ///< stop after this many reconstructed frames (0: no limit)
-  double seconds = 0;        ///< stop after this long (0: no limit)
-  double frames_per_s = 50;  ///< the simulator's pace; 0: a recording as fast as it goes
-  bool loop = false;         ///< a recording starts again at its end (SourceOptions::loop)
+  double contact_radius_mm = 0;  ///< a declared indenter (FrameOptions::contact_radius_mm); 0: none
+  std::uint64_t frames = 0;      ///< stop after this many reconstructed frames (0: no limit)
+  double seconds = 0;            ///< stop after this long (0: no limit)
+  double frames_per_s = 50;      ///< the simulator's pace; 0: a recording as fast as it goes
+  bool loop = false;             ///< a recording starts again at its end (SourceOptions::loop)
 };
 
 class LiveSession {

@@ -23,8 +23,9 @@ struct ReconstructJob {
   Method method = Method::fit;
   double lambda2 = 0;  ///< 0: the method's
   double threshold_fraction = 0.5, min_contact_area_mm2 = 0;
-  std::string cache_dir;  ///< empty: no operator cache
-  int threads = 1;        ///< the linear methods' batch is split across them
+  double contact_radius_mm = 0;  ///< a declared indenter (FrameOptions::contact_radius_mm); 0: none
+  std::string cache_dir;         ///< empty: no operator cache
+  int threads = 1;               ///< the linear methods' batch is split across them
 };
 
 struct ReconstructReport {

@@ -47,6 +47,11 @@ int electrode_count_of(const Sensor& sensor);
 /// when `calibration` is not of the kind `method` needs (model/calibration.hpp).
 void check_calibration_for_method(const Calibration& calibration, Method method, const std::string& source);
 
+/// `options` valid, and for `method`: a declared contact radius (FrameOptions::contact_radius_mm)
+/// only for contact fitting, the methods that hold a contact's area (a linear method's comes from
+/// its image). \throw InvalidInput naming what is wrong.
+void check_frame_options(Method method, const FrameOptions& options);
+
 class Pipeline {
  public:
   /// Builds the models. `calibration`: none is uncalibrated; one of the wrong kind is refused
@@ -74,7 +79,7 @@ class Pipeline {
 
   /// A reconstructor for the method, with its own scratch (for `fit`, its own fitter on the
   /// pipeline's precompute): several may run at once, on as many threads. Each refers to this
-  /// pipeline, which must outlive it.
+  /// pipeline, which must outlive it. \throw InvalidInput for a bad option (check_frame_options).
   Reconstructor reconstructor(const FrameOptions& options = {}) const;
 
   /// Independent frames on `threads` workers, every method (frame/batch.hpp): for `fit`, each
