@@ -90,7 +90,7 @@ PressSequence grid_presses(const EvalCase& c, const EvalOptions& options) {
 int pressure_press_count(const EvalOptions& options) { return options.quick ? 10 : 40; }
 
 /// Frames of three and of four presses: fits of several contacts are slow, so a quick run has few.
-int several_press_count(const EvalOptions& options) { return options.quick ? 3 : 40; }
+int several_press_count(const EvalOptions& options) { return options.quick ? 2 : 40; }
 
 /// Frames of `fingers` flat presses at random places, every two at least `separation_mm` apart,
 /// 4–16 N each scaled by (r / 5 mm)²; none where the sheet has no room for them.
