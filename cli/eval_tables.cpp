@@ -1,6 +1,7 @@
 // `emit eval`'s tables: per sheet, each method's errors beside the paper's (with the automatic
 // λ², the significance test and the reference's averaging), and the mismatch runs; a real skin's
 // held-out error and its curve against the number of calibration presses.
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -59,6 +60,14 @@ void print_method(const EvalCase& c, const MethodEvaluation& m, bool sweep) {
   if (!is_linear(m.method))
     std::printf("  (%.0f ms a frame, %ld mesh nodes; 2 match: within 2 mm)", m.ms_per_frame, m.fit_mesh_nodes);
   std::printf("\n");
+  if (m.three_presses || m.four_presses || m.false_regions) {
+    const auto rate = [](const std::optional<double>& r) { return r ? 100 * *r : std::nan(""); };
+    std::printf(
+        "      three presses all found within 2 mm %3.0f %%, four %3.0f %% (%d frames each); "
+        "false regions on single presses %4.1f %% of %d\n",
+        rate(m.three_presses), rate(m.four_presses), m.several_press_frames, rate(m.false_regions),
+        m.single_press_frames);
+  }
   if (is_linear(m.method)) print_automatic(m);
   if (m.calibrated && m.equation_8_forces) print_linear_forces(*m.calibrated, *m.equation_8_forces);
 }

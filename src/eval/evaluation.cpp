@@ -95,6 +95,26 @@ TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun&
   return result;
 }
 
+double every_press_found_rate(Reconstructor& reconstructor, const SimulatedRun& run, double match_mm) {
+  reconstructor.set_reference(run.reference);
+  int matched = 0;
+  for (std::size_t f = 0; f < run.frames.size(); ++f) {
+    const auto& contacts = reconstructor.process(run.frames[f]);
+    matched += std::all_of(run.presses[f].begin(), run.presses[f].end(), [&](const Press& p) {
+      return std::any_of(contacts.begin(), contacts.end(),
+                         [&](const Contact& c) { return position_error_mm(c, p) <= match_mm; });
+    });
+  }
+  return run.frames.empty() ? 0 : double(matched) / static_cast<double>(run.frames.size());
+}
+
+double extra_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run) {
+  reconstructor.set_reference(run.reference);
+  int extra = 0;
+  for (const Frame& frame : run.frames) extra += reconstructor.process(frame).size() > 1;
+  return run.frames.empty() ? 0 : double(extra) / static_cast<double>(run.frames.size());
+}
+
 LCurvePoint l_curve_point(const Matrix& J, const CompactOperator& op, const MeasurementSet& measurements,
                           const SimulatedRun& run) {
   LCurvePoint point;

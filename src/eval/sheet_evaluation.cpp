@@ -89,10 +89,30 @@ PressSequence grid_presses(const EvalCase& c, const EvalOptions& options) {
 
 int pressure_press_count(const EvalOptions& options) { return options.quick ? 10 : 40; }
 
+/// Frames of three and of four presses: fits of several contacts are slow, so a quick run has few.
+int several_press_count(const EvalOptions& options) { return options.quick ? 2 : 40; }
+
+/// Frames of `fingers` flat presses at random places, every two at least `separation_mm` apart,
+/// 4–16 N each scaled by (r / 5 mm)²; none where the sheet has no room for them.
+std::optional<SimulatedRun> several_press_run(Twin& twin, const EvalCase& c, const EvalOptions& options, int fingers,
+                                              double separation_mm) {
+  PressStyle style = grid_style(c, options);
+  style.seed = options.seed + 300 + static_cast<std::uint64_t>(fingers);
+  style.min_force_N = 4 * c.radius_mm * c.radius_mm / 25, style.max_force_N = 16 * c.radius_mm * c.radius_mm / 25;
+  PressSequence presses;
+  try {
+    presses = fingers_script(c.sensor, several_press_count(options), fingers, separation_mm, style);
+  } catch (const InvalidInput&) {
+    return std::nullopt;  // no room on this sheet
+  }
+  return simulate_run(twin, presses);
+}
+
 struct Runs {
   SimulatedRun grid, calibration, test, two_press;
-  SimulatedRun no_press;          ///< frames without a press (for false contacts)
-  std::vector<Frame> references;  ///< single no-contact frames (for the reference's spread)
+  std::optional<SimulatedRun> three_press, four_press;  ///< contact fitting's; none where they do not fit
+  SimulatedRun no_press;                                ///< frames without a press (for false contacts)
+  std::vector<Frame> references;                        ///< single no-contact frames (for the reference's spread)
 };
 
 constexpr int no_press_frames = 100, single_references = 10;
@@ -114,6 +134,10 @@ Runs simulate_case(const EvalCase& c, const EvalOptions& options) {
     two.min_force_N = 5 * c.radius_mm * c.radius_mm / 25, two.max_force_N = 20 * c.radius_mm * c.radius_mm / 25;
     const double side = sheet_outline(c.sensor).size_mm() / std::sqrt(2.0);
     runs.two_press = simulate_run(twin, two_finger_script(c.sensor, n, 0.2 * side, 0.67 * side, two));
+    if (std::find(options.methods.begin(), options.methods.end(), Method::fit) != options.methods.end()) {
+      runs.three_press = several_press_run(twin, c, options, 3, 0.2 * side);
+      runs.four_press = several_press_run(twin, c, options, 4, 0.2 * side);
+    }
   }
   return runs;
 }
@@ -242,6 +266,15 @@ MethodEvaluation evaluate_fit(const EvalCase& c, const Runs& runs, Reconstructio
   if (c.pressure_and_two_press) {
     result.pressure_error_N_per_mm2 = fit_pressure_error(reconstructor, model, fit, c, runs);
     result.two_press = two_press_rates(reconstructor, runs.two_press, 2.0);
+    if (runs.three_press) result.three_presses = every_press_found_rate(reconstructor, *runs.three_press, 2.0);
+    if (runs.four_press) result.four_presses = every_press_found_rate(reconstructor, *runs.four_press, 2.0);
+    if (runs.three_press) result.several_press_frames = static_cast<int>(runs.three_press->frames.size());
+    const double grid_extra = extra_contact_rate(reconstructor, runs.grid);
+    const double test_extra = extra_contact_rate(reconstructor, runs.test);
+    const auto grid_n = static_cast<double>(runs.grid.frames.size()),
+               test_n = static_cast<double>(runs.test.frames.size());
+    result.single_press_frames = static_cast<int>(grid_n + test_n);
+    result.false_regions = (grid_extra * grid_n + test_extra * test_n) / (grid_n + test_n);
   }
   return result;
 }

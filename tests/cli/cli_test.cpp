@@ -470,6 +470,9 @@ TEST(Cli, EvalMeasuresContactFitting) {
   ASSERT_EQ(std::sscanf(r.out.c_str() + row, "\n  fit %*s %lf +/- %lf", &mean_mm, &std_mm), 2) << r.out;
   EXPECT_GE(mean_mm, 0.0);
   EXPECT_LT(mean_mm, 0.2) << r.out;
+  // The rows of several presses and of false regions (issue 31): too few frames in --quick to bound.
+  EXPECT_NE(r.out.find("three presses all found within 2 mm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("false regions on single presses"), std::string::npos) << r.out;
 }
 
 /// The numbers after `label` on its line of `text` (read with `pattern`), or fewer if not found.

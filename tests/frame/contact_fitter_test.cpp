@@ -98,6 +98,45 @@ TEST(ContactFitter, FindsTwoPressesAsTwoContacts) {
   }
 }
 
+/// The distance from `press` to the nearest fitted contact.
+double nearest_contact_mm(const FitResult& r, const Press& press) {
+  double nearest = 1e9;
+  for (const FittedContact& c : r.contacts)
+    nearest = std::min(nearest, std::hypot(c.disc.x_mm - press.x_mm, c.disc.y_mm - press.y_mm));
+  return nearest;
+}
+
+// Three and four presses ≥ 20 mm apart of 8–12 N, seeded with the first press alone: the others
+// must come from the fitter's own search (its atoms). Issue 31's target is every press within
+// 2 mm in ≥ 95 % (three) and ≥ 90 % (four) of frames ≥ 12 mm apart; the fit misses where the held
+// disc's model error says more than the frame says of a press's place (docs/physics.md, "What
+// limits four"): a press inside the others, a weak one among strong ones, and with some noise
+// draws even a triangle 24 mm apart (3–5 mm off). These frames, a wide triangle of equal presses
+// and a square, with their own noise draw, must be found to the target's 2 mm with no contact left
+// over: a fit that breaks its search for several contacts fails here. A twin of its own, with its
+// own noise: the frames do not depend on the tests before.
+TEST(ContactFitter, FindsThreeAndFourPressesApart) {
+  FitBench& s = bench();
+  Twin twin{s.sensor, [] {
+              TwinOptions o;
+              o.mesh_seed = 4;
+              o.noise_seed = 31;
+              return o;
+            }()};
+  const Frame reference = twin.frame({});
+  ContactFitter fitter(s.sensor, s.mesh, s.green, s.measurements);
+  const std::vector<std::vector<Press>> frames{{{15, 15, 5, 10}, {45, 15, 5, 10}, {30, 45, 5, 10}},
+                                               {{18, 18, 5, 8}, {40, 18, 5, 10}, {18, 40, 5, 12}, {40, 40, 5, 9}}};
+  for (const std::vector<Press>& presses : frames) {
+    const Press& first = presses.front();
+    const FitResult& r = fitter.fit(frame_difference(s.measurements, twin.frame(presses), reference),
+                                    {Disc{first.x_mm + 1, first.y_mm - 1, 0, 0}});
+    EXPECT_EQ(r.contacts.size(), presses.size());
+    for (const Press& p : presses)
+      EXPECT_LT(nearest_contact_mm(r, p), 2.0) << presses.size() << " presses; press at " << p.x_mm << ", " << p.y_mm;
+  }
+}
+
 double chi2_per_measurement(const FitResult& r, const ContactFitter& fitter) {
   return r.rms_misfit_V * r.rms_misfit_V / (fitter.noise_V() * fitter.noise_V());
 }

@@ -53,6 +53,13 @@ struct TwoPressResult {
 };
 TwoPressResult two_press_rates(Reconstructor& reconstructor, const SimulatedRun& run, double match_mm);
 
+/// Frames of several presses (three, four fingers): the fraction where every press has a contact
+/// within `match_mm` of it.
+double every_press_found_rate(Reconstructor& reconstructor, const SimulatedRun& run, double match_mm);
+
+/// Single-press frames: the fraction that report more than one contact (false regions).
+double extra_contact_rate(Reconstructor& reconstructor, const SimulatedRun& run);
+
 /// One point of the L-curve (Hansen): for an operator R, the mean over the run's frames of the
 /// data misfit ‖J·δφ − δV‖ and of the image norm ‖δφ‖, δφ = R·δV.
 struct LCurvePoint {

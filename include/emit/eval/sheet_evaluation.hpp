@@ -58,6 +58,15 @@ struct MethodEvaluation {
   ErrorStats strongest_contact;                    ///< the strongest contact's centroid
   std::optional<double> pressure_error_N_per_mm2;  ///< mean |error| after calibration on separate presses
   std::optional<TwoPressResult> two_press;         ///< matched within 0.4 × 4 radii (linear) or 2 mm (fit)
+  /// Contact fitting: frames of three and of four presses (flat discs of the case's radius, every
+  /// two at least the two-press runs' least separation apart, 4–16 N scaled by (r / 5 mm)²) with
+  /// every press found within 2 mm; empty where the sheet has no room for them.
+  std::optional<double> three_presses, four_presses;
+  int several_press_frames = 0;  ///< of three, and as many of four
+  /// Contact fitting: single presses (the grid's and the test presses) reported as more than one
+  /// contact.
+  std::optional<double> false_regions;
+  int single_press_frames = 0;
   /// Linear methods: the test presses after `emit calibrate` on the calibration presses, as
   /// `emit reconstruct` reports them (force from emit's force law, model/force_law.hpp), and with
   /// eq. 8 alone (force Σ P_k A_k over the 50 % region, the image's: as before the force law).
