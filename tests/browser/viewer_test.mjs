@@ -28,9 +28,9 @@ try {
   page.on("console", (message) => console.log(`page: ${message.text()}`));
   page.on("pageerror", (error) => fail(`page error: ${error.message}`));
   await page.goto(url);
-  await page.waitForFunction(() => window.emitViewer && window.emitViewer.frames > 10 && window.emitViewer.last &&
+  await page.waitForFunction(() => window.emitViewer && window.emitViewer.frames > 3 && window.emitViewer.last &&
                                    !window.emitViewer.last.capturing_baseline && window.emitViewer.last.contacts.length > 0,
-                             null, { timeout: 60000 });
+                             null, { timeout: 1000 * startupSeconds });
   const last = await page.evaluate(() => window.emitViewer.last);
   console.log(`viewer_test: frame ${last.sequence}, ${last.frames_per_s.toFixed(1)} frames/s, latency ${last.latency_ms.toFixed(2)} ms, ` +
               `contact at (${last.contacts[0].x_mm.toFixed(2)}, ${last.contacts[0].y_mm.toFixed(2)}) mm, ${last.contacts[0].force_N.toFixed(2)} N`);
@@ -75,7 +75,7 @@ try {
   const captures = last.baseline_captures;
   await page.click("#recapture");
   await page.waitForFunction((before) => window.emitViewer.last.commands >= 1 && window.emitViewer.last.baseline_captures > before,
-                             captures, { timeout: 30000 });
+                             captures, { timeout: 1000 * startupSeconds });
   const shown = await page.textContent("#commands");
   if (shown !== "1") fail(`the page shows ${shown} commands received, expected 1`);
   console.log(`viewer_test: re-capture reached the loop (baseline captures ${captures} -> ${await page.textContent("#captures")})`);

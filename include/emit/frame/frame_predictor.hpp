@@ -50,7 +50,7 @@ class FramePredictor {
   std::vector<int> patch_dofs_;
   std::vector<int> previous_patch_of_dof_, previous_patch_dofs_;  ///< the last predict()'s patch
   Matrix previous_G_pp_;                                          ///< and G0 on it
-  Matrix G_pp_, G_pe_, M_, Y_, Z_p_, Z_e_;
+  Matrix C_, G_pp_, G_pe_, M_, Y_, Z_p_, Z_e_;
   Vector c1_;
   // Kept from predict() for derivative(): the fields on the patch (Q) and the electrodes, and per
   // grounding l the 2×2 system and its solution.
@@ -61,7 +61,7 @@ class FramePredictor {
   std::vector<Eigen::Vector2d> xI_;
   Matrix adjoint_;  ///< M⁻ᵀ [G_pe, G_pp c1], on the first derivative() after a predict()
   bool adjoint_ready_ = false;
-  Matrix dCQ_, dZ_e_;
+  Matrix Qt_, dCQt_, dZ_e_;  ///< Qt_ = Qᵀ, for derivative()'s columns
   Vector dc1_, c1_dZ_p_;
   Eigen::PartialPivLU<Matrix> lu_;
 };
