@@ -54,6 +54,7 @@ struct Bench {
   std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
   std::vector<Frame> bars;    // a ruler's edge, 30 x 3 mm, at angles across the sheet
   std::vector<Frame> fours;   // four fingers 20 mm apart
+  std::vector<Frame> fours_moving;  // four fingers 20 mm apart, each sliding 0.3 mm a frame
   Bench() {
     set_thread_count(1);
     for (double x : {12.0, 30.0, 47.0})
@@ -64,6 +65,11 @@ struct Bench {
       fours.push_back(twin.frame(
           {{18 + shift, 18, 5, 8}, {38 + shift, 18, 5, 10}, {18, 38 + shift, 5, 12}, {38, 38 - shift, 5, 9}}));
     for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
+    for (int i = 0; i < 20; ++i) {
+      const double s = 0.3 * i;
+      fours_moving.push_back(twin.frame(
+          {{18 + s, 18, 5, 8}, {38, 18 + s, 5, 10}, {18, 38 - s, 5, 12}, {38 - s, 38, 5, 9}}));
+    }
   }
 };
 
@@ -217,6 +223,14 @@ void BM_ShapesFrameBar(benchmark::State& state) { fit_frames(state, bench(), ben
 void BM_ShapesFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false, true); }
 void BM_FitFrameFour(benchmark::State& state) { fit_frames(state, bench(), bench().fours, false); }
 void BM_FitFrameBar(benchmark::State& state) { fit_frames(state, bench(), bench().bars, false); }
+/// Streaming four fingers, each frame started from the last one's contacts (as `emit live` does).
+void BM_FitFrameFourTracked(benchmark::State& state) { fit_frames(state, bench(), bench().fours_moving, true); }
+void BM_ShapesFrameFourTracked(benchmark::State& state) {
+  fit_frames(state, bench(), bench().fours_moving, true, true);
+}
+void BM_ShapesFrameMovingTracked(benchmark::State& state) {
+  fit_frames(state, bench(), bench().moving, true, true);
+}
 void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench(), bench().moving, false); }
 void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true); }
 void BM_FitFrameDome(benchmark::State& state) { fit_frames(state, dome_bench(), dome_bench().frames, false); }
@@ -282,6 +296,9 @@ BENCHMARK(BM_FitFrameSleeve)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameFingertip)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingCold)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameMovingTracked)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitFrameFourTracked)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapesFrameMovingTracked)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapesFrameFourTracked)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FitFrameThreads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PredictWoodbury)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PredictSparse)->Unit(benchmark::kMicrosecond);
