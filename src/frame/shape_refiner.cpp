@@ -32,6 +32,12 @@ Parameters to_parameters(const Ellipse& e) {
 }
 Ellipse to_ellipse(const double* p) { return {p[0], p[1], p[2], p[3], p[4], std::exp(p[5])}; }
 
+/// The bound on p and q: the major semi-axis a = e^(ℓ+e) within about half the sheet (|p|, |q| ≤
+/// this keeps e = √(p² + q²) under √2 times it).
+double elongation_bound(const Eigen::AlignedBox2d& box, double log_radius) {
+  return std::max(0.0, std::log(0.5 * box.sizes().minCoeff()) - log_radius) / std::sqrt(2.0);
+}
+
 /// The shape prior's residuals: (ℓ − ℓ₀)/σ_ℓ, p/σ_e, q/σ_e (shape_refiner.hpp).
 class ShapePrior : public ceres::SizedCostFunction<3, ellipse_parameters> {
  public:
@@ -137,7 +143,7 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
   for (double* p : blocks) {
     // e bounded so that a = e^(ℓ+e) stays under half the sheet: a long ellipse's patch is the
     // prediction's cost (its cube), and LM's trial steps would otherwise sweep the whole sheet.
-    const double max_elongation = std::max(0.0, std::log(0.5 * box.sizes().minCoeff()) - p[2]) / std::sqrt(2.0);
+    const double max_elongation = elongation_bound(box, p[2]);
     problem.AddResidualBlock(new ShapePrior(p[2], options_), nullptr, p);
     problem.SetParameterLowerBound(p, 0, box.min().x());
     problem.SetParameterUpperBound(p, 0, box.max().x());
@@ -164,11 +170,39 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
 
 namespace {
 
-/// One ellipse for two: at their conductance-weighted centre, round, with their total conductance.
-Parameters merged(const Parameters& a, const Parameters& b) {
+/// One ellipse for two, started where the frame puts it: at their conductance-weighted centre,
+/// with their total conductance, and the traceless part of their combined second moment (each
+/// ellipse's own, exp(2L)/4, plus the spread of their centres: the parallel-axis theorem; weights
+/// G = g A). That quadrupole is the first shape term a frame carries (docs/physics.md, "Contact
+/// shapes"), so the merged ellipse of the held area ℓ₀ starts at the angle φ of the moment's
+/// major axis and the elongation whose quadrupole is the pair's: e^(2ℓ₀) sinh(2e)/4 = (λ₁ − λ₂)/2.
+/// Started round (as before), a bar's two halves took more than a trial's iterations to
+/// become one long ellipse, and the merge was refused: a bar at (20, 40) mm, 30°, stayed two.
+/// `max_elongation` is the bound solve() puts on p and q.
+Parameters merged(const Parameters& a, const Parameters& b, double max_elongation) {
   const double ga = std::exp(a[5] + 2 * a[2]), gb = std::exp(b[5] + 2 * b[2]);  // G/π of each
   const double w = ga / (ga + gb);
-  return {w * a[0] + (1 - w) * b[0], w * a[1] + (1 - w) * b[1], a[2], 0, 0, std::log(ga + gb) - 2 * a[2]};
+  const Eigen::Vector2d centre = w * Eigen::Vector2d(a[0], a[1]) + (1 - w) * Eigen::Vector2d(b[0], b[1]);
+  Eigen::Matrix2d moment = Eigen::Matrix2d::Zero();
+  for (const auto& [c, weight] : {std::pair{&a, w}, std::pair{&b, 1 - w}}) {
+    const Parameters& e = *c;
+    const double elongation = std::hypot(e[3], e[4]);
+    // exp(2L) = e^(2ℓ) (cosh 2e I + sinh(2e)/e [[p, q], [q, −p]])
+    const double s = elongation > 0 ? std::sinh(2 * elongation) / elongation : 2;
+    Eigen::Matrix2d own;
+    own << std::cosh(2 * elongation) + s * e[3], s * e[4], s * e[4], std::cosh(2 * elongation) - s * e[3];
+    const Eigen::Vector2d offset = Eigen::Vector2d(e[0], e[1]) - centre;
+    moment += weight * (std::exp(2 * e[2]) / 4 * own + offset * offset.transpose());
+  }
+  const double half_difference = std::hypot((moment(0, 0) - moment(1, 1)) / 2, moment(0, 1));  // (λ₁ − λ₂)/2
+  const double two_phi = std::atan2(2 * moment(0, 1), moment(0, 0) - moment(1, 1));
+  const double elongation = std::min(std::asinh(4 * half_difference * std::exp(-2 * a[2])) / 2, max_elongation);
+  return {centre.x(),
+          centre.y(),
+          a[2],
+          elongation * std::cos(two_phi),
+          elongation * std::sin(two_phi),
+          std::log(ga + gb) - 2 * a[2]};
 }
 
 /// Whether two contacts may be one region: the gap between their ellipses' circumscribed circles
@@ -218,7 +252,7 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
         std::vector<Parameters> trial;
         for (std::size_t k = 0; k < parameters.size(); ++k)
           if (k != i && k != j) trial.push_back(parameters[k]);
-        trial.push_back(merged(parameters[i], parameters[j]));
+        trial.push_back(merged(parameters[i], parameters[j], elongation_bound(shared_.centre_box(), parameters[i][2])));
         const double c = solve(dV, trial, trial_iterations);
         if (c < chi2 + worth && (best.empty() || c < best_chi2)) best = std::move(trial), best_chi2 = c;
       }
