@@ -111,7 +111,6 @@ class EllipseMisfit : public ceres::CostFunction {
 ShapeRefiner::ShapeRefiner(const FitPrecompute& shared, ShapeOptions options)
     : shared_(shared), options_(options), integrator_(shared.integrator()), predictor_(shared.mesh(), shared.green()) {
   options.validate();
-  if (is_curved(shared.sensor().shape)) throw InvalidInput("contact shapes: only on a flat sheet");
   predictor_.set_series_resistance(shared.sensor().series_resistance_ohm);
 }
 
@@ -141,8 +140,10 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
     problem.AddResidualBlock(new ShapePrior(p[2], options_), nullptr, p);
     problem.SetParameterLowerBound(p, 0, box.min().x());
     problem.SetParameterUpperBound(p, 0, box.max().x());
-    problem.SetParameterLowerBound(p, 1, box.min().y());
-    problem.SetParameterUpperBound(p, 1, box.max().y());
+    if (!is_sleeve(shared_.sensor().shape)) {  // around a sleeve the chart is periodic: no bound
+      problem.SetParameterLowerBound(p, 1, box.min().y());
+      problem.SetParameterUpperBound(p, 1, box.max().y());
+    }
     for (int j : {3, 4}) {  // the major semi-axis within about half the sheet
       problem.SetParameterLowerBound(p, j, -max_elongation);
       problem.SetParameterUpperBound(p, j, max_elongation);
@@ -159,16 +160,19 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
   solver.parameter_tolerance = 1e-8;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
+  for (Parameters& p : parameters) p[1] = wrapped_chart_mm(shared_.sensor().shape, {p[0], p[1]}).y();
   return 2 * summary.final_cost;
 }
 
 namespace {
 
-/// One ellipse for two: at their conductance-weighted centre, round, with their total conductance.
-Parameters merged(const Parameters& a, const Parameters& b) {
+/// One ellipse for two: at their conductance-weighted centre (b's chart point seen from a's, the
+/// short way round a sleeve), round, with their total conductance.
+Parameters merged(const Parameters& a, const Parameters& b, const EllipseContactIntegrator& charts) {
   const double ga = std::exp(a[5] + 2 * a[2]), gb = std::exp(b[5] + 2 * b[2]);  // G/π of each
   const double w = ga / (ga + gb);
-  return {w * a[0] + (1 - w) * b[0], w * a[1] + (1 - w) * b[1], a[2], 0, 0, std::log(ga + gb) - 2 * a[2]};
+  const Vector2 to_b = charts.chart_offset({b[0], b[1]}, {a[0], a[1]});
+  return {a[0] + (1 - w) * to_b.x(), a[1] + (1 - w) * to_b.y(), a[2], 0, 0, std::log(ga + gb) - 2 * a[2]};
 }
 
 /// Whether two contacts may be one region: the gap between their ellipses' circumscribed circles
@@ -176,9 +180,13 @@ Parameters merged(const Parameters& a, const Parameters& b) {
 /// FitPrecompute::plausible_separation_mm).
 /// Farther apart, one ellipse cannot cover both without leaving a frame the merge never pays for
 /// (four fingers 20 mm apart: 7.3 s of merge trials a frame, BM_ShapesFrameFour, none merged).
-bool within_reach(const Parameters& a, const Parameters& b, double separation_mm) {
+/// On a curved sheet the centres' distance is the chart's (the short way round a sleeve): a cap's is
+/// shorter than the surface's, so the test lets more pairs through, never fewer.
+bool within_reach(const Parameters& a, const Parameters& b, double separation_mm,
+                  const EllipseContactIntegrator& charts) {
   const Ellipse p = to_ellipse(a.data()), q = to_ellipse(b.data());
-  return std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) - p.semi_major_mm() - q.semi_major_mm() < separation_mm;
+  return charts.chart_offset({q.x_mm, q.y_mm}, {p.x_mm, p.y_mm}).norm() - p.semi_major_mm() - q.semi_major_mm() <
+         separation_mm;
 }
 
 }  // namespace
@@ -214,11 +222,11 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
     double best_chi2 = 0;
     for (std::size_t i = 0; i < parameters.size(); ++i)
       for (std::size_t j = i + 1; j < parameters.size(); ++j) {
-        if (!within_reach(parameters[i], parameters[j], 3 * shared_.options().prior_radius_mm)) continue;
+        if (!within_reach(parameters[i], parameters[j], 3 * shared_.options().prior_radius_mm, integrator_)) continue;
         std::vector<Parameters> trial;
         for (std::size_t k = 0; k < parameters.size(); ++k)
           if (k != i && k != j) trial.push_back(parameters[k]);
-        trial.push_back(merged(parameters[i], parameters[j]));
+        trial.push_back(merged(parameters[i], parameters[j], integrator_));
         const double c = solve(dV, trial, trial_iterations);
         if (c < chi2 + worth && (best.empty() || c < best_chi2)) best = std::move(trial), best_chi2 = c;
       }
