@@ -73,8 +73,7 @@ Eigen::Matrix<double, 3, 2> tangent_frame(const Shape& shape, const Vector2& c) 
 }  // namespace
 
 EllipseContactIntegrator::EllipseContactIntegrator(const DiscContactIntegrator& discs)
-    : discs_(discs),
-      projected_(is_curved(discs.surface()) && discs.surface().kind != ShapeKind::cylinder) {
+    : discs_(discs), projected_(is_curved(discs.surface()) && discs.surface().kind != ShapeKind::cylinder) {
   const Shape& shape = discs.surface();
   if (is_sleeve(shape)) round_mm_ = 2 * std::numbers::pi * shape.radius_mm;
   if (projected_) return;
@@ -167,7 +166,7 @@ void EllipseContactIntegrator::integrate(const Ellipse& el, EllipseLoad& out, bo
   const double cut_mm = 2 * (a + h);
   const bool cylinder = discs_.surface().kind == ShapeKind::cylinder;
   const Vector2 seen = projected_ || cylinder ? Vector2(surface_point_mm(discs_.surface(), centre).head<2>()) : centre;
-  const double search_mm = projected_  ? cut_mm + discs_.max_reach_mm()
+  const double search_mm = projected_ ? cut_mm + discs_.max_reach_mm()
                            : cylinder ? a + h + max_chart_reach_mm_ + discs_.max_reach_mm()
                                       : a + h + discs_.max_reach_mm();
 
@@ -188,8 +187,7 @@ void EllipseContactIntegrator::integrate(const Ellipse& el, EllipseLoad& out, bo
       reach = discs_.reach_mm(t);  // a projection moves points no farther apart
     } else {
       const Vector2 shift = chart_offset(chart_centroid_mm_[t], centre) - (chart_centroid_mm_[t] - centre);
-      for (std::size_t k = 0; k < 3; ++k)
-        corner.row(static_cast<Index>(k)) = chart_corner_mm_[t][k] + shift - centre;
+      for (std::size_t k = 0; k < 3; ++k) corner.row(static_cast<Index>(k)) = chart_corner_mm_[t][k] + shift - centre;
       reach = chart_reach_mm_[t];
     }
     const Vector2 offset = corner.colwise().mean().transpose();

@@ -72,7 +72,8 @@ TEST(CurvedShapes, AnEllipseAcrossTheSleevesSeamCarriesItsArea) {
   const EllipseContactIntegrator integrator(discs);
   const double round_mm = 2 * std::numbers::pi * sensor.shape.radius_mm;
   for (const double v : {0.5, round_mm - 0.5, round_mm / 2})
-    for (const Ellipse& e : {Ellipse{30, v, std::log(5.0), 0, 0, 1e-6}, Ellipse{25, v, std::log(5.0), 0.5, 0.4, 1e-6}}) {
+    for (const Ellipse& e :
+         {Ellipse{30, v, std::log(5.0), 0, 0, 1e-6}, Ellipse{25, v, std::log(5.0), 0.5, 0.4, 1e-6}}) {
       EllipseLoad load;
       integrator.integrate(e, load);
       EXPECT_NEAR(load_total(load) / (e.conductance_S_per_mm2 * e.area_mm2()), 1.0, 0.01)
@@ -80,7 +81,8 @@ TEST(CurvedShapes, AnEllipseAcrossTheSleevesSeamCarriesItsArea) {
       // The picture's test agrees: the centre and a point just inside along the major axis, both
       // sides of the seam.
       const Vector2 major(std::cos(e.orientation_rad()), std::sin(e.orientation_rad()));
-      EXPECT_TRUE(integrator.contains(e, Vector2(e.x_mm, e.y_mm) + 0.99 * e.semi_major_mm() * major + Vector2(0, round_mm)));
+      EXPECT_TRUE(
+          integrator.contains(e, Vector2(e.x_mm, e.y_mm) + 0.99 * e.semi_major_mm() * major + Vector2(0, round_mm)));
       EXPECT_FALSE(integrator.contains(e, Vector2(e.x_mm, e.y_mm) + 1.01 * e.semi_major_mm() * major));
     }
 }
@@ -134,8 +136,8 @@ TEST(CurvedShapes, KeepsDomePressesInPlaceWithAnHonestArea) {
   ShapeRefiner refiner(d.fit);
   const Frame empty = twin.frame({});
   for (const auto& [chart, radius_mm, force_N] :
-       {std::tuple{Vector2(0, 0), 5.0, 10.0}, std::tuple{Vector2(7, -5), 4.0, 8.0}, std::tuple{Vector2(-9, 6), 3.0, 4.0},
-        std::tuple{Vector2(3, 11), 6.0, 15.0}}) {
+       {std::tuple{Vector2(0, 0), 5.0, 10.0}, std::tuple{Vector2(7, -5), 4.0, 8.0},
+        std::tuple{Vector2(-9, 6), 3.0, 4.0}, std::tuple{Vector2(3, 11), 6.0, 15.0}}) {
     const Press press = press_at_chart(d.sensor.shape, chart, radius_mm, force_N);
     const Vector dV = frame_difference(d.measurements, twin.frame({press}), empty);
     const FitResult& fit = fitter.fit(dV, {Disc{chart.x() + 1.5, chart.y() - 1.5, 0, 0}});
@@ -148,10 +150,11 @@ TEST(CurvedShapes, KeepsDomePressesInPlaceWithAnHonestArea) {
     const double error = (surface_point_mm(d.sensor.shape, {r[0].ellipse.x_mm, r[0].ellipse.y_mm}) - truth).norm();
     const double true_area = std::numbers::pi * radius_mm * radius_mm;  // a chord radius: Archimedes
     const double log_area_error = std::log(r[0].ellipse.area_mm2() / true_area);
-    std::printf("dome press (%.0f, %.0f) r %.0f: fit %.3f mm, shapes %.3f mm; area %.1f mm2 (true %.1f, log %.2f, "
-                "sigma %.2f), a/b %.2f\n",
-                chart.x(), chart.y(), radius_mm, fit_error, error, r[0].ellipse.area_mm2(), true_area, log_area_error,
-                r[0].log_area_std, r[0].ellipse.semi_major_mm() / r[0].ellipse.semi_minor_mm());
+    std::printf(
+        "dome press (%.0f, %.0f) r %.0f: fit %.3f mm, shapes %.3f mm; area %.1f mm2 (true %.1f, log %.2f, "
+        "sigma %.2f), a/b %.2f\n",
+        chart.x(), chart.y(), radius_mm, fit_error, error, r[0].ellipse.area_mm2(), true_area, log_area_error,
+        r[0].log_area_std, r[0].ellipse.semi_major_mm() / r[0].ellipse.semi_minor_mm());
     EXPECT_LT(error, 0.3);
     EXPECT_LT(error, fit_error + 0.06);
     EXPECT_LT(std::abs(log_area_error), 2 * r[0].log_area_std);
