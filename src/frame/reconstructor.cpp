@@ -58,7 +58,7 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, const FitPrecompu
   indenter_radius_mm_ = calibration.indenter_radius_mm;
   gamma_ = calibration.contact_law.gamma;
   law_ = fit.sensor().contact;
-  if (options.contact_shapes && !is_curved(model.surface)) shapes_.emplace(fit);
+  if (options.contact_shapes) shapes_.emplace(fit);
 }
 
 void Reconstructor::set_reference(const Reference& reference) {
@@ -216,7 +216,7 @@ void Reconstructor::report_shapes(const std::vector<RefinedContact>& shapes) {
     fitted_.push_back(c);
     for (Index t = 0; t < pressure_.size(); ++t) {
       const Vector2& p = finder_.centroid_chart_mm(t);
-      if (e.contains(p.x(), p.y())) pressure_[t] = std::max(pressure_[t], c.pressure_N_per_mm2);
+      if (shapes_->integrator().contains(e, p)) pressure_[t] = std::max(pressure_[t], c.pressure_N_per_mm2);
     }
   }
   std::sort(fitted_.begin(), fitted_.end(), [](const Contact& a, const Contact& b) { return a.force_N > b.force_N; });

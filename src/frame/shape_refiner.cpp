@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <tuple>
 
 #include <ceres/ceres.h>
 
@@ -117,7 +118,6 @@ class EllipseMisfit : public ceres::CostFunction {
 ShapeRefiner::ShapeRefiner(const FitPrecompute& shared, ShapeOptions options)
     : shared_(shared), options_(options), integrator_(shared.integrator()), predictor_(shared.mesh(), shared.green()) {
   options.validate();
-  if (is_curved(shared.sensor().shape)) throw InvalidInput("contact shapes: only on a flat sheet");
   predictor_.set_series_resistance(shared.sensor().series_resistance_ohm);
 }
 
@@ -147,8 +147,10 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
     problem.AddResidualBlock(new ShapePrior(p[2], options_), nullptr, p);
     problem.SetParameterLowerBound(p, 0, box.min().x());
     problem.SetParameterUpperBound(p, 0, box.max().x());
-    problem.SetParameterLowerBound(p, 1, box.min().y());
-    problem.SetParameterUpperBound(p, 1, box.max().y());
+    if (!is_sleeve(shared_.sensor().shape)) {  // around a sleeve the chart is periodic: no bound
+      problem.SetParameterLowerBound(p, 1, box.min().y());
+      problem.SetParameterUpperBound(p, 1, box.max().y());
+    }
     for (int j : {3, 4}) {  // the major semi-axis within about half the sheet
       problem.SetParameterLowerBound(p, j, -max_elongation);
       problem.SetParameterUpperBound(p, j, max_elongation);
@@ -165,44 +167,43 @@ double ShapeRefiner::solve(const Vector& dV, std::vector<std::array<double, 6>>&
   solver.parameter_tolerance = 1e-8;
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
+  for (Parameters& p : parameters) p[1] = wrapped_chart_mm(shared_.sensor().shape, {p[0], p[1]}).y();
   return 2 * summary.final_cost;
 }
 
 namespace {
 
-/// One ellipse for two, started where the frame puts it: at their conductance-weighted centre,
-/// with their total conductance, and the traceless part of their combined second moment (each
-/// ellipse's own, exp(2L)/4, plus the spread of their centres: the parallel-axis theorem; weights
-/// G = g A). That quadrupole is the first shape term a frame carries (docs/physics.md, "Contact
-/// shapes"), so the merged ellipse of the held area ℓ₀ starts at the angle φ of the moment's
-/// major axis and the elongation whose quadrupole is the pair's: e^(2ℓ₀) sinh(2e)/4 = (λ₁ − λ₂)/2.
-/// Started round (as before), a bar's two halves took more than a trial's iterations to
-/// become one long ellipse, and the merge was refused: a bar at (20, 40) mm, 30°, stayed two.
-/// `max_elongation` is the bound solve() puts on p and q.
-Parameters merged(const Parameters& a, const Parameters& b, double max_elongation) {
+/// One ellipse for two, started where the frame puts it: at their conductance-weighted centre
+/// (b's chart point seen from a's, the short way round a sleeve), with their total conductance,
+/// and the traceless part of their combined second moment (each ellipse's own, exp(2L)/4, plus the
+/// spread of their centres: the parallel-axis theorem; weights G = g A). That quadrupole is the
+/// first shape term a frame carries (docs/physics.md, "Contact shapes"), so the merged ellipse of
+/// the held area ℓ₀ starts at the angle φ of the moment's major axis and the elongation whose
+/// quadrupole is the pair's: e^(2ℓ₀) sinh(2e)/4 = (λ₁ − λ₂)/2. Started round (as before), a bar's
+/// two halves took more than a trial's iterations to become one long ellipse, and the merge was
+/// refused: a bar at (20, 40) mm, 30°, stayed two. `max_elongation` is the bound solve() puts on p
+/// and q. On a curved sheet the chart's offsets stand for the tangent plane's (a start only).
+Parameters merged(const Parameters& a, const Parameters& b, double max_elongation,
+                  const EllipseContactIntegrator& charts) {
   const double ga = std::exp(a[5] + 2 * a[2]), gb = std::exp(b[5] + 2 * b[2]);  // G/π of each
   const double w = ga / (ga + gb);
-  const Eigen::Vector2d centre = w * Eigen::Vector2d(a[0], a[1]) + (1 - w) * Eigen::Vector2d(b[0], b[1]);
+  const Vector2 to_b = charts.chart_offset({b[0], b[1]}, {a[0], a[1]});
   Eigen::Matrix2d moment = Eigen::Matrix2d::Zero();
-  for (const auto& [c, weight] : {std::pair{&a, w}, std::pair{&b, 1 - w}}) {
+  for (const auto& [c, weight, offset] :
+       {std::tuple{&a, w, Vector2(-(1 - w) * to_b)}, std::tuple{&b, 1 - w, Vector2(w * to_b)}}) {
     const Parameters& e = *c;
     const double elongation = std::hypot(e[3], e[4]);
     // exp(2L) = e^(2ℓ) (cosh 2e I + sinh(2e)/e [[p, q], [q, −p]])
     const double s = elongation > 0 ? std::sinh(2 * elongation) / elongation : 2;
     Eigen::Matrix2d own;
     own << std::cosh(2 * elongation) + s * e[3], s * e[4], s * e[4], std::cosh(2 * elongation) - s * e[3];
-    const Eigen::Vector2d offset = Eigen::Vector2d(e[0], e[1]) - centre;
     moment += weight * (std::exp(2 * e[2]) / 4 * own + offset * offset.transpose());
   }
   const double half_difference = std::hypot((moment(0, 0) - moment(1, 1)) / 2, moment(0, 1));  // (λ₁ − λ₂)/2
   const double two_phi = std::atan2(2 * moment(0, 1), moment(0, 0) - moment(1, 1));
   const double elongation = std::min(std::asinh(4 * half_difference * std::exp(-2 * a[2])) / 2, max_elongation);
-  return {centre.x(),
-          centre.y(),
-          a[2],
-          elongation * std::cos(two_phi),
-          elongation * std::sin(two_phi),
-          std::log(ga + gb) - 2 * a[2]};
+  return {a[0] + (1 - w) * to_b.x(),      a[1] + (1 - w) * to_b.y(),      a[2],
+          elongation * std::cos(two_phi), elongation * std::sin(two_phi), std::log(ga + gb) - 2 * a[2]};
 }
 
 /// Whether two contacts may be one region: the gap between their ellipses' circumscribed circles
@@ -210,9 +211,13 @@ Parameters merged(const Parameters& a, const Parameters& b, double max_elongatio
 /// FitPrecompute::plausible_separation_mm).
 /// Farther apart, one ellipse cannot cover both without leaving a frame the merge never pays for
 /// (four fingers 20 mm apart: 7.3 s of merge trials a frame, BM_ShapesFrameFour, none merged).
-bool within_reach(const Parameters& a, const Parameters& b, double separation_mm) {
+/// On a curved sheet the centres' distance is the chart's (the short way round a sleeve): a cap's is
+/// shorter than the surface's, so the test lets more pairs through, never fewer.
+bool within_reach(const Parameters& a, const Parameters& b, double separation_mm,
+                  const EllipseContactIntegrator& charts) {
   const Ellipse p = to_ellipse(a.data()), q = to_ellipse(b.data());
-  return std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm) - p.semi_major_mm() - q.semi_major_mm() < separation_mm;
+  return charts.chart_offset({q.x_mm, q.y_mm}, {p.x_mm, p.y_mm}).norm() - p.semi_major_mm() - q.semi_major_mm() <
+         separation_mm;
 }
 
 }  // namespace
@@ -248,11 +253,12 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
     double best_chi2 = 0;
     for (std::size_t i = 0; i < parameters.size(); ++i)
       for (std::size_t j = i + 1; j < parameters.size(); ++j) {
-        if (!within_reach(parameters[i], parameters[j], 3 * shared_.options().prior_radius_mm)) continue;
+        if (!within_reach(parameters[i], parameters[j], 3 * shared_.options().prior_radius_mm, integrator_)) continue;
         std::vector<Parameters> trial;
         for (std::size_t k = 0; k < parameters.size(); ++k)
           if (k != i && k != j) trial.push_back(parameters[k]);
-        trial.push_back(merged(parameters[i], parameters[j], elongation_bound(shared_.centre_box(), parameters[i][2])));
+        trial.push_back(merged(parameters[i], parameters[j], elongation_bound(shared_.centre_box(), parameters[i][2]),
+                               integrator_));
         const double c = solve(dV, trial, trial_iterations);
         if (c < chi2 + worth && (best.empty() || c < best_chi2)) best = std::move(trial), best_chi2 = c;
       }

@@ -90,6 +90,8 @@ class DiscContactIntegrator {
   double reach_mm(std::size_t triangle) const { return reach_mm_[triangle]; }
   double max_reach_mm() const { return max_reach_mm_; }
   const Mesh& mesh() const { return *mesh_; }
+  /// The sheet's shape, whose chart names the discs' centres.
+  const Shape& surface() const { return surface_; }
 
  private:
   void bucket_triangles();

@@ -36,7 +36,8 @@ struct FrameOptions {
   /// frame of pure noise reports a contact with at most this probability. 0: no such test (nor
   /// without the model's reading noise).
   double false_alarm_rate = 0.01;
-  /// With a fitter on a flat sheet: each fitted contact refitted as an ellipse (shape_refiner.hpp),
+  /// With a fitter: each fitted contact refitted as an ellipse (shape_refiner.hpp; on a curved sheet
+  /// in the tangent plane at its centre),
   /// so it is reported with its outline's area, elongation and orientation, its force from them,
   /// and drawn as that ellipse in pressure(). Off: the disc fit's contacts with the calibration
   /// indenter's area. The `shapes` method sets it (pipeline/pipeline.hpp).

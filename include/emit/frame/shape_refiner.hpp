@@ -12,6 +12,9 @@
 /// 10 mm, log-uniform: ±0.55 in log r about 5 mm holds 68 % of them, ±1.1 all). Fitting it was tried: the frame pulled
 /// it to the sheet's size with the mesh's own error. Force, F ∝ A^(1+1/γ) at the fitted total conductance G, inherits
 /// little of the area's σ; pressure, all of it.
+///
+/// On a curved sheet the ellipses are the tangent plane's at their centres (ellipse_contact.hpp):
+/// centres are chart points as the disc fit's, semi-axes and area mm and mm² on the surface.
 #include <array>
 #include <vector>
 
@@ -63,7 +66,7 @@ struct RefinedContact {
 class ShapeRefiner {
  public:
   /// A workspace on `shared` (its sensor, mesh, Green's function, measurements, rim and noise),
-  /// which must outlive it. \throw InvalidInput for a bad option or a curved sheet.
+  /// which must outlive it. \throw InvalidInput for a bad option.
   explicit ShapeRefiner(const FitPrecompute& shared, ShapeOptions options = {});
 
   /// Refits `discs` (the disc fit's contacts for δV) as ellipses of the area of a disc of
@@ -73,6 +76,8 @@ class ShapeRefiner {
   const std::vector<RefinedContact>& refine(const Vector& dV, const std::vector<Disc>& discs, const AreaPrior& prior);
 
   const ShapeOptions& options() const { return options_; }
+  /// The ellipses' integrator: which chart points an ellipse covers (EllipseContactIntegrator::contains).
+  const EllipseContactIntegrator& integrator() const { return integrator_; }
   /// The last refit's misfit [V RMS over the measurements].
   double rms_misfit_V() const { return rms_misfit_V_; }
   /// The frame the ellipses give (N×N), for tests and pictures.
