@@ -113,7 +113,8 @@ RegionOutliner::RegionOutliner(const Mesh& mesh, Shape surface) : surface_(std::
   node_triangles_.resize(static_cast<std::size_t>(node_offsets_.back()));
   std::vector<int> fill(node_offsets_.begin(), node_offsets_.end() - 1);
   for (std::size_t t = 0; t < F; ++t)
-    for (int n : corners_[t]) node_triangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(n)]++)] = static_cast<int>(t);
+    for (int n : corners_[t])
+      node_triangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(n)]++)] = static_cast<int>(t);
   node_on_border_ = std::move(node_on_border);
 
   // Scratch for the worst case: every triangle in the band, a contour segment in each and one
@@ -132,9 +133,10 @@ RegionOutliner::RegionOutliner(const Mesh& mesh, Shape surface) : surface_(std::
   starting_at_.assign(static_cast<std::size_t>(edge_count_) + V, -1);
   loop_.reserve(F + border_edges);
   best_.reserve(F + border_edges);
-  weights_.resize(2 * Outline::capacity);
-  previous_.resize(2 * Outline::capacity);
-  next_.resize(2 * Outline::capacity);
+  const auto simplified = 2 * static_cast<std::size_t>(Outline::capacity);
+  weights_.resize(simplified);
+  previous_.resize(simplified);
+  next_.resize(simplified);
 }
 
 int RegionOutliner::next_stamp() {
@@ -218,8 +220,8 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
     const auto t = static_cast<std::size_t>(triangle);
     const std::array<int, 3>& c = corners_[t];
     const std::array<Vector2, 3>& p = corner_charts_mm_[t];
-    std::array<double, 3> v;
-    std::array<bool, 3> in;
+    std::array<double, 3> v{};
+    std::array<bool, 3> in{};
     for (int k = 0; k < 3; ++k) {
       v[k] = node_value(c[k], image, level);
       in[k] = v[k] > 0;
@@ -249,7 +251,8 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
 
   // Chain the segments into closed lines; keep the one enclosing the largest area.
   used_.assign(segments_.size(), 0);
-  for (std::size_t i = 0; i < segments_.size(); ++i) starting_at_[static_cast<std::size_t>(segments_[i].from)] = static_cast<int>(i);
+  for (std::size_t i = 0; i < segments_.size(); ++i)
+    starting_at_[static_cast<std::size_t>(segments_[i].from)] = static_cast<int>(i);
   double best_area = 0;
   best_.clear();
   for (std::size_t first = 0; first < segments_.size(); ++first) {
@@ -298,7 +301,8 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
   int head = 0;
   for (int remaining = n; remaining > Outline::capacity; --remaining) {
     int smallest = head;
-    for (int i = next_[static_cast<std::size_t>(head)], k = 1; k < remaining; i = next_[static_cast<std::size_t>(i)], ++k)
+    for (int i = next_[static_cast<std::size_t>(head)], k = 1; k < remaining;
+         i = next_[static_cast<std::size_t>(i)], ++k)
       if (weights_[static_cast<std::size_t>(i)] < weights_[static_cast<std::size_t>(smallest)]) smallest = i;
     const int before = previous_[static_cast<std::size_t>(smallest)], after = next_[static_cast<std::size_t>(smallest)];
     next_[static_cast<std::size_t>(before)] = after;

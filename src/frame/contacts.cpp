@@ -196,7 +196,8 @@ Vector2 chart_of(const Shape& surface, const Contact& contact) {
   return surface_chart_mm(surface, Vector3(contact.x_mm, contact.y_mm, contact.z_mm));
 }
 
-ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::move(surface)), outliner_(mesh, surface_) {
+ContactFinder::ContactFinder(const Mesh& mesh, Shape surface)
+    : surface_(std::move(surface)), outliner_(mesh, surface_) {
   build_adjacency(mesh, neighbour_offsets_, neighbours_);
   const auto count = static_cast<std::size_t>(mesh.triangle_count());
   areas_mm2_.resize(count);

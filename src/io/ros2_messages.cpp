@@ -182,23 +182,23 @@ Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
   std::array<char, 32> name{};  // "contact_" and up to 20 digits
   std::snprintf(name.data(), name.size(), "contact_%zu", rank);
   Ros2Contact r{name,
-          1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
-          normal,
-          -c.force_N * normal,
-          1e-6 * c.area_mm2,
-          1e6 * c.pressure_N_per_mm2,
-          1e6 * c.peak_pressure_N_per_mm2,
-          1e-3 * c.x_std_mm,
-          1e-3 * c.y_std_mm,
-          1e6 * c.pressure_std_N_per_mm2,
-          c.force_std_N,
-          1e-3 * c.semi_major_mm,
-          1e-3 * c.semi_minor_mm,
-          degrees_to_radians * c.orientation_deg,
-          1e-6 * c.area_std_mm2,
-          degrees_to_radians * c.orientation_std_deg,
-          {},
-          static_cast<std::uint32_t>(c.outline.size)};
+                1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
+                normal,
+                -c.force_N * normal,
+                1e-6 * c.area_mm2,
+                1e6 * c.pressure_N_per_mm2,
+                1e6 * c.peak_pressure_N_per_mm2,
+                1e-3 * c.x_std_mm,
+                1e-3 * c.y_std_mm,
+                1e6 * c.pressure_std_N_per_mm2,
+                c.force_std_N,
+                1e-3 * c.semi_major_mm,
+                1e-3 * c.semi_minor_mm,
+                degrees_to_radians * c.orientation_deg,
+                1e-6 * c.area_std_mm2,
+                degrees_to_radians * c.orientation_std_deg,
+                {},
+                static_cast<std::uint32_t>(c.outline.size)};
   for (int k = 0; k < c.outline.size; ++k)
     for (int axis = 0; axis < 2; ++axis)
       r.outline_m[static_cast<std::size_t>(k)][static_cast<std::size_t>(axis)] =

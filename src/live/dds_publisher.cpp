@@ -157,8 +157,10 @@ void DdsPublisher::publish(const LiveFrame& frame) {
                              {}};
     for (std::uint32_t k = 0; k < c.outline_size; ++k)
       s.contact_outlines[i][k] = {c.outline_m[k][0], c.outline_m[k][1], 0.0f};
-    s.contact_messages[i].outline.points = borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(
-        c.outline_size > 0 ? s.contact_outlines[i].data() : nullptr, c.outline_size);
+    s.contact_messages[i].outline.points =
+        borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(c.outline_size > 0 ? s.contact_outlines[i].data()
+                                                                                  : nullptr,
+                                                               c.outline_size);
   }
   emit_msgs_msg_dds__TactileContacts_ contacts_message{};
   contacts_message.header = header;

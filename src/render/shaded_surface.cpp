@@ -458,7 +458,7 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
     if (ring.points.empty())
       for (int k = 0; k <= ring_segments; ++k) {
         const double angle = 2 * std::numbers::pi * k / ring_segments;
-        ring.points.push_back(centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2);
+        ring.points.emplace_back(centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2);
       }
     ring.under.resize(ring.points.size());
     // A ring point p is within r of the centre (r: the radius, or a polygon's farthest point),

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "allocation_counter.hpp"
 #include "emit/frame/contacts.hpp"
@@ -47,7 +47,8 @@ Moments moments(const Outline& outline) {
 
 double perimeter_mm(const Outline& outline) {
   double length = 0;
-  for (int k = 0; k < outline.size; ++k) length += (outline.vertex_mm((k + 1) % outline.size) - outline.vertex_mm(k)).norm();
+  for (int k = 0; k < outline.size; ++k)
+    length += (outline.vertex_mm((k + 1) % outline.size) - outline.vertex_mm(k)).norm();
   return length;
 }
 
@@ -80,15 +81,15 @@ TEST(ContactOutline, EllipsePolygonsSecondMomentsMatchTheSemiAxes) {
   const Moments m = moments(outline);
   const int n = ellipse_outline_vertices;
   const double factor = (2 + std::cos(2 * std::numbers::pi / n)) / 12;
-  EXPECT_NEAR(m.area / (std::numbers::pi * a * b * n / (2 * std::numbers::pi) * std::sin(2 * std::numbers::pi / n)),
-              1, 1e-6);
+  EXPECT_NEAR(m.area / (std::numbers::pi * a * b * n / (2 * std::numbers::pi) * std::sin(2 * std::numbers::pi / n)), 1,
+              1e-6);
   EXPECT_NEAR((m.mean - Vector2(20, 25)).norm(), 0, 1e-5);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> axes(m.covariance);
   EXPECT_NEAR(axes.eigenvalues()(1) / (a * a * factor), 1, 1e-5);
   EXPECT_NEAR(axes.eigenvalues()(0) / (b * b * factor), 1, 1e-5);
   const Vector2 major = axes.eigenvectors().col(1);
-  EXPECT_NEAR(std::abs(major.dot(Vector2(std::cos(angle_deg * std::numbers::pi / 180),
-                                         std::sin(angle_deg * std::numbers::pi / 180)))),
+  EXPECT_NEAR(std::abs(major.dot(
+                  Vector2(std::cos(angle_deg * std::numbers::pi / 180), std::sin(angle_deg * std::numbers::pi / 180)))),
               1, 1e-9);
   // And set_outline_ellipse reads the same semi-axes back from these moments, within the
   // polygon's factor (2 + cos(2π/n))/3 on the variances.
@@ -149,9 +150,10 @@ TEST(ContactOutline, RegionsLevelLineFollowsTheLevelSet) {
       farthest_mm = std::max(farthest_mm, std::abs((outline.vertex_mm(k) - centre).norm() - r));
     const double band_mm2 = 2 * std::numbers::pi * r * longest_edge_mm;
     const double quarter_edge_mm = longest_edge_mm / 4;
-    std::printf("r %.0f mm: %d vertices, farthest %.3f mm from the circle, area %.1f mm² (circle %.1f, region "
-                "%.1f)\n",
-                r, outline.size, farthest_mm, outline.area_mm2(), std::numbers::pi * r * r, field.region_area_mm2);
+    std::printf(
+        "r %.0f mm: %d vertices, farthest %.3f mm from the circle, area %.1f mm² (circle %.1f, region "
+        "%.1f)\n",
+        r, outline.size, farthest_mm, outline.area_mm2(), std::numbers::pi * r * r, field.region_area_mm2);
     EXPECT_LT(farthest_mm, quarter_edge_mm);
     EXPECT_GT(outline.area_mm2(), 0);  // counter-clockwise
     EXPECT_NEAR(outline.area_mm2(), std::numbers::pi * r * r, 2 * std::numbers::pi * r * quarter_edge_mm);
@@ -201,8 +203,8 @@ TEST(ContactOutline, IndicatorOutlineFollowsTheSelection) {
   const Outline& outline = contacts[0].outline;
   ASSERT_GE(outline.size, 4);
   const double perimeter = perimeter_mm(outline);
-  std::printf("bar 24 x 6 mm: outline %.1f mm² (region %.1f), %d vertices\n", outline.area_mm2(),
-              contacts[0].area_mm2, outline.size);
+  std::printf("bar 24 x 6 mm: outline %.1f mm² (region %.1f), %d vertices\n", outline.area_mm2(), contacts[0].area_mm2,
+              outline.size);
   EXPECT_NEAR(outline.area_mm2(), contacts[0].area_mm2, perimeter * longest_edge_mm);
   // Along the bar: its second moments' axis.
   const Moments m = moments(outline);
@@ -232,7 +234,9 @@ TEST(ContactOutline, DomeOutlineIsInTheChart) {
   double longest = 0;
   for (Index t = 0; t < mesh.triangle_count(); ++t)
     for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, (mesh.nodes_mm.row(mesh.triangles(t, k)) - mesh.nodes_mm.row(mesh.triangles(t, (k + 1) % 3))).norm());
+      longest = std::max(longest,
+                         (mesh.nodes_mm.row(mesh.triangles(t, k)) - mesh.nodes_mm.row(mesh.triangles(t, (k + 1) % 3)))
+                             .norm());
   const Vector2 centre(3, -2);
   const double r = 6;
   const Paraboloid field(mesh, centre, r);

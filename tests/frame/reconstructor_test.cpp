@@ -150,7 +150,8 @@ TEST(Reconstruction, ProcessOnTheDomeAllocatesNothingAndPlacesContactsOnTheSurfa
   ASSERT_GE(outline.size, 3);
   EXPECT_GT(outline.area_mm2(), 0);
   bool within = true;
-  for (int k = 0; k < outline.size; ++k) within = within && outline.vertex_mm(k).norm() <= sensor.shape.radius_mm + 1e-4;
+  for (int k = 0; k < outline.size; ++k)
+    within = within && outline.vertex_mm(k).norm() <= sensor.shape.radius_mm + 1e-4;
   EXPECT_TRUE(within);
 }
 

@@ -118,24 +118,26 @@ TEST_P(ContactsJsonlBad, SaysWhatIsWrong) {
 
 INSTANTIATE_TEST_SUITE_P(
     Errors, ContactsJsonlBad,
-    ::testing::Values(std::pair{"[1]", "contacts line: not a JSON object"},
-                      std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
-                      std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
-                      std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
-                      std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
-                      std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})",
-                                "contacts line: contact 0: missing \"y_mm\""},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
-                                "contacts line: contact 0: \"x_mm\" is not a finite number"},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0]]}]})",
-                                "contacts line: contact 0: \"outline_mm\" is not a list of 3 to 64 vertices"},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0], [1]]}]})",
-                                "contacts line: contact 0: \"outline_mm\" vertex 2 is not [x, y], finite numbers"},
-                      // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
-                      std::pair{R"({"frame": 1e999, "contacts": []})",
-                                "contacts line: a number out of range ([json.exception.out_of_range.406] number "
-                                "overflow parsing '1e999')"}));
+    ::testing::Values(
+        std::pair{"[1]", "contacts line: not a JSON object"},
+        std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
+        std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
+        std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
+        std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
+        std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})", "contacts line: contact 0: missing \"y_mm\""},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
+                  "contacts line: contact 0: \"x_mm\" is not a finite number"},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0]]}]})",
+            "contacts line: contact 0: \"outline_mm\" is not a list of 3 to 64 vertices"},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0], [1]]}]})",
+            "contacts line: contact 0: \"outline_mm\" vertex 2 is not [x, y], finite numbers"},
+        // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
+        std::pair{R"({"frame": 1e999, "contacts": []})",
+                  "contacts line: a number out of range ([json.exception.out_of_range.406] number "
+                  "overflow parsing '1e999')"}));
 
 }  // namespace
 }  // namespace emit

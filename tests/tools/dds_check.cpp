@@ -66,24 +66,24 @@ using Fields = std::vector<double>;
 
 Fields fields_of(const emit_msgs_msg_dds__TactileContact_& c) {
   Fields fields = {c.position.x,
-          c.position.y,
-          c.position.z,
-          c.normal.x,
-          c.normal.y,
-          c.normal.z,
-          c.area,
-          c.pressure,
-          c.peak_pressure,
-          -c.wrench.force.z,
-          c.position_std_x,
-          c.position_std_y,
-          c.pressure_std,
-          c.force_std,
-          c.semi_major_m,
-          c.semi_minor_m,
-          c.orientation_rad,
-          c.area_std_m2,
-          c.orientation_std_rad};
+                   c.position.y,
+                   c.position.z,
+                   c.normal.x,
+                   c.normal.y,
+                   c.normal.z,
+                   c.area,
+                   c.pressure,
+                   c.peak_pressure,
+                   -c.wrench.force.z,
+                   c.position_std_x,
+                   c.position_std_y,
+                   c.pressure_std,
+                   c.force_std,
+                   c.semi_major_m,
+                   c.semi_minor_m,
+                   c.orientation_rad,
+                   c.area_std_m2,
+                   c.orientation_std_rad};
   for (std::uint32_t k = 0; k < c.outline.points._length; ++k) {
     fields.push_back(c.outline.points._buffer[k].x);
     fields.push_back(c.outline.points._buffer[k].y);
@@ -244,7 +244,8 @@ int main(int argc, char** argv) {
           const auto& points = m->contacts._buffer[0].outline.points;
           double twice_area = 0;
           for (std::uint32_t k = 0, j = points._length - 1; k < points._length; j = k++)
-            twice_area += double{points._buffer[j].x} * points._buffer[k].y - double{points._buffer[k].x} * points._buffer[j].y;
+            twice_area +=
+                double{points._buffer[j].x} * points._buffer[k].y - double{points._buffer[k].x} * points._buffer[j].y;
           if (points._length >= 3 && twice_area > 0) ++outlined;
           else if (problem.empty())
             problem = "frame " + std::to_string(m->frame) + "'s contact has no counter-clockwise outline (" +
@@ -320,9 +321,11 @@ int main(int argc, char** argv) {
         const double a = contacts_received[c][static_cast<std::size_t>(k)],
                      b = line->second[c][static_cast<std::size_t>(k)];
         if (!agree(a, b) && problem.empty())
-          problem = "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s " +
-                    (k < std::size_t{field_count} ? std::string(json_keys[k].key) : "outline_mm value " + std::to_string(k - std::size_t{field_count})) +
-                    ": " + std::to_string(a) + " (SI) against the JSON Lines' " + std::to_string(b);
+          problem =
+              "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s " +
+              (k < std::size_t{field_count} ? std::string(json_keys[k].key)
+                                            : "outline_mm value " + std::to_string(k - std::size_t{field_count})) +
+              ": " + std::to_string(a) + " (SI) against the JSON Lines' " + std::to_string(b);
         ++compared;
       }
     }

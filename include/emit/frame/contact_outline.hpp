@@ -45,7 +45,8 @@ struct Outline {
   }
   /// Appends a vertex; ignored beyond the capacity.
   void push_back(const Vector2& p_mm) {
-    if (size < capacity) vertices_mm[static_cast<std::size_t>(size++)] = {static_cast<float>(p_mm.x()), static_cast<float>(p_mm.y())};
+    if (size < capacity)
+      vertices_mm[static_cast<std::size_t>(size++)] = {static_cast<float>(p_mm.x()), static_cast<float>(p_mm.y())};
   }
   void clear() { size = 0; }
   /// The enclosed area by the shoelace formula [mm²]: positive for counter-clockwise vertices.

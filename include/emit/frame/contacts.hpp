@@ -108,7 +108,7 @@ class ContactFinder {
   std::vector<int> stack_;             ///< scratch
   std::vector<int> members_;           ///< scratch: the elements of the contact grown last
   RegionOutliner outliner_;
-  std::vector<Contact> contacts_;      ///< output, capacity #F
+  std::vector<Contact> contacts_;  ///< output, capacity #F
   std::vector<int> peak_elements_;
   std::vector<Vector2> peaks_;
 };
