@@ -280,7 +280,8 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
   if (best_.size() < 3) return;
 
   // Simplify: first every k-th vertex down to twice the capacity (the line's vertices are a mesh
-  // edge or less apart), then Visvalingam–Whyatt down to the capacity.
+  // edge or less apart), then Visvalingam–Whyatt down to the capacity and past it through
+  // vertices in line with their neighbours.
   const std::size_t most = 2 * static_cast<std::size_t>(Outline::capacity);
   if (best_.size() > most) {
     const std::size_t n = best_.size();
@@ -299,11 +300,16 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
   }
   for (int i = 0; i < n; ++i) weights_[static_cast<std::size_t>(i)] = weight(i);
   int head = 0;
-  for (int remaining = n; remaining > Outline::capacity; --remaining) {
+  // Down to the capacity, and on while a vertex is in line with its neighbours (a straight
+  // stretch of the sheet's border: its triangle below 1e-9 of the outline's area).
+  const double in_line = 1e-9 * 2 * best_area;
+  int remaining = n;
+  for (; remaining > 3; --remaining) {
     int smallest = head;
     for (int i = next_[static_cast<std::size_t>(head)], k = 1; k < remaining;
          i = next_[static_cast<std::size_t>(i)], ++k)
       if (weights_[static_cast<std::size_t>(i)] < weights_[static_cast<std::size_t>(smallest)]) smallest = i;
+    if (remaining <= Outline::capacity && weights_[static_cast<std::size_t>(smallest)] > in_line) break;
     const int before = previous_[static_cast<std::size_t>(smallest)], after = next_[static_cast<std::size_t>(smallest)];
     next_[static_cast<std::size_t>(before)] = after;
     previous_[static_cast<std::size_t>(after)] = before;
@@ -311,7 +317,7 @@ void RegionOutliner::outline(const Vector& image, double level, std::span<const 
     weights_[static_cast<std::size_t>(before)] = weight(before);
     weights_[static_cast<std::size_t>(after)] = weight(after);
   }
-  for (int i = head, k = 0; k < std::min(n, Outline::capacity); i = next_[static_cast<std::size_t>(i)], ++k)
+  for (int i = head, k = 0; k < remaining; i = next_[static_cast<std::size_t>(i)], ++k)
     out.push_back(best_[static_cast<std::size_t>(i)]);
 }
 
