@@ -10,6 +10,7 @@
 
 #include "emit/core/threads.hpp"
 #include "emit/fem/forward_model.hpp"
+#include "emit/frame/contact_outline.hpp"
 #include "emit/frame/frame_predictor.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/mesh/sheet_file.hpp"
@@ -97,6 +98,30 @@ void BM_PaperFrameBefore(benchmark::State& state) {
   std::size_t f = 0;
   for ([[maybe_unused]] auto _ : state)
     benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+/// A paper frame's outline alone (frame/contact_outline.hpp): the level line at its 50 %
+/// threshold around the elements above it, the cost BM_PaperFrame includes per region.
+void BM_PaperOutline(benchmark::State& state) {
+  Bench& b = bench();
+  RegionOutliner outliner(b.model.mesh);
+  CompactOperatorScratch scratch = b.model.op.scratch();
+  std::vector<Vector> images;
+  std::vector<std::vector<int>> regions;
+  for (const Frame& frame : b.frames) {
+    Vector& image = images.emplace_back(b.model.op.rows());
+    b.model.op.apply(frame_difference(b.model.measurements, frame, b.reference), image, scratch);
+    std::vector<int>& region = regions.emplace_back();
+    for (Index t = 0; t < image.size(); ++t)
+      if (image[t] >= 0.5 * image.maxCoeff()) region.push_back(static_cast<int>(t));
+  }
+  Outline outline;
+  std::size_t f = 0;
+  for ([[maybe_unused]] auto _ : state) {
+    const std::size_t k = f++ % images.size();
+    outliner.outline(images[k], 0.5 * images[k].maxCoeff(), regions[k], outline);
+    benchmark::DoNotOptimize(outline.size);
+  }
 }
 
 /// The paper method's image alone, δφ = R·δV: the compact operator the per-frame path applies
@@ -283,6 +308,7 @@ void BM_PredictSparse(benchmark::State& state) {
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperFrameBefore)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperOutline)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageDense)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FitFrame)->Unit(benchmark::kMillisecond);

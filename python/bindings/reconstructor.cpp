@@ -172,7 +172,8 @@ void bind_reconstructor(py::module_& m) {
 The point (x_mm, y_mm, z_mm) on the sheet and its outward normal (nx, ny, nz); the area [mm^2];
 mean and peak pressure [N/mm^2]; force [N]; 1-sigma uncertainties (contact fitting; 0 where
 not estimated); the outline's ellipse of the same second moments, semi-axes [mm] and the major
-axis's angle from x [deg] (the `shapes` method fits it, with 1-sigma of area and angle). Read-only.)")
+axis's angle from x [deg] (the `shapes` method fits it, with 1-sigma of area and angle); the
+outline's polygon, outline_mm, a (K, 2) array (not in CONTACT_DTYPE). Read-only.)")
       .def_readonly("x_mm", &Contact::x_mm)
       .def_readonly("y_mm", &Contact::y_mm)
       .def_readonly("z_mm", &Contact::z_mm)
@@ -193,6 +194,21 @@ axis's angle from x [deg] (the `shapes` method fits it, with 1-sigma of area and
       .def_readonly("area_std_mm2", &Contact::area_std_mm2)
       .def_readonly("orientation_std_deg", &Contact::orientation_std_deg)
       .def_readonly("element_count", &Contact::element_count)
+      .def_property_readonly(
+          "outline_mm",
+          [](const Contact& c) {
+            py::array_t<double> vertices({static_cast<py::ssize_t>(c.outline.size), py::ssize_t{2}});
+            auto v = vertices.mutable_unchecked<2>();
+            for (int k = 0; k < c.outline.size; ++k) {
+              const Vector2 p = c.outline.vertex_mm(k);
+              v(k, 0) = p.x();
+              v(k, 1) = p.y();
+            }
+            return vertices;
+          },
+          "The outline as a polygon, a (K, 2) array of its vertices [mm] in the sheet's chart (x, y on a flat "
+          "sheet), counter-clockwise, the last joined to the first: a linear method's region's level line at "
+          "its threshold, contact fitting's disc's, the `shapes` method's ellipse's (K = 0: none).")
       .def(
           "as_dict",
           [](const py::object& self) {

@@ -131,19 +131,22 @@ struct FloodFill {
   const double* floor;
   std::uint8_t* pending;  ///< selected and not yet in a contact
   int* stack;
+  int* members;  ///< receives the contact's elements
 
   /// The contact grown from a pending seed. An element stops pending when pushed, so each is
   /// pushed once and the stack never holds more than #F. Raw pointers held by value: a store
   /// through a byte pointer may alias anything, so pointers behind references would be reloaded
   /// after every store (measured 10 % slower). \return false for a contact without an element
   /// above the floor (then `out` is left as it was).
-  bool grow(int seed, Contact& out) const {
+  bool grow(int seed, Contact& out, int& member_count) const {
     Accumulator sum;
+    member_count = 0;
     std::size_t top = 0;
     pending[seed] = 0;
     stack[top++] = seed;
     while (top > 0) {
       const int t = stack[--top];
+      members[member_count++] = t;
       sum.add(areas_mm2[t], pressure[t], weight[t], floor[t], centroids_mm[t]);
       for (int k = offsets[t]; k < offsets[t + 1]; ++k) {
         const int n = neighbours[k];
@@ -193,7 +196,8 @@ Vector2 chart_of(const Shape& surface, const Contact& contact) {
   return surface_chart_mm(surface, Vector3(contact.x_mm, contact.y_mm, contact.z_mm));
 }
 
-ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::move(surface)) {
+ContactFinder::ContactFinder(const Mesh& mesh, Shape surface)
+    : surface_(std::move(surface)), outliner_(mesh, surface_) {
   build_adjacency(mesh, neighbour_offsets_, neighbours_);
   const auto count = static_cast<std::size_t>(mesh.triangle_count());
   areas_mm2_.resize(count);
@@ -207,12 +211,14 @@ ContactFinder::ContactFinder(const Mesh& mesh, Shape surface) : surface_(std::mo
   // Worst cases, so find() never grows a vector: every element on the stack, every element its own contact.
   pending_.resize(count);
   stack_.resize(count);
+  members_.resize(count);
   no_floor_ = Vector::Constant(static_cast<Index>(count), -std::numeric_limits<double>::infinity());
   contacts_.reserve(count);
 }
 
 const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
-                                                const Vector& weight, double min_area_mm2, const Vector* floor) {
+                                                const Vector& weight, double min_area_mm2, const Vector* floor,
+                                                double level) {
   check_size("the selection", static_cast<Index>(selected.size()), element_count());
   check_size("the pressure", pressure.size(), element_count());
   check_size("the weight", weight.size(), element_count());
@@ -225,14 +231,20 @@ const std::vector<Contact>& ContactFinder::find(const std::vector<std::uint8_t>&
                        weight.data(),
                        floor ? floor->data() : no_floor_.data(),
                        pending_.data(),
-                       stack_.data()};
+                       stack_.data(),
+                       members_.data()};
   std::copy(selected.begin(), selected.end(), pending_.begin());
   contacts_.clear();
   for (int seed = 0; seed < static_cast<int>(pending_.size()); ++seed) {
     if (!pending_[seed]) continue;
     Contact contact;
-    if (fill.grow(seed, contact) && contact.area_mm2 >= min_area_mm2) {
-      place_on_surface(surface_, chart_of(surface_, contact), contact);
+    int member_count = 0;
+    if (fill.grow(seed, contact, member_count) && contact.area_mm2 >= min_area_mm2) {
+      const Vector2 chart = chart_of(surface_, contact);
+      place_on_surface(surface_, chart, contact);
+      outliner_.outline(weight, level, {members_.data(), static_cast<std::size_t>(member_count)}, contact.outline);
+      if (contact.outline.empty())
+        ellipse_outline(chart, contact.semi_major_mm, contact.semi_minor_mm, contact.orientation_deg, contact.outline);
       contacts_.push_back(contact);  // within the reserved capacity
     }
   }

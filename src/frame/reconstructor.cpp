@@ -94,7 +94,7 @@ const std::vector<Contact>& Reconstructor::process(const FrameView& frame) {
   const double threshold = options_.threshold_fraction * peak;
   linear_.pressure_map(dphi_, threshold, pressure_, selected_);  // paper eq. 8 above the threshold
   const std::vector<Contact>& linear =
-      finder_.find(selected_, pressure_, dphi_, min_area_mm2_, &floor_);  // significant ones, a cell or more
+      finder_.find(selected_, pressure_, dphi_, min_area_mm2_, &floor_, threshold);  // significant ones, a cell or more
   if (fitter_) return fit_contacts(linear);
   return image_forces_ ? image_forces_->apply(*linear_.force_law, dphi_, linear) : linear;
 }
@@ -164,6 +164,7 @@ const std::vector<Contact>& Reconstructor::report_fitted() {
                  : f.pressure_N_per_mm2;
     c.force_N = c.pressure_N_per_mm2 * c.area_mm2;
     c.x_std_mm = f.x_std_mm, c.y_std_mm = f.y_std_mm;
+    ellipse_outline({f.disc.x_mm, f.disc.y_mm}, radius_mm, radius_mm, 0, c.outline);  // the reported area's circle
     // F = P·A with A the calibration indenter's: the frame pins G = A^(1+γ) F^(−γ)/α (paper eq.
     // 2), so log F = const + log G/(−γ) + (1 + γ)/γ · log A. The fit's σ of log G; an indenter of
     // unknown size, log A's σ as shape_refiner.hpp's prior (radii 2–10 mm about the
@@ -213,6 +214,7 @@ void Reconstructor::report_shapes(const std::vector<RefinedContact>& shapes) {
     c.semi_major_mm = e.semi_major_mm(), c.semi_minor_mm = e.semi_minor_mm();
     c.orientation_deg = e.orientation_rad() * 180 / std::numbers::pi;
     c.orientation_std_deg = r.orientation_std_rad * 180 / std::numbers::pi;
+    ellipse_outline({e.x_mm, e.y_mm}, c.semi_major_mm, c.semi_minor_mm, c.orientation_deg, c.outline);
     fitted_.push_back(c);
     for (Index t = 0; t < pressure_.size(); ++t) {
       const Vector2& p = finder_.centroid_chart_mm(t);

@@ -1,5 +1,6 @@
 #include "emit/io/contacts_jsonl.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -64,11 +65,36 @@ bool written(const Field& field, const Contact& c) {
 
 /// JSON has no NaN or infinity; refuse before writing anything, so no half line is left behind.
 void check_finite(long frame, const std::vector<Contact>& contacts) {
-  for (std::size_t k = 0; k < contacts.size(); ++k)
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
     for (const Field& field : fields)
       if (!std::isfinite(contacts[k].*field.value))
         throw InvalidInput("contacts of frame " + std::to_string(frame) + ": contact " + std::to_string(k) + "'s " +
                            field.key + " is not finite");
+    const Outline& outline = contacts[k].outline;
+    for (int v = 0; v < outline.size; ++v)
+      if (!outline.vertex_mm(v).allFinite())
+        throw InvalidInput("contacts of frame " + std::to_string(frame) + ": contact " + std::to_string(k) +
+                           "'s outline_mm vertex " + std::to_string(v) + " is not finite");
+  }
+}
+
+/// The outline's vertices as [[x, y], …], each to 6 significant digits like the other numbers
+/// (std::to_chars: %.6g's digits without the locale, and a few times faster for 64 vertices).
+void write_outline(std::ostream& out, const Outline& outline) {
+  char text[40];
+  out << ", \"outline_mm\": [";
+  for (int k = 0; k < outline.size; ++k) {
+    char* end = text;
+    if (k > 0) *end++ = ',', *end++ = ' ';
+    *end++ = '[';
+    const Vector2 p = outline.vertex_mm(k);
+    end = std::to_chars(end, text + sizeof text, p.x(), std::chars_format::general, 6).ptr;
+    *end++ = ',', *end++ = ' ';
+    end = std::to_chars(end, text + sizeof text, p.y(), std::chars_format::general, 6).ptr;
+    *end++ = ']';
+    out.write(text, end - text);
+  }
+  out << ']';
 }
 
 /// snprintf's %g follows LC_NUMERIC; emit never calls setlocale, so the decimal point is '.'.
@@ -82,6 +108,7 @@ void write_contact(std::ostream& out, const Contact& contact) {
     out << text;
     separator = ", ";
   }
+  if (!contact.outline.empty()) write_outline(out, contact.outline);
   out << '}';
 }
 
@@ -118,6 +145,18 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       throw InvalidInput(where + ": \"" + field.key + "\" is not a finite number");
     contact.*field.value = value.get<double>();
+  }
+  if (const auto outline = object.find("outline_mm"); outline != object.end()) {
+    if (!outline->is_array() || outline->size() < 3 || outline->size() > static_cast<std::size_t>(Outline::capacity))
+      throw InvalidInput(where + ": \"outline_mm\" is not a list of 3 to " + std::to_string(Outline::capacity) +
+                         " vertices");
+    for (std::size_t v = 0; v < outline->size(); ++v) {
+      const nlohmann::json& vertex = (*outline)[v];
+      if (!vertex.is_array() || vertex.size() != 2 || !vertex[0].is_number() || !vertex[1].is_number() ||
+          !std::isfinite(vertex[0].get<double>()) || !std::isfinite(vertex[1].get<double>()))
+        throw InvalidInput(where + ": \"outline_mm\" vertex " + std::to_string(v) + " is not [x, y], finite numbers");
+      contact.outline.push_back({vertex[0].get<double>(), vertex[1].get<double>()});
+    }
   }
   return contact;
 }

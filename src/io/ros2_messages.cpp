@@ -61,6 +61,18 @@ constexpr std::string_view tactile_contacts_fields =
     "float64 orientation_rad         # rad, the major axis from the chart's first axis, in (-pi/2, pi/2]\n"
     "float64 area_std_m2             # m^2, 1 sigma of the area (0: not estimated)\n"
     "float64 orientation_std_rad     # rad, 1 sigma of the orientation (0: not estimated)\n"
+    "# The outline as a polygon (first and last points joined), counter-clockwise, in m in the\n"
+    "# sheet's chart: x, y on a flat sheet (z = 0). Empty: none.\n"
+    "geometry_msgs/Polygon outline\n"
+    "================================================================================\n"
+    "MSG: geometry_msgs/Polygon\n"
+    "# A specification of a polygon where the first and last points are assumed to be connected\n"
+    "Point32[] points\n"
+    "================================================================================\n"
+    "MSG: geometry_msgs/Point32\n"
+    "float32 x\n"
+    "float32 y\n"
+    "float32 z\n"
     "================================================================================\n"
     "MSG: geometry_msgs/Wrench\n"
     "Vector3 force\n"
@@ -169,22 +181,29 @@ Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
   const Vector3 normal(c.nx, c.ny, c.nz);
   std::array<char, 32> name{};  // "contact_" and up to 20 digits
   std::snprintf(name.data(), name.size(), "contact_%zu", rank);
-  return {name,
-          1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
-          normal,
-          -c.force_N * normal,
-          1e-6 * c.area_mm2,
-          1e6 * c.pressure_N_per_mm2,
-          1e6 * c.peak_pressure_N_per_mm2,
-          1e-3 * c.x_std_mm,
-          1e-3 * c.y_std_mm,
-          1e6 * c.pressure_std_N_per_mm2,
-          c.force_std_N,
-          1e-3 * c.semi_major_mm,
-          1e-3 * c.semi_minor_mm,
-          degrees_to_radians * c.orientation_deg,
-          1e-6 * c.area_std_mm2,
-          degrees_to_radians * c.orientation_std_deg};
+  Ros2Contact r{name,
+                1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
+                normal,
+                -c.force_N * normal,
+                1e-6 * c.area_mm2,
+                1e6 * c.pressure_N_per_mm2,
+                1e6 * c.peak_pressure_N_per_mm2,
+                1e-3 * c.x_std_mm,
+                1e-3 * c.y_std_mm,
+                1e6 * c.pressure_std_N_per_mm2,
+                c.force_std_N,
+                1e-3 * c.semi_major_mm,
+                1e-3 * c.semi_minor_mm,
+                degrees_to_radians * c.orientation_deg,
+                1e-6 * c.area_std_mm2,
+                degrees_to_radians * c.orientation_std_deg,
+                {},
+                static_cast<std::uint32_t>(c.outline.size)};
+  for (int k = 0; k < c.outline.size; ++k)
+    for (int axis = 0; axis < 2; ++axis)
+      r.outline_m[static_cast<std::size_t>(k)][static_cast<std::size_t>(axis)] =
+          1e-3f * c.outline.vertices_mm[static_cast<std::size_t>(k)][static_cast<std::size_t>(axis)];
+  return r;
 }
 
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
@@ -214,6 +233,12 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
          {c.area_m2, c.pressure_Pa, c.peak_pressure_Pa, c.position_std_x_m, c.position_std_y_m, c.pressure_std_Pa,
           c.force_std_N, c.semi_major_m, c.semi_minor_m, c.orientation_rad, c.area_std_m2, c.orientation_std_rad})
       cdr.put(v);
+    cdr.count(c.outline_size);  // geometry_msgs/Polygon: its Point32s
+    for (std::uint32_t k = 0; k < c.outline_size; ++k) {
+      cdr.put(c.outline_m[k][0]);
+      cdr.put(c.outline_m[k][1]);
+      cdr.put(0.0f);
+    }
   }
 }
 

@@ -32,7 +32,7 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
                  Method method, const std::string& dir) {
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
-  for (const Contact& c : contacts) outlines.push_back(contact_outline(c));
+  for (const Contact& c : contacts) outlines.push_back(contact_outline(c, reconstructor.surface()));
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,

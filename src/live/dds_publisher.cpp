@@ -58,6 +58,7 @@ struct DdsPublisher::Impl {
   std::string sensor_name, frame_id{ros2_frame_id};  // mutable: the C types hold char*
   std::vector<ContactMessage> contact_messages;
   std::vector<std::array<char, 32>> contact_names;
+  std::vector<std::array<geometry_msgs_msg_dds__Point32_, Outline::capacity>> contact_outlines;
   std::vector<float> pressure_Pa;
 
   Impl() = default;
@@ -132,6 +133,7 @@ void DdsPublisher::publish(const LiveFrame& frame) {
   if (s.contact_messages.size() < contacts.size()) {  // grows to the most contacts seen, then stays
     s.contact_messages.resize(contacts.size());
     s.contact_names.resize(contacts.size());
+    s.contact_outlines.resize(contacts.size());
   }
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Ros2Contact c = ros2_contact(contacts[i], i);
@@ -151,7 +153,14 @@ void DdsPublisher::publish(const LiveFrame& frame) {
                              c.semi_minor_m,
                              c.orientation_rad,
                              c.area_std_m2,
-                             c.orientation_std_rad};
+                             c.orientation_std_rad,
+                             {}};
+    for (std::uint32_t k = 0; k < c.outline_size; ++k)
+      s.contact_outlines[i][k] = {c.outline_m[k][0], c.outline_m[k][1], 0.0f};
+    s.contact_messages[i].outline.points =
+        borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(c.outline_size > 0 ? s.contact_outlines[i].data()
+                                                                                  : nullptr,
+                                                               c.outline_size);
   }
   emit_msgs_msg_dds__TactileContacts_ contacts_message{};
   contacts_message.header = header;

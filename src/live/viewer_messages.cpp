@@ -82,6 +82,14 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
       contact["semi_minor_mm"] = c.semi_minor_mm;
       contact["orientation_deg"] = c.orientation_deg;
     }
+    if (!c.outline.empty()) {  // its polygon in the sheet's chart, as the JSON Lines name it
+      json outline = json::array();
+      for (int k = 0; k < c.outline.size; ++k) {
+        const Vector2 p = c.outline.vertex_mm(k);
+        outline.push_back({p.x(), p.y()});
+      }
+      contact["outline_mm"] = std::move(outline);
+    }
     if (curved) {
       contact["z_mm"] = c.z_mm;
       contact["normal"] = {c.nx, c.ny, c.nz};

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
@@ -174,6 +175,15 @@ void draw_ellipse(Image& image, const FieldLayout& layout, const Circle& ellipse
 void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Circle>& outlines) {
   for (const Circle& circle : outlines) {
     if (!circle.center_mm.allFinite() || !std::isfinite(circle.radius_mm)) continue;  // nothing sensible to draw
+    if (const std::size_t n = circle.polygon_mm.size(); n >= 3) {
+      for (const auto& [half_width, colour] : {std::pair{2.0, detail::outline_shadow}, std::pair{1.0, detail::white}})
+        for (std::size_t k = 0; k < n; ++k) {
+          const Vector3& a = circle.polygon_mm[k];
+          const Vector3& b = circle.polygon_mm[(k + 1) % n];
+          detail::draw_segment(image, to_px(layout, a.x(), a.y()), to_px(layout, b.x(), b.y()), half_width, colour);
+        }
+      continue;
+    }
     if (circle.ellipse) {
       if (!std::isfinite(circle.semi_minor_mm) || !std::isfinite(circle.orientation_deg)) continue;
       draw_ellipse(image, layout, circle, 2.0, detail::outline_shadow);

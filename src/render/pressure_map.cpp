@@ -8,10 +8,11 @@
 #include "emit/mesh/flatness.hpp"
 #include "emit/render/image.hpp"
 #include "emit/render/shaded_surface.hpp"
+#include "emit/sensor/surface.hpp"
 
 namespace emit {
 
-Circle contact_outline(const Contact& c) {
+Circle contact_outline(const Contact& c, const Shape& surface) {
   Circle mark{Vector2(c.x_mm, c.y_mm), std::sqrt(c.area_mm2 / std::numbers::pi), c.z_mm};
   if (c.semi_major_mm > 0) {
     mark.ellipse = true;
@@ -19,6 +20,7 @@ Circle contact_outline(const Contact& c) {
     mark.semi_minor_mm = c.semi_minor_mm;
     mark.orientation_deg = c.orientation_deg;
   }
+  for (int k = 0; k < c.outline.size; ++k) mark.polygon_mm.push_back(surface_point_mm(surface, c.outline.vertex_mm(k)));
   return mark;
 }
 

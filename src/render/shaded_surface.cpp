@@ -420,10 +420,11 @@ double longest_edge_mm(const Mesh& mesh) {
   return longest;
 }
 
-/// A circle (or an ellipse) as drawn: its points in the surface's tangent plane at its centre, and
-/// under each the surface's nearest point, whose visibility decides the mark's.
+/// A circle (or an ellipse) as drawn: its points in the surface's tangent plane at its centre (a
+/// polygon's as given), and under each the surface's nearest point, whose visibility decides the
+/// mark's.
 struct Ring {
-  std::array<Vector3, ring_segments + 1> points, under;
+  std::vector<Vector3> points, under;  ///< closed: the last point is the first
 };
 
 /// The circles' rings (none for a circle with a non-finite centre or radius: nothing sensible to
@@ -435,6 +436,13 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
     const Vector3 centre(circle.center_mm.x(), circle.center_mm.y(), circle.z_mm);
     if (!centre.allFinite() || !std::isfinite(circle.radius_mm)) continue;
     const NearestFacet facet = facet_near(mesh, centre);
+    Ring ring;
+    double reach_mm = std::abs(circle.radius_mm);
+    if (circle.polygon_mm.size() >= 3) {  // a contact's outline: its points on the sheet, as given
+      ring.points.assign(circle.polygon_mm.begin(), circle.polygon_mm.end());
+      ring.points.push_back(circle.polygon_mm.front());
+      for (const Vector3& p : circle.polygon_mm) reach_mm = std::max(reach_mm, (p - centre).norm());
+    }
     Vector3 e1 = facet.normal.unitOrthogonal();
     double minor_mm = circle.radius_mm;
     if (circle.ellipse && std::isfinite(circle.semi_minor_mm) && std::isfinite(circle.orientation_deg)) {
@@ -447,19 +455,20 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
       minor_mm = circle.semi_minor_mm;
     }
     const Vector3 e2 = facet.normal.cross(e1);
-    Ring ring;
-    for (int k = 0; k <= ring_segments; ++k) {
-      const double angle = 2 * std::numbers::pi * k / ring_segments;
-      ring.points[k] = centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2;
-    }
-    // A ring point p is within r of the centre, which is within d of a centroid, so p's nearest
-    // surface point is within r + d of p, 2r + d of the centre, and its triangle's centroid within
-    // a longest edge more.
-    const double reach_mm = 2 * std::abs(circle.radius_mm) + facet.distance_mm + longest_mm;
+    if (ring.points.empty())
+      for (int k = 0; k <= ring_segments; ++k) {
+        const double angle = 2 * std::numbers::pi * k / ring_segments;
+        ring.points.emplace_back(centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2);
+      }
+    ring.under.resize(ring.points.size());
+    // A ring point p is within r of the centre (r: the radius, or a polygon's farthest point),
+    // which is within d of a centroid, so p's nearest surface point is within r + d of p, 2r + d
+    // of the centre, and its triangle's centroid within a longest edge more.
+    const double within_mm = 2 * reach_mm + facet.distance_mm + longest_mm;
     std::vector<Index> candidates;
     for (Index t = 0; t < mesh.triangle_count(); ++t)
-      if ((mesh.triangle_centroid_mm(t) - centre).norm() <= reach_mm) candidates.push_back(t);
-    for (int k = 0; k <= ring_segments; ++k) {
+      if ((mesh.triangle_centroid_mm(t) - centre).norm() <= within_mm) candidates.push_back(t);
+    for (std::size_t k = 0; k < ring.points.size(); ++k) {
       const Vector3& p = ring.points[k];
       Vector3 best = p;
       double best_distance = std::numeric_limits<double>::infinity();
@@ -482,7 +491,7 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
 void draw_outlines(MarkPainter& painter, const std::vector<Ring>& rings) {
   for (const Ring& ring : rings)
     for (const auto& [half_width, colour] : {std::pair{2.0, detail::outline_shadow}, std::pair{1.0, detail::white}})
-      for (int k = 0; k < ring_segments; ++k)
+      for (std::size_t k = 0; k + 1 < ring.points.size(); ++k)
         painter.segment(ring.points[k], ring.points[k + 1], ring.under[k], ring.under[k + 1], half_width, colour);
 }
 

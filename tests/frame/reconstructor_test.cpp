@@ -3,6 +3,8 @@
 #include "emit/frame/reconstructor.hpp"
 #include "emit/model/method.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -102,6 +104,26 @@ TEST(Reconstruction, ProcessAllocatesNothing) {
     const auto& contacts = reconstructor.process(frame);
     EXPECT_EQ(counter.count(), 0);
     EXPECT_GE(contacts.size(), 1u);
+    if (calibration.force_law) continue;
+    // Each region's outline (frame/contact_outline.hpp): the image's level line at the threshold
+    // lies in the band of triangles at the region's boundary, so its area is the region's (the
+    // contact's, eq. 8's without a force law) within its perimeter times the longest mesh edge.
+    double longest_mm = 0;
+    const Mesh& mesh = s.model.mesh;
+    for (Index t = 0; t < mesh.triangle_count(); ++t)
+      for (int k = 0; k < 3; ++k)
+        longest_mm = std::max(longest_mm, (mesh.nodes_mm.row(mesh.triangles(t, k)) -
+                                           mesh.nodes_mm.row(mesh.triangles(t, (k + 1) % 3)))
+                                              .norm());
+    for (const Contact& c : contacts) {
+      ASSERT_GE(c.outline.size, 3);
+      double perimeter_mm = 0;
+      for (int k = 0; k < c.outline.size; ++k)
+        perimeter_mm += (c.outline.vertex_mm((k + 1) % c.outline.size) - c.outline.vertex_mm(k)).norm();
+      std::printf("paper region: %.1f mm², outline %.1f mm² (%d vertices, perimeter %.1f mm, edges ≤ %.2f mm)\n",
+                  c.area_mm2, c.outline.area_mm2(), c.outline.size, perimeter_mm, longest_mm);
+      EXPECT_NEAR(c.outline.area_mm2(), c.area_mm2, perimeter_mm * longest_mm);
+    }
   }
 }
 
@@ -122,6 +144,15 @@ TEST(Reconstruction, ProcessOnTheDomeAllocatesNothingAndPlacesContactsOnTheSurfa
   const Vector3 radius(contacts[0].x_mm, contacts[0].y_mm, contacts[0].z_mm + 15);
   EXPECT_NEAR(radius.norm(), 25, 1e-9);
   EXPECT_NEAR((radius / 25 - Vector3(contacts[0].nx, contacts[0].ny, contacts[0].nz)).norm(), 0, 1e-12);
+  // Its outline in the chart, (x, y) seen from +z: counter-clockwise, within the rim, about the
+  // contact's point.
+  const Outline& outline = contacts[0].outline;
+  ASSERT_GE(outline.size, 3);
+  EXPECT_GT(outline.area_mm2(), 0);
+  bool within = true;
+  for (int k = 0; k < outline.size; ++k)
+    within = within && outline.vertex_mm(k).norm() <= sensor.shape.radius_mm + 1e-4;
+  EXPECT_TRUE(within);
 }
 
 // A batch split across threads gives each frame the contacts one Reconstructor gives it.

@@ -60,6 +60,31 @@ TEST(ContactsJsonl, WritesAndReadsACurvedSheetsPointAndNormal) {
   EXPECT_EQ(flat[0].z_mm, 0.0);
 }
 
+// The outline's polygon: written last as [[x, y], …] to 6 digits, read back to within them (its
+// vertices are floats, 7 digits), in order; a line without it reads back without one.
+TEST(ContactsJsonl, OutlineRoundTrips) {
+  Contact c = linear_contact();
+  c.outline.push_back({21.5, 30.25});
+  c.outline.push_back({25.125, 37.25});
+  c.outline.push_back({-1.5, 40});
+  std::ostringstream out;
+  write_contacts_line(out, 9, {c});
+  EXPECT_NE(out.str().find(R"("force_N": 9.8125, "outline_mm": [[21.5, 30.25], [25.125, 37.25], [-1.5, 40]]})"),
+            std::string::npos)
+      << out.str();
+  Contact polygon = linear_contact();
+  ellipse_outline({21.5, 37.25}, 12.345678, 3.21, 33.3, polygon.outline);
+  std::ostringstream line;
+  write_contacts_line(line, 10, {polygon, linear_contact()});
+  const auto read = parse_contacts_line(line.str());
+  ASSERT_EQ(read.size(), 2u);
+  ASSERT_EQ(read[0].outline.size, polygon.outline.size);
+  for (int k = 0; k < polygon.outline.size; ++k)
+    EXPECT_LE((read[0].outline.vertex_mm(k) - polygon.outline.vertex_mm(k)).norm(), 1e-4) << k;  // 6 digits of ~30
+  EXPECT_NEAR(read[0].outline.area_mm2(), polygon.outline.area_mm2(), 1e-3);
+  EXPECT_TRUE(read[1].outline.empty());
+}
+
 // A non-finite contact field is tests/frame/contacts_test.cpp's; a non-finite misfit is refused too.
 TEST(ContactsJsonl, RefusesANonFiniteMisfit) {
   std::ostringstream out;
@@ -93,20 +118,26 @@ TEST_P(ContactsJsonlBad, SaysWhatIsWrong) {
 
 INSTANTIATE_TEST_SUITE_P(
     Errors, ContactsJsonlBad,
-    ::testing::Values(std::pair{"[1]", "contacts line: not a JSON object"},
-                      std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
-                      std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
-                      std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
-                      std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
-                      std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})",
-                                "contacts line: contact 0: missing \"y_mm\""},
-                      std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
-                                "contacts line: contact 0: \"x_mm\" is not a finite number"},
-                      // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
-                      std::pair{R"({"frame": 1e999, "contacts": []})",
-                                "contacts line: a number out of range ([json.exception.out_of_range.406] number "
-                                "overflow parsing '1e999')"}));
+    ::testing::Values(
+        std::pair{"[1]", "contacts line: not a JSON object"},
+        std::pair{R"({"contacts": []})", "contacts line: missing \"frame\""},
+        std::pair{R"({"frame": 1.5, "contacts": []})", "contacts line: \"frame\" is not an integer"},
+        std::pair{R"({"frame": 1})", "contacts line: missing \"contacts\""},
+        std::pair{R"({"frame": 1, "contacts": {}})", "contacts line: \"contacts\" is not an array"},
+        std::pair{R"({"frame": 1, "contacts": [3]})", "contacts line: contact 0 is not an object"},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1}]})", "contacts line: contact 0: missing \"y_mm\""},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": "1"}]})",
+                  "contacts line: contact 0: \"x_mm\" is not a finite number"},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0]]}]})",
+            "contacts line: contact 0: \"outline_mm\" is not a list of 3 to 64 vertices"},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0], [1]]}]})",
+            "contacts line: contact 0: \"outline_mm\" vertex 2 is not [x, y], finite numbers"},
+        // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
+        std::pair{R"({"frame": 1e999, "contacts": []})",
+                  "contacts line: a number out of range ([json.exception.out_of_range.406] number "
+                  "overflow parsing '1e999')"}));
 
 }  // namespace
 }  // namespace emit

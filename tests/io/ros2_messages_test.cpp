@@ -64,12 +64,27 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
   // After peak pressure (160) and the four 1σ (168 to 192): the outline's ellipse, SI and radians.
   c.semi_major_mm = 6, c.semi_minor_mm = 1.5, c.orientation_deg = 45, c.area_std_mm2 = 2, c.orientation_std_deg = 9;
   encode_tactile_contacts(out, {}, "", 9, {c});
-  ASSERT_EQ(out.size(), 4u + 240u);                                        // the last double, orientation_std, at 232
+  ASSERT_EQ(out.size(), 4u + 244u);  // the last double, orientation_std, at 232; the outline's count at 240
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 200), 6e-3);                   // semi_major [m]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 208), 1.5e-3);                 // semi_minor [m]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 216), std::numbers::pi / 4);   // orientation [rad]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 224), 2e-6);                   // area_std [m²]
   EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 232), std::numbers::pi / 20);  // orientation_std [rad]
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 240), 0u);                     // no outline: no points
+  // The outline: a geometry_msgs/Polygon, its count then each Point32's three float32 [m], z = 0.
+  c.outline.push_back({10, 30});
+  c.outline.push_back({14, 30});
+  c.outline.push_back({12, 38});
+  encode_tactile_contacts(out, {}, "", 9, {c});
+  ASSERT_EQ(out.size(), 4u + 244u + 36u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 240), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(read_at<float>(out, 4 + 244 + 12 * k), 1e-3f * c.outline.vertices_mm[k][0]);
+    EXPECT_EQ(read_at<float>(out, 4 + 248 + 12 * k), 1e-3f * c.outline.vertices_mm[k][1]);
+    EXPECT_EQ(read_at<float>(out, 4 + 252 + 12 * k), 0.0f);
+  }
+  EXPECT_NE(tactile_contacts_message().definition.find("geometry_msgs/Polygon outline\n"), std::string::npos);
+  EXPECT_NE(tactile_contacts_message().definition.find("MSG: geometry_msgs/Point32\nfloat32 x\n"), std::string::npos);
   EXPECT_NE(tactile_contacts_message().definition.find("float64 orientation_rad "), std::string::npos);
   // Every definition names the types it uses once each, as ROS 2 bags carry them.
   for (const Ros2MessageType* type :

@@ -90,6 +90,7 @@ TEST(ViewerMessages, CurvedFrameContactsCarryHeightAndNormal) {
 TEST(ViewerMessages, AContactsOutlineIsItsEllipse) {
   std::vector<Contact> contacts(2);
   contacts[0].semi_major_mm = 7.5, contacts[0].semi_minor_mm = 1.25, contacts[0].orientation_deg = -30;
+  ellipse_outline({20, 30}, 7.5, 1.25, -30, contacts[0].outline);
   const Vector pressure = Vector::Zero(2);
   LiveFrame frame;
   frame.contacts = &contacts;
@@ -101,6 +102,13 @@ TEST(ViewerMessages, AContactsOutlineIsItsEllipse) {
   EXPECT_EQ(listed[0]["semi_major_mm"], 7.5);
   EXPECT_EQ(listed[0]["semi_minor_mm"], 1.25);
   EXPECT_EQ(listed[0]["orientation_deg"], -30.0);
+  // And its polygon, [[x, y], …] as in the JSON Lines.
+  ASSERT_EQ(listed[0]["outline_mm"].size(), static_cast<std::size_t>(contacts[0].outline.size));
+  for (int k = 0; k < contacts[0].outline.size; ++k) {
+    EXPECT_EQ(listed[0]["outline_mm"][k][0].get<double>(), contacts[0].outline.vertex_mm(k).x());
+    EXPECT_EQ(listed[0]["outline_mm"][k][1].get<double>(), contacts[0].outline.vertex_mm(k).y());
+  }
+  EXPECT_FALSE(listed[1].contains("outline_mm"));
   EXPECT_FALSE(listed[1].contains("semi_major_mm"));
   EXPECT_EQ(listed[1].size(), 5u);
 }

@@ -53,6 +53,14 @@ function compareContact(c, j, what) {
     ["orientation_std_deg", c.orientation_std_rad, Math.PI / 180]];
   for (const [key, value, scale] of pairs)
     check(close(value, scale * (j[key] ?? 0), 1e-5), `${what} ${key}: ${value} against ${scale * (j[key] ?? 0)}`);
+  // The outline: a geometry_msgs/Polygon of float32 points [m], z = 0, as outline_mm's vertices.
+  const outline = j.outline_mm ?? [];
+  check(c.outline.points.length === outline.length,
+        `${what} outline: ${c.outline.points.length} points against ${outline.length}`);
+  c.outline.points.forEach((p, k) => {
+    check(close(p.x, 1e-3 * outline[k][0], 1e-5) && close(p.y, 1e-3 * outline[k][1], 1e-5) && p.z === 0,
+          `${what} outline point ${k}: ${p.x}, ${p.y} against ${outline[k]}`);
+  });
 }
 
 /** The messages of each topic, decoded from the schemas the file carries. */
@@ -156,6 +164,7 @@ const offDeg = ((bar.orientation_rad * 180 / Math.PI - 30) % 180 + 270) % 180 - 
 check(bar.semi_major_m >= 2 * bar.semi_minor_m && bar.semi_minor_m > 0 && Math.abs(offDeg) <= 10,
       `the bar's ellipse: ${bar.semi_major_m} by ${bar.semi_minor_m} m, ${offDeg} degrees off`);
 check(bar.area_std_m2 > 0 && bar.orientation_std_rad > 0, "the bar's shape has its 1 sigma");
+check(bar.outline.points.length >= 3, "the bar's contact has its outline's polygon");
 console.log(`mcap: the bar's contact ${(1e3 * bar.semi_major_m).toFixed(2)} x ${(1e3 * bar.semi_minor_m).toFixed(2)} mm ` +
             `at ${(bar.orientation_rad * 180 / Math.PI).toFixed(1)} deg (area ${(1e6 * bar.area).toFixed(1)} mm^2)`);
 

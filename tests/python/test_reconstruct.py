@@ -84,6 +84,12 @@ def test_python_gives_the_clis_contacts(cli, paper, reference, frames, tmp_path)
         for theirs, contact in zip(line["contacts"], mine):
             fields = contact.as_dict()
             assert {"x_mm", "y_mm", "force_N"} <= theirs.keys()
+            # The outline's polygon: a (K, 2) array, counter-clockwise, the CLI's vertices.
+            outline = theirs.pop("outline_mm")
+            assert contact.outline_mm.shape == (len(outline), 2) and len(outline) >= 3
+            assert contact.outline_mm == pytest.approx(np.array(outline), rel=1e-5, abs=1e-12)
+            x, y = contact.outline_mm.T
+            assert np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)) > 0
             for key, value in theirs.items():
                 # The CLI writes 6 significant digits (io/contacts_jsonl).
                 assert fields[key] == pytest.approx(value, rel=1e-5, abs=1e-12), key

@@ -141,6 +141,32 @@ TEST(PressureMap, AContactsMarkIsItsOutlinesEllipse) {
   EXPECT_NEAR(farthest, 2.0, pixel_mm);
 }
 
+// A contact with an outline's polygon is marked by the polygon: a square of side 6 mm drawn as
+// its four sides: its white pixels reach the corners (not the ellipse's 3 mm) and lie on the
+// sides, within a pixel.
+TEST(PressureMap, AContactsMarkIsItsOutlinesPolygon) {
+  const Mesh mesh = test::strip_mesh(10, 10, 10, 10);
+  Contact square;
+  square.x_mm = 5, square.y_mm = 5, square.area_mm2 = 36, square.semi_major_mm = square.semi_minor_mm = 3;
+  for (const Vector2& p : {Vector2(2, 2), Vector2(8, 2), Vector2(8, 8), Vector2(2, 8)}) square.outline.push_back(p);
+  const Circle mark = contact_outline(square);
+  ASSERT_EQ(mark.polygon_mm.size(), 4u);
+  EXPECT_EQ(mark.polygon_mm[1], Vector3(8, 2, 0));  // a flat sheet's chart is its plane
+  FieldLayout layout;
+  const Image image = render_field(mesh, mesh.nodes_mm.col(0), {mark}, {}, &layout);
+  const Vector2 centre(5, 5);
+  const std::vector<Vector2> white = white_points(image, layout, centre, 4.6);
+  ASSERT_GT(white.size(), 200u);
+  const double pixel_mm = std::sqrt(2.0) / layout.scale_px_per_mm;
+  double farthest = 0, off_the_sides = 0;
+  for (const Vector2& p : white) {
+    farthest = std::max(farthest, (p - centre).norm());
+    off_the_sides = std::max(off_the_sides, std::abs((p - centre).cwiseAbs().maxCoeff() - 3));
+  }
+  EXPECT_NEAR(farthest, 3 * std::sqrt(2.0), pixel_mm);  // the corners, not the ellipse's 3 mm
+  EXPECT_LT(off_the_sides, pixel_mm);
+}
+
 // mesh/flatness.hpp: heights of round-off (1e-9 of the 10 mm extent) are flat; a micrometre is not.
 TEST(PressureMap, OnlyAMeshOffThePlaneIsCurved) {
   Mesh mesh = test::strip_mesh(10, 10, 2, 2);

@@ -59,30 +59,36 @@ dds_entity_t reader(dds_entity_t participant, const std::string& topic, const dd
   return r;
 }
 
-/// A contact's numbers as the message carries them, in the order of json_keys below.
+/// A contact's numbers as the message carries them, in the order of json_keys below, then its
+/// outline's points' x and y [m] (a polygon's Point32s; z 0 on these flat sheets).
 constexpr int field_count = 19;
-using Fields = std::array<double, field_count>;
+using Fields = std::vector<double>;
 
 Fields fields_of(const emit_msgs_msg_dds__TactileContact_& c) {
-  return {c.position.x,
-          c.position.y,
-          c.position.z,
-          c.normal.x,
-          c.normal.y,
-          c.normal.z,
-          c.area,
-          c.pressure,
-          c.peak_pressure,
-          -c.wrench.force.z,
-          c.position_std_x,
-          c.position_std_y,
-          c.pressure_std,
-          c.force_std,
-          c.semi_major_m,
-          c.semi_minor_m,
-          c.orientation_rad,
-          c.area_std_m2,
-          c.orientation_std_rad};
+  Fields fields = {c.position.x,
+                   c.position.y,
+                   c.position.z,
+                   c.normal.x,
+                   c.normal.y,
+                   c.normal.z,
+                   c.area,
+                   c.pressure,
+                   c.peak_pressure,
+                   -c.wrench.force.z,
+                   c.position_std_x,
+                   c.position_std_y,
+                   c.pressure_std,
+                   c.force_std,
+                   c.semi_major_m,
+                   c.semi_minor_m,
+                   c.orientation_rad,
+                   c.area_std_m2,
+                   c.orientation_std_rad};
+  for (std::uint32_t k = 0; k < c.outline.points._length; ++k) {
+    fields.push_back(c.outline.points._buffer[k].x);
+    fields.push_back(c.outline.points._buffer[k].y);
+  }
+  return fields;
 }
 
 /// The same from the JSON Lines (src/io/contacts_jsonl.cpp; an absent key is 0, the normal's z 1),
@@ -113,7 +119,8 @@ constexpr JsonKey json_keys[field_count] = {
     {"orientation_std_deg", std::numbers::pi / 180, 0},
 };
 
-/// JSON Lines carry 6 significant digits (%.6g): within 5e-6 relative of the double sent.
+/// JSON Lines carry 6 significant digits (%.6g): within 5e-6 relative of the double sent (and
+/// the outline's float32 points 6e-8 of theirs).
 bool agree(double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-15; }
 
 /// Every frame's contacts in the JSON Lines file, by frame number.
@@ -124,9 +131,14 @@ std::map<std::uint64_t, std::vector<Fields>> read_json_lines(const std::string& 
     const nlohmann::json j = nlohmann::json::parse(line);
     std::vector<Fields>& contacts = frames[j.at("frame").get<std::uint64_t>()];
     for (const nlohmann::json& c : j.at("contacts")) {
-      Fields f{};
+      Fields f(field_count);
       for (int k = 0; k < field_count; ++k)
         f[static_cast<std::size_t>(k)] = json_keys[k].scale * c.value(json_keys[k].key, json_keys[k].absent);
+      if (c.contains("outline_mm"))
+        for (const nlohmann::json& vertex : c.at("outline_mm")) {
+          f.push_back(1e-3 * vertex.at(0).get<double>());
+          f.push_back(1e-3 * vertex.at(1).get<double>());
+        }
       contacts.push_back(f);
     }
   }
@@ -195,7 +207,7 @@ int main(int argc, char** argv) {
   long elongated = 0;
   std::vector<double> latency_ms;
   std::string problem;
-  long touched = 0;
+  long touched = 0, outlined = 0;
   int status = -1;
   bool exited = false;
   auto quiet_since = std::chrono::steady_clock::now();
@@ -227,6 +239,18 @@ int main(int argc, char** argv) {
         const bool found = m->contacts._length >= 1 && std::hypot(m->contacts._buffer[0].position.x - x_m,
                                                                   m->contacts._buffer[0].position.y - y_m) < 8.05e-3;
         if (!found && problem.empty()) problem = "the press not found on frame " + std::to_string(m->frame);
+        // Its outline: a counter-clockwise polygon (positive area) about the press.
+        if (found) {
+          const auto& points = m->contacts._buffer[0].outline.points;
+          double twice_area = 0;
+          for (std::uint32_t k = 0, j = points._length - 1; k < points._length; j = k++)
+            twice_area +=
+                double{points._buffer[j].x} * points._buffer[k].y - double{points._buffer[k].x} * points._buffer[j].y;
+          if (points._length >= 3 && twice_area > 0) ++outlined;
+          else if (problem.empty())
+            problem = "frame " + std::to_string(m->frame) + "'s contact has no counter-clockwise outline (" +
+                      std::to_string(points._length) + " points)";
+        }
         if (found && std::isfinite(bar_deg)) {
           // A bar's outline is far longer than wide (24 × 4 mm: its second moments' ellipse is 6
           // times); twice, along the bar within the 10°, is what the frame must show.
@@ -285,15 +309,26 @@ int main(int argc, char** argv) {
       if (problem.empty()) problem = "frame " + std::to_string(frame) + "'s contacts are not the JSON Lines'";
       continue;
     }
-    for (std::size_t c = 0; c < contacts_received.size(); ++c)
-      for (int k = 0; k < field_count; ++k) {
+    for (std::size_t c = 0; c < contacts_received.size(); ++c) {
+      if (contacts_received[c].size() != line->second[c].size()) {
+        if (problem.empty())
+          problem = "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s outline has " +
+                    std::to_string((contacts_received[c].size() - field_count) / 2) + " points, the JSON Lines' " +
+                    std::to_string((line->second[c].size() - field_count) / 2);
+        continue;
+      }
+      for (std::size_t k = 0; k < contacts_received[c].size(); ++k) {
         const double a = contacts_received[c][static_cast<std::size_t>(k)],
                      b = line->second[c][static_cast<std::size_t>(k)];
         if (!agree(a, b) && problem.empty())
-          problem = "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s " + json_keys[k].key +
-                    ": " + std::to_string(a) + " (SI) against the JSON Lines' " + std::to_string(b);
+          problem =
+              "frame " + std::to_string(frame) + " contact " + std::to_string(c) + "'s " +
+              (k < std::size_t{field_count} ? std::string(json_keys[k].key)
+                                            : "outline_mm value " + std::to_string(k - std::size_t{field_count})) +
+              ": " + std::to_string(a) + " (SI) against the JSON Lines' " + std::to_string(b);
         ++compared;
       }
+    }
   }
 
   std::vector<double> sorted = latency_ms;
@@ -305,9 +340,10 @@ int main(int argc, char** argv) {
   for (std::size_t i = 1; i < numbers.size(); ++i) out_of_order += numbers[i] != numbers[i - 1] + 1;
   std::printf(
       "dds_check: %zu of %ld frames' contacts received, %ld out of order or missing between, first %llu; "
-      "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2; %ld contact fields as in the JSON Lines%s\n",
+      "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2; %ld contact fields (outlines' points "
+      "included) as in the JSON Lines; %ld touched frames' contact outlined%s\n",
       numbers.size(), frames, out_of_order, numbers.empty() ? 0ULL : static_cast<unsigned long long>(numbers[0]),
-      at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2, compared,
+      at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2, compared, outlined,
       std::isfinite(bar_deg) ? (", " + std::to_string(elongated) + " touched frames' contact the bar's ellipse").c_str()
                              : "");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return fail("emit live exited with " + std::to_string(status));
@@ -317,6 +353,7 @@ int main(int argc, char** argv) {
   if (!problem.empty()) return fail(problem);
   if (touched == 0) return fail("no touched frame");
   if (compared == 0) return fail("no contact to compare with the JSON Lines");
+  if (outlined != touched) return fail("not every touched frame's contact outlined");
   if (std::isfinite(bar_deg) && elongated != touched) return fail("not every touched frame's contact the bar's");
   if (std::abs(area_m2 - 3.6e-3) > 1e-9) return fail("the mesh's area");
   return 0;

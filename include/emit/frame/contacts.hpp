@@ -2,15 +2,18 @@
 /// \file contacts.hpp
 /// Contacts from a reconstructed image (paper §2.4): the connected regions of selected (above
 /// threshold) elements, two elements being connected when they share an edge. Each contact gets
-/// its centroid, area, mean and peak pressure and force = Σ P_k·A_k.
+/// its centroid, area, mean and peak pressure and force = Σ P_k·A_k, the ellipse of its second
+/// moments and its outline (contact_outline.hpp).
 ///
 /// Offline/online split: the constructor precomputes the mesh's element adjacency, areas and
 /// centroids; find() runs per frame and allocates nothing (all scratch and the output buffer are
 /// sized for the worst case at construction).
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "emit/core/types.hpp"
+#include "emit/frame/contact_outline.hpp"
 #include "emit/mesh/mesh.hpp"
 #include "emit/sensor/sensor.hpp"
 
@@ -41,6 +44,11 @@ struct Contact {
   /// 1σ of the area and the angle (contact fitting); 0 where not estimated.
   double area_std_mm2 = 0, orientation_std_deg = 0;
   int element_count = 0;
+  /// The outline as a polygon in the sheet's chart [mm], counter-clockwise (contact_outline.hpp):
+  /// a linear method's region's level line at its threshold, contact fitting's disc's circle,
+  /// the `shapes` method's ellipse. Empty where there is none (a contact read from a file
+  /// without it).
+  Outline outline;
 };
 
 /// Sets the contact's semi-axes and orientation to the uniform ellipse's of this covariance of
@@ -67,10 +75,15 @@ class ContactFinder {
   ///                  centroid when all weights of a contact are 0
   /// \param floor   null, or #F values: a contact is kept only if the weight of one of its
   ///                 elements exceeds the floor there (the image's significance: reconstructor.hpp)
+  /// \param level  the weight's value that selected the elements (a linear method's threshold on
+  ///                δφ): each contact's outline is the weight's level line there around its region
+  ///                (RegionOutliner); NaN: the line half-way between its elements and the others.
+  ///                A region too small for a line gets the polygon of its ellipse.
   /// \return the contacts, largest force first; valid until the next call. Contacts smaller than
   ///         min_area_mm2 are dropped.
   const std::vector<Contact>& find(const std::vector<std::uint8_t>& selected, const Vector& pressure,
-                                   const Vector& weight, double min_area_mm2 = 0.0, const Vector* floor = nullptr);
+                                   const Vector& weight, double min_area_mm2 = 0.0, const Vector* floor = nullptr,
+                                   double level = std::numeric_limits<double>::quiet_NaN());
 
   /// The image's peaks: elements whose value is at least min_value and no smaller than any edge
   /// neighbour's, strongest first, each at least min_separation_mm from every stronger one kept.
@@ -93,7 +106,9 @@ class ContactFinder {
   std::vector<Vector2> charts_mm_;     ///< the centroids' chart points
   std::vector<std::uint8_t> pending_;  ///< scratch: selected elements not yet in a contact
   std::vector<int> stack_;             ///< scratch
-  std::vector<Contact> contacts_;      ///< output, capacity #F
+  std::vector<int> members_;           ///< scratch: the elements of the contact grown last
+  RegionOutliner outliner_;
+  std::vector<Contact> contacts_;  ///< output, capacity #F
   std::vector<int> peak_elements_;
   std::vector<Vector2> peaks_;
 };

@@ -8,7 +8,9 @@
 /// The uncertainties (1σ) and the frame's fit misfit (RMS of predicted − measured, to compare with
 /// the ADC's noise) come with contact fitting; a confident contact has a small σ in a frame whose
 /// misfit is near the noise. z and the unit normal come for contacts off the plane z = 0 (a
-/// curved sheet); a flat sheet's lines are as before (z = 0, normal +z).
+/// curved sheet); a flat sheet's lines are as before (z = 0, normal +z). Then the outline's
+/// ellipse (semi_major_mm, …) and its polygon "outline_mm": [[x, y], …] (3 to 64 vertices in the
+/// sheet's chart, counter-clockwise, frame/contact_outline.hpp), each when the contact has one.
 #include <ostream>
 #include <string>
 #include <vector>

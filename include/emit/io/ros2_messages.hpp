@@ -10,7 +10,9 @@
 /// newtons, pascals. emit's contacts are in mm and N/mm², so positions are × 1e-3, areas × 1e-6
 /// and pressures × 1e6 here; angles are in radians. A contact's outline is the ellipse of its second
 /// moments (semi_major_m, semi_minor_m, orientation_rad, with the 1σ area_std_m2 and
-/// orientation_std_rad: JSON Lines' semi_major_mm, … in SI units), all 0 when it has none.
+/// orientation_std_rad: JSON Lines' semi_major_mm, … in SI units), all 0 when it has none; and
+/// its polygon, a geometry_msgs/Polygon `outline` (JSON Lines' outline_mm in m, float32 points
+/// (x, y, 0) in the sheet's chart), empty when it has none.
 ///
 ///   emit_msgs/msg/TactileState     a raw frame: sensors[0] = {sensor name, N·N volts ground-major}
 ///   emit_msgs/msg/TactileContacts  a frame's contacts, strongest first (none: an empty list)
@@ -67,6 +69,10 @@ struct Ros2Contact {
   /// The outline's ellipse (frame/contacts.hpp; all 0 when it has none) and the 1σ of its area and
   /// angle; the angle from the chart's first axis, in (−π/2, π/2].
   double semi_major_m, semi_minor_m, orientation_rad, area_std_m2, orientation_std_rad;
+  /// The outline's polygon [m] in the sheet's chart (frame/contact_outline.hpp), its first
+  /// outline_size points; a geometry_msgs/Polygon's Point32s with z = 0.
+  std::array<std::array<float, 2>, Outline::capacity> outline_m;
+  std::uint32_t outline_size;
 };
 Ros2Contact ros2_contact(const Contact& contact, std::size_t rank);
 

@@ -16,10 +16,12 @@
 ///    "frames_per_s", "latency_ms", "max_pressure_N_per_mm2",
 ///    "contacts": [{"x_mm", "y_mm", "area_mm2", "pressure_N_per_mm2", "force_N"}]}
 /// with, for a contact with an outline, its ellipse: "semi_major_mm", "semi_minor_mm",
-/// "orientation_deg" (as in the JSON Lines: frame/contacts.hpp; the viewer draws it, else the
-/// circle of the area), and, on a curved sheet, each contact's "z_mm" and unit outward "normal":
-/// [nx, ny, nz] too (the sheet's point above (x, y) and its normal there: frame/contacts.hpp).
-/// padded with spaces to a multiple of 4 bytes, then one float32 per triangle: the pressure [N/mm²].
+/// "orientation_deg", and its polygon "outline_mm": [[x, y], …] in the sheet's chart (as in the
+/// JSON Lines: frame/contacts.hpp; the flat view draws the polygon, else the ellipse, else the
+/// circle of the area; the 3D view the ellipse's ring), and, on a curved sheet, each contact's
+/// "z_mm" and unit outward "normal": [nx, ny, nz] too (the sheet's point above (x, y) and its
+/// normal there: frame/contacts.hpp). Padded with spaces to a multiple of 4 bytes, then one
+/// float32 per triangle: the pressure [N/mm²].
 /// The client answers each frame with the text "ack" (the next frame is sent only then), and may
 /// send the command "recapture" (the no-contact reference).
 #include <cstdint>

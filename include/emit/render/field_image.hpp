@@ -15,7 +15,7 @@ namespace emit {
 
 /// An outlined circle (a contact, a press): its centre (x, y) and, on a curved sheet, the centre's
 /// height z (render_field ignores it; render_shaded_surface draws the circle in the sheet's
-/// tangent plane there). Or an outlined ellipse (a contact's outline, frame/contacts.hpp).
+/// tangent plane there). Or an outlined ellipse or polygon (a contact's outline, frame/contacts.hpp).
 struct Circle {
   Vector2 center_mm{0, 0};
   double radius_mm = 0;  ///< a circle's radius; an ellipse's semi-major axis
@@ -25,6 +25,10 @@ struct Circle {
   /// tangent plane along that direction's projection).
   bool ellipse = false;
   double semi_minor_mm = 0, orientation_deg = 0;
+  /// Drawn as this closed polygon instead when it has 3 points or more (a contact's outline,
+  /// frame/contact_outline.hpp, placed on the sheet): render_field draws its (x, y),
+  /// render_shaded_surface its points as they are.
+  std::vector<Vector3> polygon_mm{};
 };
 
 struct FieldImageOptions {

@@ -16,9 +16,10 @@ namespace emit {
 
 inline constexpr int shaded_pressure_map_width_px = 1024;  ///< two panels of 341 px beside the colour bar
 
-/// A contact's mark: the ellipse of its outline when it has one (semi_major_mm > 0:
-/// frame/contacts.hpp), else the circle of its area.
-Circle contact_outline(const Contact& contact);
+/// A contact's mark: its outline's polygon when it has one (frame/contact_outline.hpp; its chart
+/// points placed on `surface`, the sheet's shape), else the ellipse of its second moments when it
+/// has one (semi_major_mm > 0: frame/contacts.hpp), else the circle of its area.
+Circle contact_outline(const Contact& contact, const Shape& surface = {});
 
 /// A field on the sheet as a picture: render_field for a flat sheet, render_shaded_surface (at
 /// least shaded_pressure_map_width_px wide) for a curved one. \param nodal_values  #V values.
