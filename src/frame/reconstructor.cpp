@@ -215,6 +215,12 @@ void Reconstructor::report_shapes(const std::vector<RefinedContact>& shapes) {
     c.orientation_deg = e.orientation_rad() * 180 / std::numbers::pi;
     c.orientation_std_deg = r.orientation_std_rad * 180 / std::numbers::pi;
     ellipse_outline({e.x_mm, e.y_mm}, c.semi_major_mm, c.semi_minor_mm, c.orientation_deg, c.outline);
+    if (is_curved(model_.surface))  // the ellipse lies in the tangent plane: its vertices as chart points
+      for (int k = 0; k < c.outline.size; ++k) {
+        const Vector2 centre(e.x_mm, e.y_mm);
+        const Vector2 v = shapes_->integrator().chart_point(centre, c.outline.vertex_mm(k) - centre);
+        c.outline.vertices_mm[static_cast<std::size_t>(k)] = {static_cast<float>(v.x()), static_cast<float>(v.y())};
+      }
     fitted_.push_back(c);
     for (Index t = 0; t < pressure_.size(); ++t) {
       const Vector2& p = finder_.centroid_chart_mm(t);

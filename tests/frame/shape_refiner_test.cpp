@@ -3,6 +3,7 @@
 // finer, different mesh; ADC and noise on).
 #include "emit/frame/shape_refiner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -236,6 +237,47 @@ TEST(ShapeRefiner, MakesABarOneRegionWhereItWasSplit) {
   ASSERT_EQ(discs.size(), 2u) << "the case is the disc fit's two discs on one bar";
   ASSERT_EQ(r.size(), 1u);                                                       // the bar is one region
   EXPECT_NEAR(r[0].ellipse.orientation_rad() * 180 / std::numbers::pi, 30, 10);  // the target
+}
+
+// Four round fingers (r 5 mm, 20 mm apart, the benchmark's frame) stay four round contacts where
+// the disc fit put them. With every contact's elongation free, the elongations took up the model's
+// error: they came back as a pinwheel of sticks 12–16 mm long (a/b 6–10), each centre moved 2–4 mm
+// along its stick. a/b < 1.5 as for single round presses above; 0.5 mm beyond the disc's own
+// error: the refit does not move a round press (single presses: ~0.1 mm).
+TEST(ShapeRefiner, KeepsFourRoundFingersRoundAndInPlace) {
+  ShapeBench& s = bench();
+  Twin twin{s.sensor, [] {
+              TwinOptions o;
+              o.mesh_seed = 3;
+              return o;
+            }()};
+  const std::vector<Press> presses{{18, 18, 5, 8}, {38, 18, 5, 10}, {18, 38, 5, 12}, {38, 38, 5, 9}};
+  const Vector dV = frame_difference(s.measurements, twin.frame(presses), twin.frame({}));
+  ContactFitter fitter(s.fit);
+  std::vector<Disc> seeds;
+  for (const Press& p : presses) seeds.push_back({p.x_mm + 1, p.y_mm - 1, 0, 0});
+  const FitResult& fit = fitter.fit(dV, seeds);
+  std::vector<Disc> discs;
+  for (const FittedContact& f : fit.contacts) discs.push_back(f.disc);
+  ASSERT_EQ(discs.size(), 4u) << "the case is the disc fit's four contacts";
+  const auto nearest_press_mm = [&](double x, double y) {
+    double d = 1e9;
+    for (const Press& p : presses) d = std::min(d, std::hypot(x - p.x_mm, y - p.y_mm));
+    return d;
+  };
+  double worst_disc_mm = 0;
+  for (const Disc& d : discs) worst_disc_mm = std::max(worst_disc_mm, nearest_press_mm(d.x_mm, d.y_mm));
+  ShapeRefiner refiner(s.fit);
+  const std::vector<RefinedContact>& r = refiner.refine(dV, discs, {5.0, ShapeOptions{}.log_radius_std});
+  ASSERT_EQ(r.size(), 4u);
+  for (const RefinedContact& c : r) {
+    const double error = nearest_press_mm(c.ellipse.x_mm, c.ellipse.y_mm);
+    std::printf("finger: %.2f x %.2f mm at (%.2f, %.2f), %.2f mm from its press (discs' worst %.2f)\n",
+                c.ellipse.semi_major_mm(), c.ellipse.semi_minor_mm(), c.ellipse.x_mm, c.ellipse.y_mm, error,
+                worst_disc_mm);
+    EXPECT_LT(error, worst_disc_mm + 0.5);
+    EXPECT_LT(c.ellipse.semi_major_mm() / c.ellipse.semi_minor_mm(), 1.5);
+  }
 }
 
 }  // namespace

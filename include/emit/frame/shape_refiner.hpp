@@ -85,7 +85,9 @@ class ShapeRefiner {
 
  private:
   friend class EllipseMisfit;
-  double solve(const Vector& dV, std::vector<std::array<double, 6>>& parameters, int iterations);
+  /// `round[i]`: contact i held round (p = q = 0).
+  double solve(const Vector& dV, std::vector<std::array<double, 6>>& parameters, int iterations,
+               const std::vector<bool>& round = {});
   void covariances(const Vector& dV, const std::vector<std::array<double, 6>>& parameters, double chi2,
                    double log_radius_std);
   const FitPrecompute& shared_;
