@@ -51,10 +51,10 @@ struct Bench {
   FitModel fit_model = build_fit_model(sensor);
   Twin twin{sensor, held_out_twin()};
   Frame reference = twin.frame({});
-  std::vector<Frame> frames;  // single presses across the sheet
-  std::vector<Frame> moving;  // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
-  std::vector<Frame> bars;    // a ruler's edge, 30 x 3 mm, at angles across the sheet
-  std::vector<Frame> fours;   // four fingers 20 mm apart
+  std::vector<Frame> frames;        // single presses across the sheet
+  std::vector<Frame> moving;        // a finger sliding 0.5 mm a frame (50 mm/s at 100 frames/s)
+  std::vector<Frame> bars;          // a ruler's edge, 30 x 3 mm, at angles across the sheet
+  std::vector<Frame> fours;         // four fingers 20 mm apart
   std::vector<Frame> fours_moving;  // four fingers 20 mm apart, each sliding 0.3 mm a frame
   Bench() {
     set_thread_count(1);
@@ -68,8 +68,8 @@ struct Bench {
     for (int i = 0; i < 40; ++i) moving.push_back(twin.frame({{15 + 0.5 * i, 20 + 0.35 * i, 5, 8}}));
     for (int i = 0; i < 20; ++i) {
       const double s = 0.3 * i;
-      fours_moving.push_back(twin.frame(
-          {{18 + s, 18, 5, 8}, {38, 18 + s, 5, 10}, {18, 38 - s, 5, 12}, {38 - s, 38, 5, 9}}));
+      fours_moving.push_back(
+          twin.frame({{18 + s, 18, 5, 8}, {38, 18 + s, 5, 10}, {18, 38 - s, 5, 12}, {38 - s, 38, 5, 9}}));
     }
   }
 };
@@ -253,9 +253,7 @@ void BM_FitFrameFourTracked(benchmark::State& state) { fit_frames(state, bench()
 void BM_ShapesFrameFourTracked(benchmark::State& state) {
   fit_frames(state, bench(), bench().fours_moving, true, true);
 }
-void BM_ShapesFrameMovingTracked(benchmark::State& state) {
-  fit_frames(state, bench(), bench().moving, true, true);
-}
+void BM_ShapesFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true, true); }
 void BM_FitFrameMovingCold(benchmark::State& state) { fit_frames(state, bench(), bench().moving, false); }
 void BM_FitFrameMovingTracked(benchmark::State& state) { fit_frames(state, bench(), bench().moving, true); }
 void BM_FitFrameDome(benchmark::State& state) { fit_frames(state, dome_bench(), dome_bench().frames, false); }

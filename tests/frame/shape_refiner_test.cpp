@@ -255,6 +255,7 @@ TEST(ShapeRefiner, KeepsFourRoundFingersRoundAndInPlace) {
   const Vector dV = frame_difference(s.measurements, twin.frame(presses), twin.frame({}));
   ContactFitter fitter(s.fit);
   std::vector<Disc> seeds;
+  seeds.reserve(presses.size());
   for (const Press& p : presses) seeds.push_back({p.x_mm + 1, p.y_mm - 1, 0, 0});
   const FitResult& fit = fitter.fit(dV, seeds);
   std::vector<Disc> discs;
