@@ -19,6 +19,14 @@
 
 namespace emit {
 
+/// Where a tracked touch is in its life (frame/contact_tracker.hpp), as touch screens report it.
+enum class TouchPhase : std::uint8_t {
+  none,  ///< not tracked (a single frame's contacts)
+  down,  ///< the touch's first frame
+  move,  ///< a later frame of the same touch (moved or not)
+  up,    ///< the touch has ended: its last state, reported once, in the frame after its last
+};
+
 struct Contact {
   /// The contact's point of the sheet and the sheet's unit outward normal there
   /// (sensor/surface.hpp): the point the centroid (weighted by area × weight, see find()) names.
@@ -49,6 +57,11 @@ struct Contact {
   /// the `shapes` method's ellipse. Empty where there is none (a contact read from a file
   /// without it).
   Outline outline;
+  /// Tracking (frame/contact_tracker.hpp): the touch's id, the same while it lasts and never reused
+  /// in a run; −1 untracked. Its phase, and its velocity along the chart's axes [mm/s].
+  std::int64_t id = -1;
+  TouchPhase phase = TouchPhase::none;
+  double vx_mm_per_s = 0, vy_mm_per_s = 0;
 };
 
 /// Sets the contact's semi-axes and orientation to the uniform ellipse's of this covariance of
