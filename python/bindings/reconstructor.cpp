@@ -30,6 +30,8 @@ struct ContactRow {
   double x_std_mm, y_std_mm, pressure_std_N_per_mm2, force_std_N;
   double semi_major_mm, semi_minor_mm, orientation_deg, area_std_mm2, orientation_std_deg;
   std::int32_t element_count;
+  std::int64_t id;  ///< the touch's (frame/contact_tracker.hpp), −1 untracked
+  double vx_mm_per_s, vy_mm_per_s;
 };
 
 ContactRow row_of(std::int64_t frame, const Contact& c) {
@@ -53,7 +55,10 @@ ContactRow row_of(std::int64_t frame, const Contact& c) {
           c.orientation_deg,
           c.area_std_mm2,
           c.orientation_std_deg,
-          c.element_count};
+          c.element_count,
+          c.id,
+          c.vx_mm_per_s,
+          c.vy_mm_per_s};
 }
 
 py::array_t<ContactRow> contact_rows(const std::vector<std::vector<Contact>>& per_frame) {
@@ -164,7 +169,8 @@ py::list contact_list(const std::vector<Contact>& contacts) {
 void bind_reconstructor(py::module_& m) {
   PYBIND11_NUMPY_DTYPE(ContactRow, frame, x_mm, y_mm, z_mm, nx, ny, nz, area_mm2, pressure_N_per_mm2,
                        peak_pressure_N_per_mm2, force_N, x_std_mm, y_std_mm, pressure_std_N_per_mm2, force_std_N,
-                       semi_major_mm, semi_minor_mm, orientation_deg, area_std_mm2, orientation_std_deg, element_count);
+                       semi_major_mm, semi_minor_mm, orientation_deg, area_std_mm2, orientation_std_deg, element_count,
+                       id, vx_mm_per_s, vy_mm_per_s);
   m.attr("CONTACT_DTYPE") = py::dtype::of<ContactRow>();
 
   py::class_<Contact>(m, "Contact", R"(A contact: where the sheet is pressed and how hard.
@@ -194,6 +200,12 @@ outline's polygon, outline_mm, a (K, 2) array (not in CONTACT_DTYPE). Read-only.
       .def_readonly("area_std_mm2", &Contact::area_std_mm2)
       .def_readonly("orientation_std_deg", &Contact::orientation_std_deg)
       .def_readonly("element_count", &Contact::element_count)
+      .def_readonly("id", &Contact::id, "The touch's id, the same while it lasts (a Tracker's, or LiveStream's); -1 untracked.")
+      .def_property_readonly(
+          "phase", [](const Contact& c) { return std::string(touch_phase_name(c.phase)); },
+          "'down' (the touch's first frame), 'move', 'up' (ended: its last state), or 'none' (untracked).")
+      .def_readonly("vx_mm_per_s", &Contact::vx_mm_per_s, "Velocity along the chart's first axis [mm/s] (tracked).")
+      .def_readonly("vy_mm_per_s", &Contact::vy_mm_per_s, "Along its second [mm/s].")
       .def_property_readonly(
           "outline_mm",
           [](const Contact& c) {

@@ -13,6 +13,16 @@
 
 namespace emit {
 
+const char* touch_phase_name(TouchPhase phase) {
+  switch (phase) {
+    case TouchPhase::none: return "none";
+    case TouchPhase::down: return "down";
+    case TouchPhase::move: return "move";
+    case TouchPhase::up: return "up";
+  }
+  return "none";
+}
+
 namespace {
 
 /// One triangle's edge with its nodes sorted, so the triangles sharing an edge sort next to each other.

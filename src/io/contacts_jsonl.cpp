@@ -1,9 +1,12 @@
 #include "emit/io/contacts_jsonl.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <iterator>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +24,7 @@ enum class Group {
   surface,            ///< written only off the plane z = 0 (a curved sheet); absent: z = 0, normal +z
   shape,              ///< the outline's ellipse, written when it has one (frame/contacts.hpp); may be absent
   shape_uncertainty,  ///< its 1σ, written when estimated (the `shapes` method); may be absent
+  tracked,            ///< written for a tracked contact (id ≥ 0, frame/contact_tracker.hpp); may be absent
 };
 struct Field {
   const char* key;
@@ -47,6 +51,8 @@ constexpr Field fields[] = {
     {"orientation_deg", &Contact::orientation_deg, Group::shape},
     {"area_std_mm2", &Contact::area_std_mm2, Group::shape_uncertainty},
     {"orientation_std_deg", &Contact::orientation_std_deg, Group::shape_uncertainty},
+    {"vx_mm_per_s", &Contact::vx_mm_per_s, Group::tracked},
+    {"vy_mm_per_s", &Contact::vy_mm_per_s, Group::tracked},
 };
 
 bool has_uncertainty(const Contact& c) { return c.x_std_mm > 0 || c.y_std_mm > 0 || c.pressure_std_N_per_mm2 > 0; }
@@ -59,6 +65,7 @@ bool written(const Field& field, const Contact& c) {
     case Group::surface: return off_the_plane(c);
     case Group::shape: return c.semi_major_mm > 0;
     case Group::shape_uncertainty: return c.area_std_mm2 > 0 || c.orientation_std_deg > 0;
+    case Group::tracked: return c.id >= 0;
   }
   return true;
 }
@@ -102,6 +109,12 @@ void write_contact(std::ostream& out, const Contact& contact) {
   char text[96];  // the longest key (23) + quotes and separators + a %.6g number (at most 13) fit
   out << '{';
   const char* separator = "";
+  if (contact.id >= 0) {  // first: a reader keys touches by it
+    std::snprintf(text, sizeof text, "\"id\": %lld, \"phase\": \"%s\"", static_cast<long long>(contact.id),
+                  touch_phase_name(contact.phase));
+    out << text;
+    separator = ", ";
+  }
   for (const Field& field : fields) {
     if (!written(field, contact)) continue;
     std::snprintf(text, sizeof text, "%s\"%s\": %.6g", separator, field.key, contact.*field.value);
@@ -158,23 +171,54 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
       contact.outline.push_back({vertex[0].get<double>(), vertex[1].get<double>()});
     }
   }
+  if (const auto id = object.find("id"); id != object.end()) {
+    if (!id->is_number_integer() || id->get<long long>() < 0)
+      throw InvalidInput(where + ": \"id\" is not a non-negative integer");
+    contact.id = id->get<std::int64_t>();
+    contact.phase = TouchPhase::move;
+  }
+  if (const auto phase = object.find("phase"); phase != object.end()) {
+    const auto* name = phase->get_ptr<const std::string*>();
+    constexpr TouchPhase phases[] = {TouchPhase::down, TouchPhase::move, TouchPhase::up};
+    const auto* known =
+        std::find_if(std::begin(phases), std::end(phases), [&](TouchPhase p) { return name && *name == touch_phase_name(p); });
+    if (known == std::end(phases))
+      throw InvalidInput(where + ": \"phase\" is not one of \"down\", \"move\", \"up\"");
+    contact.phase = *known;
+  }
   return contact;
 }
 
 }  // namespace
 
-void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts, double fit_misfit_mV) {
+void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts, double fit_misfit_mV,
+                         const FrameTimes& times, const std::vector<Contact>* ended) {
   check_finite(frame, contacts);
+  if (ended) check_finite(frame, *ended);
   if (!std::isfinite(fit_misfit_mV))
     throw InvalidInput("contacts of frame " + std::to_string(frame) + ": the fit's misfit is not finite");
   char head[64];
-  std::snprintf(head, sizeof head, "{\"frame\": %ld, \"contacts\": [", frame);
+  std::snprintf(head, sizeof head, "{\"frame\": %ld", frame);
   out << head;
-  for (std::size_t k = 0; k < contacts.size(); ++k) {
-    if (k > 0) out << ", ";
-    write_contact(out, contacts[k]);
+  // Microseconds: %.6f of a Unix time in seconds; a board's clock to %.9g (µs over hours).
+  if (std::isfinite(times.board_s)) {
+    std::snprintf(head, sizeof head, ", \"board_time_s\": %.9g", times.board_s);
+    out << head;
   }
-  out << ']';
+  if (std::isfinite(times.host_unix_s)) {
+    std::snprintf(head, sizeof head, ", \"host_time_s\": %.6f", times.host_unix_s);
+    out << head;
+  }
+  const auto write_list = [&](const char* key, const std::vector<Contact>& list) {
+    out << ", \"" << key << "\": [";
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      if (k > 0) out << ", ";
+      write_contact(out, list[k]);
+    }
+    out << ']';
+  };
+  write_list("contacts", contacts);
+  if (ended && !ended->empty()) write_list("ended", *ended);
   if (fit_misfit_mV >= 0) {
     std::snprintf(head, sizeof head, ", \"fit_misfit_mV\": %.4g", fit_misfit_mV);
     out << head;
@@ -182,17 +226,36 @@ void write_contacts_line(std::ostream& out, long frame, const std::vector<Contac
   out << "}\n";
 }
 
-std::vector<Contact> parse_contacts_line(const std::string& line, long* frame) {
+ContactsLine parse_contacts_record(const std::string& line) {
   const nlohmann::json document = parse_json(line);
   if (!document.is_object()) throw InvalidInput("contacts line: not a JSON object");
-  const long number = frame_of(document);
-  const nlohmann::json& list = member(document, "contacts", "contacts line");
-  if (!list.is_array()) throw InvalidInput("contacts line: \"contacts\" is not an array");
-  std::vector<Contact> contacts;
-  contacts.reserve(list.size());
-  for (std::size_t k = 0; k < list.size(); ++k) contacts.push_back(contact_of(list[k], k));
-  if (frame != nullptr) *frame = number;
-  return contacts;
+  ContactsLine read;
+  read.frame = frame_of(document);
+  const auto list_of = [&](const char* key, std::vector<Contact>& into) {
+    const nlohmann::json& list = member(document, key, "contacts line");
+    if (!list.is_array()) throw InvalidInput(std::string("contacts line: \"") + key + "\" is not an array");
+    into.reserve(list.size());
+    for (std::size_t k = 0; k < list.size(); ++k) into.push_back(contact_of(list[k], k));
+  };
+  list_of("contacts", read.contacts);
+  if (document.contains("ended")) list_of("ended", read.ended);
+  const auto number = [&](const char* key, double& into) {
+    const auto it = document.find(key);
+    if (it == document.end()) return;
+    if (!it->is_number() || !std::isfinite(it->get<double>()))
+      throw InvalidInput(std::string("contacts line: \"") + key + "\" is not a finite number");
+    into = it->get<double>();
+  };
+  number("board_time_s", read.times.board_s);
+  number("host_time_s", read.times.host_unix_s);
+  number("fit_misfit_mV", read.fit_misfit_mV);
+  return read;
+}
+
+std::vector<Contact> parse_contacts_line(const std::string& line, long* frame) {
+  ContactsLine read = parse_contacts_record(line);
+  if (frame != nullptr) *frame = read.frame;
+  return std::move(read.contacts);
 }
 
 }  // namespace emit

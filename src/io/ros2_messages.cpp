@@ -37,14 +37,17 @@ constexpr std::string_view tactile_state_fields =
     "float64[] values\n";
 
 constexpr std::string_view tactile_contacts_fields =
-    "# A frame's contacts, strongest first; an empty list when nothing touches.\n"
+    "# A frame's contacts, strongest first; an empty list when nothing touches. The header's\n"
+    "# stamp: when the frame reached the host (its system clock, the Unix epoch).\n"
     "std_msgs/Header header\n"
-    "uint64 frame  # the source's frame number\n"
+    "uint64 frame       # the source's frame number\n"
+    "float64 board_time # s, when the board took the frame, on the board's clock\n"
     "emit_msgs/TactileContact[] contacts\n"
+    "emit_msgs/TactileContact[] ended  # tracked touches that ended with this frame: their last state\n"
     "================================================================================\n"
     "MSG: emit_msgs/TactileContact\n"
     "# A contact (modelled on tactile_msgs/TactileContact), in SI units.\n"
-    "string name\n"
+    "string name  # touch_<id> when tracked (the same while the touch lasts), else contact_<rank>\n"
     "geometry_msgs/Vector3 position  # m, a point of the sheet\n"
     "geometry_msgs/Vector3 normal    # the sheet's unit outward normal there\n"
     "geometry_msgs/Wrench wrench     # N: the press on the sheet, force = -force_N * normal\n"
@@ -64,6 +67,7 @@ constexpr std::string_view tactile_contacts_fields =
     "# The outline as a polygon (first and last points joined), counter-clockwise, in m in the\n"
     "# sheet's chart: x, y on a flat sheet (z = 0). Empty: none.\n"
     "geometry_msgs/Polygon outline\n"
+    "geometry_msgs/Vector3 velocity  # m/s along the chart's axes (z = 0); 0 when not tracked\n"
     "================================================================================\n"
     "MSG: geometry_msgs/Polygon\n"
     "# A specification of a polygon where the first and last points are assumed to be connected\n"
@@ -179,8 +183,9 @@ std::uint64_t unix_time_ns() {
 
 Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
   const Vector3 normal(c.nx, c.ny, c.nz);
-  std::array<char, 32> name{};  // "contact_" and up to 20 digits
-  std::snprintf(name.data(), name.size(), "contact_%zu", rank);
+  std::array<char, 32> name{};  // "contact_" or "touch_" and up to 20 digits
+  if (c.id >= 0) std::snprintf(name.data(), name.size(), "touch_%lld", static_cast<long long>(c.id));
+  else std::snprintf(name.data(), name.size(), "contact_%zu", rank);
   Ros2Contact r{name,
                 1e-3 * Vector3(c.x_mm, c.y_mm, c.z_mm),
                 normal,
@@ -198,7 +203,8 @@ Ros2Contact ros2_contact(const Contact& c, std::size_t rank) {
                 1e-6 * c.area_std_mm2,
                 degrees_to_radians * c.orientation_std_deg,
                 {},
-                static_cast<std::uint32_t>(c.outline.size)};
+                static_cast<std::uint32_t>(c.outline.size),
+                1e-3 * Vector3(c.vx_mm_per_s, c.vy_mm_per_s, 0)};
   for (int k = 0; k < c.outline.size; ++k)
     for (int axis = 0; axis < 2; ++axis)
       r.outline_m[static_cast<std::size_t>(k)][static_cast<std::size_t>(axis)] =
@@ -216,11 +222,9 @@ void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::
   for (Index i = 0; i < volts.size(); ++i) cdr.put(volts.data()[i]);
 }
 
-void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
-                             std::uint64_t frame, const std::vector<Contact>& contacts) {
-  CdrWriter cdr(out);
-  cdr.header(stamp, frame_id);
-  cdr.put(frame);
+namespace {
+
+void put_contacts(CdrWriter& cdr, const std::vector<Contact>& contacts) {
   cdr.count(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Ros2Contact c = ros2_contact(contacts[i], i);
@@ -239,7 +243,22 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
       cdr.put(c.outline_m[k][1]);
       cdr.put(0.0f);
     }
+    cdr.vector3(c.velocity_m_per_s);
   }
+}
+
+}  // namespace
+
+void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                             std::uint64_t frame, const std::vector<Contact>& contacts, double board_time_s,
+                             const std::vector<Contact>* ended) {
+  CdrWriter cdr(out);
+  cdr.header(stamp, frame_id);
+  cdr.put(frame);
+  cdr.put(board_time_s);
+  put_contacts(cdr, contacts);
+  if (ended) put_contacts(cdr, *ended);
+  else cdr.count(0);
 }
 
 void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,

@@ -28,12 +28,13 @@ TactileMcap::TactileMcap(OutputFile file, std::string sensor_name, const Mesh& m
 }
 
 void TactileMcap::write(std::uint64_t frame, std::uint64_t time_ns, const FrameView& volts,
-                        const std::vector<Contact>& contacts, const Vector& pressure_N_per_mm2) {
+                        const std::vector<Contact>& contacts, const Vector& pressure_N_per_mm2, double board_time_s,
+                        const std::vector<Contact>* ended) {
   const Ros2Stamp stamp = Ros2Stamp::from_ns(time_ns);
   const auto sequence = static_cast<std::uint32_t>(frames_);
   encode_tactile_state(message_, stamp, ros2_frame_id, sensor_name_, volts);
   mcap_.write_message(frames_channel_, sequence, time_ns, time_ns, message_);
-  encode_tactile_contacts(message_, stamp, ros2_frame_id, frame, contacts);
+  encode_tactile_contacts(message_, stamp, ros2_frame_id, frame, contacts, board_time_s, ended);
   mcap_.write_message(contacts_channel_, sequence, time_ns, time_ns, message_);
   encode_pressure_image(message_, stamp, ros2_frame_id, frame, pressure_N_per_mm2);
   mcap_.write_message(pressure_channel_, sequence, time_ns, time_ns, message_);

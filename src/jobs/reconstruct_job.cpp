@@ -159,7 +159,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
         if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
         if (mcap)
           mcap->write(first + f, start_ns + (first + f) * mcap_frame_interval_ns, frame_view(chunk[f]), contacts,
-                      reconstructor->pressure());
+                      reconstructor->pressure(), 1e-9 * static_cast<double>((first + f) * mcap_frame_interval_ns));
         progress.step("reconstructing frame", static_cast<long>(first + f + 1), survey.frames);
       }
     }

@@ -18,6 +18,8 @@ namespace {
 
 using ContactMessage = emit_msgs_msg_dds__TactileContact_;
 
+const std::vector<Contact> no_contacts;
+
 /// Cyclone's return codes as one line.
 dds_entity_t checked(dds_entity_t entity, const std::string& what) {
   if (entity < 0) throw IoError("dds: " + what + ": " + dds_strretcode(entity));
@@ -36,6 +38,49 @@ Sequence borrowed(T* data, std::size_t count) {
   sequence._release = false;
   return sequence;
 }
+
+/// A list of contacts as messages, over memory kept until the next fill: grows to the most
+/// contacts seen, then stays.
+struct ContactMessages {
+  std::vector<ContactMessage> messages;
+  std::vector<std::array<char, 32>> names;
+  std::vector<std::array<geometry_msgs_msg_dds__Point32_, Outline::capacity>> outlines;
+
+  dds_sequence_emit_msgs_msg_dds__TactileContact_ fill(const std::vector<Contact>& contacts) {
+    if (messages.size() < contacts.size()) {
+      messages.resize(contacts.size());
+      names.resize(contacts.size());
+      outlines.resize(contacts.size());
+    }
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const Ros2Contact c = ros2_contact(contacts[i], i);
+      names[i] = c.name;  // kept until the write
+      messages[i] = {names[i].data(),
+                     vector3(c.position_m),
+                     vector3(c.normal),
+                     {vector3(c.force_N), vector3(Vector3::Zero())},
+                     c.area_m2,
+                     c.pressure_Pa,
+                     c.peak_pressure_Pa,
+                     c.position_std_x_m,
+                     c.position_std_y_m,
+                     c.pressure_std_Pa,
+                     c.force_std_N,
+                     c.semi_major_m,
+                     c.semi_minor_m,
+                     c.orientation_rad,
+                     c.area_std_m2,
+                     c.orientation_std_rad,
+                     {},
+                     vector3(c.velocity_m_per_s)};
+      for (std::uint32_t k = 0; k < c.outline_size; ++k) outlines[i][k] = {c.outline_m[k][0], c.outline_m[k][1], 0.0f};
+      messages[i].outline.points = borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(
+          c.outline_size > 0 ? outlines[i].data() : nullptr, c.outline_size);
+    }
+    return borrowed<dds_sequence_emit_msgs_msg_dds__TactileContact_>(contacts.empty() ? nullptr : messages.data(),
+                                                                     contacts.size());
+  }
+};
 
 }  // namespace
 
@@ -56,9 +101,7 @@ struct DdsPublisher::Impl {
   dds_entity_t participant = 0;
   dds_entity_t frames = 0, contacts = 0, pressure = 0;
   std::string sensor_name, frame_id{ros2_frame_id};  // mutable: the C types hold char*
-  std::vector<ContactMessage> contact_messages;
-  std::vector<std::array<char, 32>> contact_names;
-  std::vector<std::array<geometry_msgs_msg_dds__Point32_, Outline::capacity>> contact_outlines;
+  ContactMessages contacts_now, contacts_ended;
   std::vector<float> pressure_Pa;
 
   Impl() = default;
@@ -118,7 +161,7 @@ DdsPublisher::~DdsPublisher() = default;
 void DdsPublisher::publish(const LiveFrame& frame) {
   if (frame.capturing_reference || frame.volts == nullptr) return;
   Impl& s = *impl_;
-  const Ros2Stamp stamp = Ros2Stamp::from_ns(unix_time_ns());
+  const Ros2Stamp stamp = Ros2Stamp::from_ns(frame.host_time_ns);  // when the frame reached the host
   const std_msgs_msg_dds__Header_ header{{stamp.sec, stamp.nanosec}, s.frame_id.data()};
 
   emit_msgs_msg_dds__TactileSensor_ sensor{};
@@ -129,45 +172,12 @@ void DdsPublisher::publish(const LiveFrame& frame) {
   state.header = header;
   state.sensors = borrowed<dds_sequence_emit_msgs_msg_dds__TactileSensor_>(&sensor, 1);
 
-  const std::vector<Contact>& contacts = *frame.contacts;
-  if (s.contact_messages.size() < contacts.size()) {  // grows to the most contacts seen, then stays
-    s.contact_messages.resize(contacts.size());
-    s.contact_names.resize(contacts.size());
-    s.contact_outlines.resize(contacts.size());
-  }
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const Ros2Contact c = ros2_contact(contacts[i], i);
-    s.contact_names[i] = c.name;  // kept until the write
-    s.contact_messages[i] = {s.contact_names[i].data(),
-                             vector3(c.position_m),
-                             vector3(c.normal),
-                             {vector3(c.force_N), vector3(Vector3::Zero())},
-                             c.area_m2,
-                             c.pressure_Pa,
-                             c.peak_pressure_Pa,
-                             c.position_std_x_m,
-                             c.position_std_y_m,
-                             c.pressure_std_Pa,
-                             c.force_std_N,
-                             c.semi_major_m,
-                             c.semi_minor_m,
-                             c.orientation_rad,
-                             c.area_std_m2,
-                             c.orientation_std_rad,
-                             {}};
-    for (std::uint32_t k = 0; k < c.outline_size; ++k)
-      s.contact_outlines[i][k] = {c.outline_m[k][0], c.outline_m[k][1], 0.0f};
-    s.contact_messages[i].outline.points =
-        borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(c.outline_size > 0 ? s.contact_outlines[i].data()
-                                                                                  : nullptr,
-                                                               c.outline_size);
-  }
   emit_msgs_msg_dds__TactileContacts_ contacts_message{};
   contacts_message.header = header;
   contacts_message.frame = frame.sequence;
-  contacts_message.contacts =
-      borrowed<dds_sequence_emit_msgs_msg_dds__TactileContact_>(contacts.empty() ? nullptr : s.contact_messages.data(),
-                                                                contacts.size());
+  contacts_message.board_time = frame.board_time_s;
+  contacts_message.contacts = s.contacts_now.fill(*frame.contacts);
+  contacts_message.ended = s.contacts_ended.fill(frame.ended ? *frame.ended : no_contacts);
 
   const Vector& pressure = *frame.pressure_N_per_mm2;
   const std::size_t triangles = std::min(static_cast<std::size_t>(pressure.size()), s.pressure_Pa.size());

@@ -11,6 +11,14 @@ double seconds_between(std::chrono::steady_clock::time_point from, std::chrono::
   return std::chrono::duration<double>(to - from).count();
 }
 
+/// The system clock's time [ns since the Unix epoch] at steady-clock time `at` (in the past).
+std::uint64_t unix_time_ns_at(std::chrono::steady_clock::time_point at) {
+  const auto ago = std::chrono::steady_clock::now() - at;
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch() - ago)
+          .count());
+}
+
 constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in the displayed rate
 
 }  // namespace
@@ -54,6 +62,8 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   out.index = handled_++;
   out.sequence = frame.sequence;
   out.volts = &frame.volts;
+  out.board_time_s = frame.board_time_s;
+  out.host_time_ns = unix_time_ns_at(frame.received);
   if (recorder_) recorder_->record(frame.raw);
   if (reference_.capturing()) {
     if (reference_.capture(frame.volts)) reconstructor_.set_reference(reference_.reference());
@@ -66,7 +76,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   }
   const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
   if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
-  if (contacts_out_) write_contacts(frame.sequence, contacts);
+  if (contacts_out_) write_contacts(out, contacts);
   out.contacts = &contacts;
   out.pressure_N_per_mm2 = &reconstructor_.pressure();
   publish(out);
@@ -81,14 +91,16 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   return &contacts;
 }
 
-void LiveLoop::write_contacts(std::uint64_t sequence, const std::vector<Contact>& contacts) {
+void LiveLoop::write_contacts(const LiveFrame& frame, const std::vector<Contact>& contacts) {
   OutputFile& out = *contacts_out_;
   if (out.reader_gone() && !out.reconnect()) {  // a FIFO no one reads now: drop the line
     ++stats_.contacts_dropped;
     return;
   }
   const FitResult* fitted = reconstructor_.fit_result();
-  write_contacts_line(out.stream(), static_cast<long>(sequence), contacts, fitted ? 1e3 * fitted->rms_misfit_V : -1);
+  write_contacts_line(out.stream(), static_cast<long>(frame.sequence), contacts,
+                      fitted ? 1e3 * fitted->rms_misfit_V : -1,
+                      {frame.board_time_s, 1e-9 * static_cast<double>(frame.host_time_ns)}, frame.ended);
   if (out.stream().flush()) return;
   ++stats_.contacts_dropped;
   if (out.clear_interrupted()) return;  // a stop signal while the reader did not read: the loop ends

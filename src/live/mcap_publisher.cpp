@@ -9,7 +9,8 @@ McapPublisher::McapPublisher(OutputFile file, const std::string& sensor_name, co
 
 void McapPublisher::publish(const LiveFrame& frame) {
   if (frame.capturing_reference || frame.volts == nullptr) return;
-  mcap_.write(frame.sequence, unix_time_ns(), frame_view(*frame.volts), *frame.contacts, *frame.pressure_N_per_mm2);
+  mcap_.write(frame.sequence, frame.host_time_ns, frame_view(*frame.volts), *frame.contacts, *frame.pressure_N_per_mm2,
+              frame.board_time_s, frame.ended);
 }
 
 }  // namespace emit

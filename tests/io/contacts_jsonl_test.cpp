@@ -3,6 +3,7 @@
 // way a line is not contacts.
 #include "emit/io/contacts_jsonl.hpp"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -85,6 +86,45 @@ TEST(ContactsJsonl, OutlineRoundTrips) {
   EXPECT_TRUE(read[1].outline.empty());
 }
 
+// Touch over time: a tracked contact's id and phase first, its velocity after the other numbers;
+// the frame's board and host times after its number; the touches that ended in "ended", phase
+// "up". Byte for byte (the README's format), then read back.
+TEST(ContactsJsonl, WritesAndReadsTrackedTouchesAndTheFramesTimes) {
+  Contact moving = linear_contact();
+  moving.id = 12, moving.phase = TouchPhase::move, moving.vx_mm_per_s = 40.5, moving.vy_mm_per_s = -3.25;
+  Contact ended = linear_contact();
+  ended.id = 11, ended.phase = TouchPhase::up;
+  const std::vector<Contact> ended_list{ended};
+  std::ostringstream out;
+  write_contacts_line(out, 8, {moving}, -1, {12.34, 1795000000.123456}, &ended_list);
+  EXPECT_EQ(out.str(),
+            "{\"frame\": 8, \"board_time_s\": 12.34, \"host_time_s\": 1795000000.123456, \"contacts\": [{\"id\": 12, "
+            "\"phase\": \"move\", \"x_mm\": 21.5, \"y_mm\": 37.25, \"area_mm2\": 78.5, \"pressure_N_per_mm2\": 0.125, "
+            "\"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125, \"vx_mm_per_s\": 40.5, \"vy_mm_per_s\": -3.25}], "
+            "\"ended\": [{\"id\": 11, \"phase\": \"up\", \"x_mm\": 21.5, \"y_mm\": 37.25, \"area_mm2\": 78.5, "
+            "\"pressure_N_per_mm2\": 0.125, \"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125, \"vx_mm_per_s\": 0, "
+            "\"vy_mm_per_s\": 0}]}\n");
+  const ContactsLine read = parse_contacts_record(out.str());
+  EXPECT_EQ(read.frame, 8);
+  EXPECT_EQ(read.times.board_s, 12.34);
+  EXPECT_NEAR(read.times.host_unix_s, 1795000000.123456, 1e-6);  // µs: what a host's receive time means
+  ASSERT_EQ(read.contacts.size(), 1u);
+  EXPECT_EQ(read.contacts[0].id, 12);
+  EXPECT_EQ(read.contacts[0].phase, TouchPhase::move);
+  EXPECT_EQ(read.contacts[0].vx_mm_per_s, 40.5);
+  ASSERT_EQ(read.ended.size(), 1u);
+  EXPECT_EQ(read.ended[0].id, 11);
+  EXPECT_EQ(read.ended[0].phase, TouchPhase::up);
+  // An untracked line reads back untracked and without times.
+  std::ostringstream plain;
+  write_contacts_line(plain, 8, {linear_contact()});
+  const ContactsLine untracked = parse_contacts_record(plain.str());
+  EXPECT_EQ(untracked.contacts[0].id, -1);
+  EXPECT_EQ(untracked.contacts[0].phase, TouchPhase::none);
+  EXPECT_TRUE(std::isnan(untracked.times.board_s) && std::isnan(untracked.times.host_unix_s));
+  EXPECT_TRUE(untracked.ended.empty());
+}
+
 // A non-finite contact field is tests/frame/contacts_test.cpp's; a non-finite misfit is refused too.
 TEST(ContactsJsonl, RefusesANonFiniteMisfit) {
   std::ostringstream out;
@@ -134,6 +174,12 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair{
             R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0], [1]]}]})",
             "contacts line: contact 0: \"outline_mm\" vertex 2 is not [x, y], finite numbers"},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": -2}]})",
+                  "contacts line: contact 0: \"id\" is not a non-negative integer"},
+        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": 2, "phase": "hover"}]})",
+                  "contacts line: contact 0: \"phase\" is not one of \"down\", \"move\", \"up\""},
+        std::pair{R"({"frame": 1, "board_time_s": "now", "contacts": []})",
+                  "contacts line: \"board_time_s\" is not a finite number"},
         // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.
         std::pair{R"({"frame": 1e999, "contacts": []})",
                   "contacts line: a number out of range ([json.exception.out_of_range.406] number "

@@ -48,40 +48,44 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
   Contact c;
   c.x_mm = 12, c.y_mm = 34, c.force_N = 2.5, c.area_mm2 = 20, c.pressure_N_per_mm2 = 0.125;
   std::vector<std::uint8_t> out;
-  encode_tactile_contacts(out, {}, "", 9, {c});
-  // header (sec, nanosec, "" = length 1 and NUL) ends at 9; frame at 16; count at 24; the name
-  // "contact_0" (length 10) at 28..41; the position's doubles from 48.
+  encode_tactile_contacts(out, {}, "", 9, {c}, 0.25);
+  // header (sec, nanosec, "" = length 1 and NUL) ends at 9; frame at 16; board time at 24; count
+  // at 32; the name "contact_0" (length 10) at 36..49; the position's doubles from 56.
   EXPECT_EQ(read_at<std::uint64_t>(out, 4 + 16), 9u);
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 24), 1u);
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 28), 10u);
-  EXPECT_EQ(std::string(reinterpret_cast<const char*>(out.data() + 4 + 32)), "contact_0");
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 48), 0.012);     // x [m]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 56), 0.034);     // y [m]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 88), 1.0);       // normal z
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 112), -2.5);     // wrench force z [N]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 144), 20e-6);    // area [m²]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 152), 0.125e6);  // pressure [Pa]
-  // After peak pressure (160) and the four 1σ (168 to 192): the outline's ellipse, SI and radians.
+  EXPECT_EQ(read_at<double>(out, 4 + 24), 0.25);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 32), 1u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 36), 10u);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(out.data() + 4 + 40)), "contact_0");
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 56), 0.012);     // x [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 64), 0.034);     // y [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 96), 1.0);       // normal z
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 120), -2.5);     // wrench force z [N]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 152), 20e-6);    // area [m²]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 160), 0.125e6);  // pressure [Pa]
+  // After peak pressure (168) and the four 1σ (176 to 200): the outline's ellipse, SI and radians.
   c.semi_major_mm = 6, c.semi_minor_mm = 1.5, c.orientation_deg = 45, c.area_std_mm2 = 2, c.orientation_std_deg = 9;
   encode_tactile_contacts(out, {}, "", 9, {c});
-  ASSERT_EQ(out.size(), 4u + 244u);  // the last double, orientation_std, at 232; the outline's count at 240
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 200), 6e-3);                   // semi_major [m]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 208), 1.5e-3);                 // semi_minor [m]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 216), std::numbers::pi / 4);   // orientation [rad]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 224), 2e-6);                   // area_std [m²]
-  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 232), std::numbers::pi / 20);  // orientation_std [rad]
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 240), 0u);                     // no outline: no points
+  // The last double, orientation_std, at 240; the outline's count at 248; the velocity's three
+  // doubles at 256..279; the ended touches' count at 280.
+  ASSERT_EQ(out.size(), 4u + 284u);
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 208), 6e-3);                   // semi_major [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 216), 1.5e-3);                 // semi_minor [m]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 224), std::numbers::pi / 4);   // orientation [rad]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 232), 2e-6);                   // area_std [m²]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 240), std::numbers::pi / 20);  // orientation_std [rad]
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 248), 0u);                     // no outline: no points
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 280), 0u);                     // no touch ended
   // The outline: a geometry_msgs/Polygon, its count then each Point32's three float32 [m], z = 0.
   c.outline.push_back({10, 30});
   c.outline.push_back({14, 30});
   c.outline.push_back({12, 38});
   encode_tactile_contacts(out, {}, "", 9, {c});
-  ASSERT_EQ(out.size(), 4u + 244u + 36u);
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 240), 3u);
+  ASSERT_EQ(out.size(), 4u + 284u + 32u);  // 36 bytes of points, less the 4 that aligned the velocity before
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 248), 3u);
   for (int k = 0; k < 3; ++k) {
-    EXPECT_EQ(read_at<float>(out, 4 + 244 + 12 * k), 1e-3f * c.outline.vertices_mm[k][0]);
-    EXPECT_EQ(read_at<float>(out, 4 + 248 + 12 * k), 1e-3f * c.outline.vertices_mm[k][1]);
-    EXPECT_EQ(read_at<float>(out, 4 + 252 + 12 * k), 0.0f);
+    EXPECT_EQ(read_at<float>(out, 4 + 252 + 12 * k), 1e-3f * c.outline.vertices_mm[k][0]);
+    EXPECT_EQ(read_at<float>(out, 4 + 256 + 12 * k), 1e-3f * c.outline.vertices_mm[k][1]);
+    EXPECT_EQ(read_at<float>(out, 4 + 260 + 12 * k), 0.0f);
   }
   EXPECT_NE(tactile_contacts_message().definition.find("geometry_msgs/Polygon outline\n"), std::string::npos);
   EXPECT_NE(tactile_contacts_message().definition.find("MSG: geometry_msgs/Point32\nfloat32 x\n"), std::string::npos);
@@ -95,6 +99,29 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
       EXPECT_NE(type->definition.find("MSG: builtin_interfaces/Time"), std::string::npos) << type->name;
     }
   }
+}
+
+// A tracked touch (frame/contact_tracker.hpp) is named by its id, which stays while the touch
+// lasts, and carries its velocity [m/s]; a touch that ended comes in `ended` with its last state.
+TEST(Ros2Messages, ATrackedTouchIsNamedByItsIdWithItsVelocityAndEndedTouchesFollow) {
+  Contact c;
+  c.x_mm = 12, c.y_mm = 34, c.id = 17, c.phase = TouchPhase::move, c.vx_mm_per_s = 40, c.vy_mm_per_s = -20;
+  EXPECT_EQ(std::string(ros2_contact(c, 3).name.data()), "touch_17");
+  EXPECT_EQ(ros2_contact(c, 3).velocity_m_per_s, Vector3(0.04, -0.02, 0));
+  Contact ended = c;
+  ended.id = 5, ended.phase = TouchPhase::up;
+  const std::vector<Contact> ended_list{ended};
+  std::vector<std::uint8_t> out;
+  encode_tactile_contacts(out, {}, "", 9, {c}, 1.5, &ended_list);
+  // One contact of 284 − 32 − 4 bytes with its 9-byte name "touch_17" (one byte shorter than
+  // "contact_0", which the alignment before the position absorbs): the ended list's count at 280.
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(out.data() + 4 + 40)), "touch_17");
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 256), 0.04);   // velocity x [m/s]
+  EXPECT_DOUBLE_EQ(read_at<double>(out, 4 + 264), -0.02);  // velocity y
+  ASSERT_EQ(read_at<std::uint32_t>(out, 4 + 280), 1u);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(out.data() + 4 + 288)), "touch_5");
+  EXPECT_NE(tactile_contacts_message().definition.find("float64 board_time"), std::string::npos);
+  EXPECT_NE(tactile_contacts_message().definition.find("emit_msgs/TactileContact[] ended"), std::string::npos);
 }
 
 TEST(Ros2Messages, EncodingAFrameAllocatesNothingOnceWarm) {

@@ -43,14 +43,18 @@ function readRecords(bytes) {
 
 /** Every number of a decoded emit_msgs/TactileContact against its JSON Lines object (6 significant
  *  digits there; an absent key is 0), in SI units. */
-function compareContact(c, j, what) {
+function compareContact(c, j, what, rank = 0) {
   const pairs = [["x_mm", c.position.x, 1e-3], ["y_mm", c.position.y, 1e-3], ["area_mm2", c.area, 1e-6],
     ["pressure_N_per_mm2", c.pressure, 1e6], ["peak_pressure_N_per_mm2", c.peak_pressure, 1e6],
     ["force_N", -c.wrench.force.z, 1], ["x_std_mm", c.position_std_x, 1e-3], ["y_std_mm", c.position_std_y, 1e-3],
     ["pressure_std_N_per_mm2", c.pressure_std, 1e6], ["force_std_N", c.force_std, 1],
     ["semi_major_mm", c.semi_major_m, 1e-3], ["semi_minor_mm", c.semi_minor_m, 1e-3],
     ["orientation_deg", c.orientation_rad, Math.PI / 180], ["area_std_mm2", c.area_std_m2, 1e-6],
-    ["orientation_std_deg", c.orientation_std_rad, Math.PI / 180]];
+    ["orientation_std_deg", c.orientation_std_rad, Math.PI / 180], ["vx_mm_per_s", c.velocity.x, 1e-3],
+    ["vy_mm_per_s", c.velocity.y, 1e-3]];
+  // A tracked touch is named by its id (the same while it lasts), an untracked contact by its rank.
+  check(c.name === (j.id !== undefined ? `touch_${j.id}` : `contact_${rank}`), `${what} name ${c.name}`);
+  check(c.velocity.z === 0, `${what} velocity z`);
   for (const [key, value, scale] of pairs)
     check(close(value, scale * (j[key] ?? 0), 1e-5), `${what} ${key}: ${value} against ${scale * (j[key] ?? 0)}`);
   // The outline: a geometry_msgs/Polygon of float32 points [m], z = 0, as outline_mm's vertices.
@@ -137,11 +141,15 @@ check(contacts.length === lines.length, `${contacts.length} contact messages for
 let compared = 0;
 contacts.forEach((m, f) => {
   check(Number(m.frame) === lines[f].frame, `contacts ${f}: frame number`);
+  // A file of frames is put at the board's 50 frames/s: frame f at f / 50 s on its clock.
+  check(close(m.board_time, 0.02 * f, 1e-12), `contacts ${f}: board time ${m.board_time}`);
+  check(m.ended.length === (lines[f].ended ?? []).length, `contacts ${f}: ended touches`);
+  m.ended.forEach((c, i) => compareContact(c, lines[f].ended[i], `ended ${f}.${i}`, i));
   check(m.contacts.length === lines[f].contacts.length, `contacts ${f}: count`);
   m.contacts.forEach((c, i) => {
     const j = lines[f].contacts[i];
-    compareContact(c, j, `contacts ${f}.${i}`);
-    check(c.normal.z === 1 && c.position.z === 0 && c.name === `contact_${i}`, `contacts ${f}.${i}: flat sheet, name`);
+    compareContact(c, j, `contacts ${f}.${i}`, i);
+    check(c.normal.z === 1 && c.position.z === 0, `contacts ${f}.${i}: flat sheet`);
     compared++;
   });
 });
@@ -204,6 +212,13 @@ const liveContacts = liveTopics["/emit/contacts"];
 check(liveContacts.length === 20 && liveTopics["/emit/frames"].length === 20 && liveTopics["/emit/pressure"].length === 20,
       `20 live frames on each topic (${liveContacts.length})`);
 check(liveContacts.every((m, i) => Number(m.frame) === 10 + i), "live frames numbered 10..29 (after the baseline's 10)");
+// Times: the board's clock goes forward; the header stamps (when each frame reached the host, Unix
+// time) too, and are the MCAP log times, taken within this test's run.
+const stampNs = (m) => BigInt(m.header.stamp.sec) * 1000000000n + BigInt(m.header.stamp.nanosec);
+check(liveContacts.every((m, i) => i === 0 || (m.board_time > liveContacts[i - 1].board_time &&
+      stampNs(m) >= stampNs(liveContacts[i - 1]))), "live board times and stamps go forward");
+check(liveContacts.every((m) => m.logTime === stampNs(m) &&
+      Math.abs(Number(stampNs(m) / 1000000n) - Date.now()) < 600e3), "live stamps: the host's receive time, now");
 // The twin's first 15 frames are untouched; the press is found within the README's p95, 8.05 mm.
 const pressed = liveContacts.filter((m) => Number(m.frame) >= 15);
 check(pressed.length === 15 && pressed.every((m) => m.contacts.length >= 1 &&

@@ -61,7 +61,7 @@ dds_entity_t reader(dds_entity_t participant, const std::string& topic, const dd
 
 /// A contact's numbers as the message carries them, in the order of json_keys below, then its
 /// outline's points' x and y [m] (a polygon's Point32s; z 0 on these flat sheets).
-constexpr int field_count = 19;
+constexpr int field_count = 21;
 using Fields = std::vector<double>;
 
 Fields fields_of(const emit_msgs_msg_dds__TactileContact_& c) {
@@ -83,7 +83,9 @@ Fields fields_of(const emit_msgs_msg_dds__TactileContact_& c) {
                    c.semi_minor_m,
                    c.orientation_rad,
                    c.area_std_m2,
-                   c.orientation_std_rad};
+                   c.orientation_std_rad,
+                   c.velocity.x,
+                   c.velocity.y};
   for (std::uint32_t k = 0; k < c.outline.points._length; ++k) {
     fields.push_back(c.outline.points._buffer[k].x);
     fields.push_back(c.outline.points._buffer[k].y);
@@ -117,18 +119,22 @@ constexpr JsonKey json_keys[field_count] = {
     {"orientation_deg", std::numbers::pi / 180, 0},
     {"area_std_mm2", 1e-6, 0},
     {"orientation_std_deg", std::numbers::pi / 180, 0},
+    {"vx_mm_per_s", 1e-3, 0},
+    {"vy_mm_per_s", 1e-3, 0},
 };
 
 /// JSON Lines carry 6 significant digits (%.6g): within 5e-6 relative of the double sent (and
 /// the outline's float32 points 6e-8 of theirs).
 bool agree(double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + 1e-15; }
 
-/// Every frame's contacts in the JSON Lines file, by frame number.
-std::map<std::uint64_t, std::vector<Fields>> read_json_lines(const std::string& path) {
+/// Every frame's contacts in the JSON Lines file, by frame number; its board time into `board_times`.
+std::map<std::uint64_t, std::vector<Fields>> read_json_lines(const std::string& path,
+                                                              std::map<std::uint64_t, double>& board_times) {
   std::map<std::uint64_t, std::vector<Fields>> frames;
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {
     const nlohmann::json j = nlohmann::json::parse(line);
+    board_times[j.at("frame").get<std::uint64_t>()] = j.at("board_time_s").get<double>();
     std::vector<Fields>& contacts = frames[j.at("frame").get<std::uint64_t>()];
     for (const nlohmann::json& c : j.at("contacts")) {
       Fields f(field_count);
@@ -204,6 +210,7 @@ int main(int argc, char** argv) {
   // nothing more arrives.
   std::vector<std::uint64_t> numbers;
   std::map<std::uint64_t, std::vector<Fields>> received_contacts;
+  std::map<std::uint64_t, double> received_board_times, written_board_times;
   long elongated = 0;
   std::vector<double> latency_ms;
   std::string problem;
@@ -227,6 +234,7 @@ int main(int argc, char** argv) {
           static_cast<std::uint64_t>(m->header.stamp.sec) * 1'000'000'000u + m->header.stamp.nanosec;
       latency_ms.push_back(1e-6 * static_cast<double>(received - stamp));
       numbers.push_back(m->frame);
+      received_board_times[m->frame] = m->board_time;
       std::vector<Fields>& kept = received_contacts[m->frame];
       for (std::uint32_t c = 0; c < m->contacts._length; ++c) kept.push_back(fields_of(m->contacts._buffer[c]));
       if (problem.empty() && std::string(m->header.frame_id) != "emit_sheet") problem = "header.frame_id";
@@ -296,13 +304,19 @@ int main(int argc, char** argv) {
   // Every field of every contact received, as the JSON Lines say.
   std::map<std::uint64_t, std::vector<Fields>> written;
   try {
-    written = read_json_lines(json_path);
+    written = read_json_lines(json_path, written_board_times);
   } catch (const std::exception& e) {
     std::remove(json_path);
     return fail(std::string("reading the JSON Lines: ") + e.what());
   }
   std::remove(json_path);
   long compared = 0;
+  for (const auto& [frame, board_time] : received_board_times) {  // %.9g in the JSON Lines
+    const auto line = written_board_times.find(frame);
+    if ((line == written_board_times.end() || std::abs(line->second - board_time) > 1e-8 * (1 + board_time)) &&
+        problem.empty())
+      problem = "frame " + std::to_string(frame) + "'s board time is not the JSON Lines'";
+  }
   for (const auto& [frame, contacts_received] : received_contacts) {
     const auto line = written.find(frame);
     if (line == written.end() || line->second.size() != contacts_received.size()) {

@@ -27,6 +27,9 @@ enum class TouchPhase : std::uint8_t {
   up,    ///< the touch has ended: its last state, reported once, in the frame after its last
 };
 
+/// "none", "down", "move", "up": as JSON Lines and CSV tracks write a phase.
+const char* touch_phase_name(TouchPhase phase);
+
 struct Contact {
   /// The contact's point of the sheet and the sheet's unit outward normal there
   /// (sensor/surface.hpp): the point the centroid (weighted by area × weight, see find()) names.

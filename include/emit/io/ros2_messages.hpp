@@ -36,7 +36,7 @@ namespace emit {
 /// The messages' header frame: the sheet's coordinate frame in a ROS graph.
 inline constexpr std::string_view ros2_frame_id = "emit_sheet";
 
-/// Nanoseconds since the Unix epoch, now (the host's clock: a message's receive-time stamp).
+/// Nanoseconds since the Unix epoch, now (the host's system clock).
 std::uint64_t unix_time_ns();
 
 /// A message's time: ROS's builtin_interfaces/Time, from nanoseconds since the Unix epoch.
@@ -63,7 +63,9 @@ const Ros2MessageType& mesh_message();
 /// A contact's fields as the messages carry them (emit_msgs/TactileContact), in SI units: the
 /// one conversion of emit's contacts, for the CDR here and for DDS (live/dds_publisher.hpp).
 struct Ros2Contact {
-  std::array<char, 32> name;            ///< "contact_<i>", i its rank in the frame (strongest first)
+  /// "touch_<id>" when tracked (frame/contact_tracker.hpp), else "contact_<i>", i its rank in the
+  /// frame (strongest first)
+  std::array<char, 32> name;
   Vector3 position_m, normal, force_N;  ///< force: the press on the sheet, −force_N · normal
   double area_m2, pressure_Pa, peak_pressure_Pa, position_std_x_m, position_std_y_m, pressure_std_Pa, force_std_N;
   /// The outline's ellipse (frame/contacts.hpp; all 0 when it has none) and the 1σ of its area and
@@ -73,14 +75,18 @@ struct Ros2Contact {
   /// outline_size points; a geometry_msgs/Polygon's Point32s with z = 0.
   std::array<std::array<float, 2>, Outline::capacity> outline_m;
   std::uint32_t outline_size;
+  Vector3 velocity_m_per_s;  ///< along the chart's axes, z = 0; 0 when not tracked
 };
 Ros2Contact ros2_contact(const Contact& contact, std::size_t rank);
 
 /// Each fills `out` (cleared first) with the CDR bytes of one message.
 void encode_tactile_state(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
                           std::string_view sensor_name, const FrameView& volts);
+/// `board_time_s`: the frame's time on the board's clock; `ended`: the touches that ended with it
+/// (null: none).
 void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
-                             std::uint64_t frame, const std::vector<Contact>& contacts);
+                             std::uint64_t frame, const std::vector<Contact>& contacts, double board_time_s = 0,
+                             const std::vector<Contact>* ended = nullptr);
 void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
                            std::uint64_t frame, const Vector& pressure_N_per_mm2);
 void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh);

@@ -31,10 +31,12 @@ class TactileMcap {
   /// Opens PATH first. \throw IoError naming the file (a missing folder: before anything is written).
   TactileMcap(const std::string& path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
 
-  /// One frame's three messages, at `time_ns` (ns since the Unix epoch). Allocates nothing once
-  /// warm. \throw IoError.
+  /// One frame's three messages, at `time_ns` (ns since the Unix epoch: when the frame reached
+  /// the host; the messages' header stamps and MCAP log times), taken by the board at
+  /// `board_time_s` on its clock; `ended`: the tracked touches that ended with it (null: none).
+  /// Allocates nothing once warm. \throw IoError.
   void write(std::uint64_t frame, std::uint64_t time_ns, const FrameView& volts, const std::vector<Contact>& contacts,
-             const Vector& pressure_N_per_mm2);
+             const Vector& pressure_N_per_mm2, double board_time_s = 0, const std::vector<Contact>* ended = nullptr);
   /// \throw IoError. Without it, PATH.partial stays and PATH is untouched.
   void close() { mcap_.close(); }
 

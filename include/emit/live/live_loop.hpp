@@ -27,7 +27,11 @@ struct LiveFrame {
   bool capturing_reference = false;  ///< no reference yet, or a re-capture under way: no contacts
   std::uint64_t reference_captures = 0;
   const Frame* volts = nullptr;  ///< the frame as the source gave it
+  double board_time_s = 0;       ///< when the board took it, on the board's clock (SourceFrame)
+  std::uint64_t host_time_ns = 0;  ///< when it reached the host, ns since the Unix epoch (system clock)
   const std::vector<Contact>* contacts = nullptr;
+  /// The touches that ended with this frame, their last state (frame/contact_tracker.hpp); null: none.
+  const std::vector<Contact>* ended = nullptr;
   const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
   double frames_per_s = 0;                     ///< recent rate (over about the last second)
   double latency_s = 0;                        ///< the previous frame's end-to-end latency
@@ -115,7 +119,7 @@ class LiveLoop {
   /// \return the contacts of a reconstructed frame; null for a capture frame.
   const std::vector<Contact>* handle(const SourceFrame& frame);
   void publish(LiveFrame& frame);
-  void write_contacts(std::uint64_t sequence, const std::vector<Contact>& contacts);
+  void write_contacts(const LiveFrame& frame, const std::vector<Contact>& contacts);
 
   FrameSource& source_;
   LiveOptions options_;
