@@ -109,6 +109,9 @@ void add_live_command(CLI::App& app) {
   cmd->add_option("--contacts", job.contacts_path,
                   "Contacts out as JSON Lines: a file (FILE.partial until the end), a FIFO (readers may come and go), "
                   "or - for stdout (the run ends when its reader goes)");
+  cmd->add_option("--tracks", job.tracks_path,
+                  "Touches out as CSV, one row per touch per frame (time_s, id, phase, x_mm, y_mm, force_N, ...) for "
+                  "a spreadsheet or pandas (FILE.partial until the end)");
   cmd->add_option("--method", a->method,
                   "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))

@@ -102,6 +102,13 @@ list of Contact. A recording ends the iteration at its end; max_frames > 0 ends 
           "sequence", [](const LiveStream& self) { return self.loop().last_frame().sequence; },
           "The source's number of the last frame.")
       .def_property_readonly(
+          "board_time_s", [](const LiveStream& self) { return self.loop().last_frame().board_time_s; },
+          "When the board took the last frame [s], on the board's clock.")
+      .def_property_readonly(
+          "host_time_s",
+          [](const LiveStream& self) { return 1e-9 * static_cast<double>(self.loop().last_host_time_ns()); },
+          "When the last frame reached this computer [s since the Unix epoch, the system clock: time.time()'s].")
+      .def_property_readonly(
           "pressure", [](const LiveStream& self) { return to_numpy(Vector(self.loop().reconstructor().pressure())); },
           "The last frame's pressure per triangle of `mesh` [N/mm^2].")
       .def_property_readonly(

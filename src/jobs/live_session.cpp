@@ -35,7 +35,7 @@ struct LiveSession::Impl {
   std::optional<Recorder> recorder;
   std::optional<McapPublisher> mcap;
   std::optional<DdsPublisher> dds;
-  std::array<OutputFile, 3> outputs;  ///< --contacts, --record, --mcap (the last two moved to their writers)
+  std::array<OutputFile, 4> outputs;  ///< --contacts, --tracks, --record, --mcap (the last two moved to their writers)
 };
 
 LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
@@ -50,9 +50,10 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   s.outputs =
       open_outputs({{"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}, {"--source", source_file}},
                    {OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
+                    OutputRequest{{"--tracks", job.tracks_path}, {.partial = true}},
                     OutputRequest{{"--record", job.record_path}, {.partial = true}},
                     OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
-  auto& [contacts, record, mcap] = s.outputs;
+  auto& [contacts, tracks, record, mcap] = s.outputs;
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
@@ -78,6 +79,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
     s.loop->add_publisher(&*s.server);
   }
   if (contacts.given()) s.loop->write_contacts_to(&contacts);
+  if (tracks.given()) s.loop->write_tracks_to(&tracks);
   if (mcap.given()) s.loop->add_publisher(&s.mcap.emplace(std::move(mcap), s.sensor.name, s.pipeline->model().mesh));
   if (!job.dds_prefix.empty())
     s.loop->add_publisher(
@@ -100,6 +102,7 @@ LiveStats LiveSession::run(const std::atomic<bool>& stop) {
   if (s.mcap) s.mcap->close();
   // A reader that went away has had every line it could take: there is nothing left to flush.
   if (OutputFile& contacts = s.outputs[0]; contacts.given() && !contacts.reader_gone()) contacts.commit();
+  if (OutputFile& tracks = s.outputs[1]; tracks.given()) tracks.commit();
   return stats;
 }
 

@@ -2,6 +2,7 @@
 
 #include "emit/core/option_check.hpp"
 #include "emit/io/contacts_jsonl.hpp"
+#include "emit/io/tracks_csv.hpp"
 
 namespace emit {
 
@@ -63,7 +64,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   out.sequence = frame.sequence;
   out.volts = &frame.volts;
   out.board_time_s = frame.board_time_s;
-  out.host_time_ns = unix_time_ns_at(frame.received);
+  out.host_time_ns = last_host_time_ns_ = unix_time_ns_at(frame.received);
   if (recorder_) recorder_->record(frame.raw);
   if (reference_.capturing()) {
     if (reference_.capture(frame.volts)) reconstructor_.set_reference(reference_.reference());
@@ -77,6 +78,10 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
   if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
   if (contacts_out_) write_contacts(out, contacts);
+  if (tracks_out_) {
+    write_tracks_rows(tracks_out_->stream(), frame.board_time_s, frame.sequence, contacts, out.ended);
+    tracks_out_->check();  // a full disk stops the run here
+  }
   out.contacts = &contacts;
   out.pressure_N_per_mm2 = &reconstructor_.pressure();
   publish(out);
@@ -106,6 +111,11 @@ void LiveLoop::write_contacts(const LiveFrame& frame, const std::vector<Contact>
   if (out.clear_interrupted()) return;  // a stop signal while the reader did not read: the loop ends
   if (!out.reader_gone()) out.check();  // throws: a full disk, a device's error
   if (out.kind() != OutputKind::fifo) stats_.contacts_reader_left = true;  // standard output: the run ends
+}
+
+void LiveLoop::write_tracks_to(OutputFile* out) {
+  tracks_out_ = out;
+  if (tracks_out_) write_tracks_header(tracks_out_->stream());
 }
 
 void LiveLoop::publish(LiveFrame& frame) {

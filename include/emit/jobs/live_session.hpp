@@ -27,6 +27,7 @@ struct LiveJob {
   std::string source = "sim";  ///< live/open_source.hpp
   std::string serve;           ///< HOST:PORT for the viewer; empty: none
   std::string contacts_path;   ///< JSON Lines; "-": standard output; a FIFO: readers may come and go; empty: none
+  std::string tracks_path;     ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
   std::string record_path;     ///< empty: no recording
   std::string mcap_path;       ///< empty: no MCAP recording (live/mcap_publisher.hpp)
   std::string dds_prefix;      ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)

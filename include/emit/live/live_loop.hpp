@@ -85,6 +85,9 @@ class LiveLoop {
   /// standard output (a pipe that cannot be reopened) ends the run (LiveStats::contacts_reader_left).
   /// Any other failed write throws IoError naming the output. Must outlive run().
   void write_contacts_to(OutputFile* out) { contacts_out_ = out; }
+  /// Tracked contacts as CSV rows (io/tracks_csv.hpp), time = the board's; its header first.
+  /// Null: none. A failed write throws IoError naming the output. Must outlive run().
+  void write_tracks_to(OutputFile* out);
   /// Every frame the source gives (the reference's capture included) is recorded here, as the board sent
   /// it (SourceFrame::raw). Null: none.
   void record_to(Recorder* recorder) { recorder_ = recorder; }
@@ -112,6 +115,8 @@ class LiveLoop {
   /// The last frame the source gave, and the reconstructor (its pressure and image are the last
   /// reconstructed frame's).
   const SourceFrame& last_frame() const { return frame_; }
+  /// When the last frame handled reached the host [ns since the Unix epoch, the system clock].
+  std::uint64_t last_host_time_ns() const { return last_host_time_ns_; }
   const Reconstructor& reconstructor() const { return reconstructor_; }
   const LiveStats& stats() const { return stats_; }
 
@@ -126,6 +131,7 @@ class LiveLoop {
   Reconstructor reconstructor_;
   ReferenceTracker reference_;
   OutputFile* contacts_out_ = nullptr;
+  OutputFile* tracks_out_ = nullptr;
   Recorder* recorder_ = nullptr;
   std::vector<FramePublisher*> publishers_;
   std::function<void(const SourceFrame&, const std::vector<Contact>&)> observer_;
@@ -136,6 +142,7 @@ class LiveLoop {
   LiveStats stats_;
   std::uint64_t handled_ = 0;
   std::uint64_t last_sequence_ = 0;  ///< of the last frame handled (valid once handled_ > 0)
+  std::uint64_t last_host_time_ns_ = 0;
   std::chrono::steady_clock::time_point first_, last_, previous_publish_;
   double mean_interval_s_ = 0, last_latency_s_ = 0;
 };
