@@ -202,10 +202,7 @@ bool SimSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
   return false;
 }
 
-bool SimSource::finished() const {
-  std::lock_guard lock(mutex_);
-  return failure_ && queue_.empty();
-}
+bool SimSource::finished() const { return false; }  // the twin streams until it fails (next() throws) or is stopped
 
 std::uint64_t SimSource::dropped() const {
   std::lock_guard lock(mutex_);

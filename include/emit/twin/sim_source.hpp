@@ -43,7 +43,10 @@ class SimSource : public FrameSource {
   SimSource(const SimSource&) = delete;
   SimSource& operator=(const SimSource&) = delete;
 
+  /// \throw IoError "source sim: …" once the twin has failed (after the frames it made before),
+  ///   and again on every later call.
   bool next(SourceFrame& frame, std::chrono::milliseconds timeout) override;
+  /// Never: the twin streams until it fails or the reader stops (frame_source.hpp).
   bool finished() const override;
   std::string description() const override;
 
