@@ -81,7 +81,9 @@ void run_live(const LiveJob& job) {
     if (!session.kept_partial().empty()) {
       std::string kept;
       for (const std::string& path : session.kept_partial()) kept += (kept.empty() ? "" : ", ") + path;
-      std::fprintf(stderr, "emit: the run failed; what it wrote is kept in %s (the files it would have replaced are untouched)\n",
+      std::fprintf(stderr,
+                   "emit: the run failed; what it wrote is kept in %s (the files it would have replaced are "
+                   "untouched)\n",
                    kept.c_str());
     }
     throw;
@@ -113,7 +115,8 @@ void add_live_command(CLI::App& app) {
       "  emit live --source file:session.emitrec --contacts - --fps 0\n"
       "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
   cmd->add_option("--source", job.source,
-                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], sim:fixed:OUTLINE (a flat "
+                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed (at the middle), sim:fixed:X,Y[,F], "
+                  "sim:fixed:OUTLINE (a flat "
                   "punch held, as simulate --press takes it: bar:x,y,L,W,angle,F, ellipse:…), file:REC (a recording), "
                   "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
       ->capture_default_str();

@@ -64,7 +64,7 @@ class LiveStream {
 void bind_live(py::module_& m) {
   py::class_<LiveStream>(m, "LiveStream", R"(A live source as an iterator of (frame, contacts), as `emit live` reads it.
 
-source: "sim" (a finger moving over the twin's sheet), "sim:random", "sim:fixed:X,Y[,F]",
+source: "sim" (a finger moving over the twin's sheet), "sim:random", "sim:fixed" (at the middle), "sim:fixed:X,Y[,F]",
 "file:PATH" (a recording) or "serial:PATH[@BAUD]" (the board). The first capture_frames frames
 are averaged into the baseline and not yielded; each later frame comes as its (N, N) volts and its
 list of Contact. A recording ends the iteration at its end; max_frames > 0 ends it after that many.

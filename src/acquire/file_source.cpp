@@ -44,7 +44,8 @@ FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_p
 }
 
 std::string FileSource::description() const {
-  return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames" + (cut_bytes_ > 0 ? " and a cut one, " : ", ") +
+  return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames" +
+         (cut_bytes_ > 0 ? " and a cut one, " : ", ") +
          (as_fast_as_possible_ ? "as fast as possible" : "at the recorded pace") + (loop_ ? ", in a loop)" : ")");
 }
 

@@ -116,8 +116,7 @@ ScriptedPresses::ScriptedPresses(const Sensor& sensor, const Mesh& mesh, SimScri
       border_points_mm_.push_back(surface_point_mm(sensor_.shape, outline.point_at(outline.length_mm() * k / samples)));
   }
   const double least_room_mm = script_.radius_mm + margin_mm;
-  if ((script_.kind == SimScript::Kind::loop || script_.fixed_at_middle) &&
-      room_mm(center_mm_) < least_room_mm) {
+  if ((script_.kind == SimScript::Kind::loop || script_.fixed_at_middle) && room_mm(center_mm_) < least_room_mm) {
     char text[160];
     std::snprintf(text, sizeof text, "source sim: the sheet's middle (%g, %g) mm is within %g mm of its border",
                   center_mm_.x(), center_mm_.y(), least_room_mm);

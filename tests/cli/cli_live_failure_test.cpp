@@ -56,15 +56,13 @@ std::string bytes_of(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void write_file(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+void write_file(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 /// A recording of 30 frames of the twin (10 for the reference, 20 of a press held at 30, 30).
 std::string thirty_frames(const std::string& dir) {
   const std::string path = dir + "/rec.emitrec";
-  const auto r = run_emit("live --method paper --source sim:fixed:30,30,10 --fps 0 --frames 20 --record " + path +
-                          cache());
+  const auto r =
+      run_emit("live --method paper --source sim:fixed:30,30,10 --fps 0 --frames 20 --record " + path + cache());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(fs::file_size(path), header_bytes + 30 * packet_bytes);
   return bytes_of(path);
@@ -112,8 +110,8 @@ TEST(CliLiveFailure, ASourceThatFailsMidRunEndsWithItsMessage) {
   bytes[header_bytes + 15 * packet_bytes + 100] ^= 0x04;
   const std::string corrupt = dir + "/corrupt.emitrec";
   write_file(corrupt, bytes);
-  const auto r = run_emit("live --method paper --source file:" + corrupt + " --fps 0 --mcap " + dir + "/m.mcap" +
-                          cache());
+  const auto r =
+      run_emit("live --method paper --source file:" + corrupt + " --fps 0 --mcap " + dir + "/m.mcap" + cache());
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(last_line(r.err), "emit: " + corrupt + ": frame 15 (byte 8012) is not a valid packet (sync, header or CRC)")
       << r.err;
@@ -133,9 +131,11 @@ TEST(CliLiveFailure, ASerialPortRemovedForGoodEndsWithItsMessage) {
   const std::string port = pty->slave_path();
   int out[2];
   ASSERT_EQ(::pipe2(out, O_CLOEXEC), 0);
-  const std::vector<std::string> arguments = {
-      test::cli_path(), "live", "--method", "paper", "--source", "serial:" + port, "--reconnect-s", "1",
-      "--cache",        test::temp_folder("cli_live_failure_cache")};
+  const std::vector<std::string> arguments = {test::cli_path(), "live",
+                                              "--method",       "paper",
+                                              "--source",       "serial:" + port,
+                                              "--reconnect-s",  "1",
+                                              "--cache",        test::temp_folder("cli_live_failure_cache")};
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -150,7 +150,8 @@ TEST(CliLiveFailure, ASerialPortRemovedForGoodEndsWithItsMessage) {
   // The port is open and the models built once emit says it is reconstructing.
   std::string said;
   char buffer[256];
-  for (ssize_t n; said.find("reconstructing with") == std::string::npos && (n = ::read(out[0], buffer, sizeof buffer)) > 0;)
+  for (ssize_t n;
+       said.find("reconstructing with") == std::string::npos && (n = ::read(out[0], buffer, sizeof buffer)) > 0;)
     said.append(buffer, static_cast<std::size_t>(n));
   ASSERT_NE(said.find("reconstructing with"), std::string::npos) << said << test::read_text(dir + "/stderr");
   const auto pulled = std::chrono::steady_clock::now();
@@ -195,6 +196,15 @@ TEST(CliLiveFailure, AWriterThatFailsEndsTheRun) {
   EXPECT_NE(r.out.find("live: 0 frames in "), std::string::npos) << r.out;
   EXPECT_EQ(test::read_text(dir + "/rec.emitrec"), "OLD");
   EXPECT_EQ(fs::file_size(dir + "/rec.emitrec.partial"), header_bytes + 11 * packet_bytes);
+}
+
+// The reconnection time is a positive number of seconds, refused on the command line otherwise.
+TEST(CliLiveFailure, AReconnectionTimeMustBePositive) {
+  for (const std::string value : {"0", "-1", "x"}) {
+    const auto r = run_emit("live --source sim --reconnect-s " + value);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.err, "emit: --reconnect-s: must be a positive number, got \"" + value + "\" (see 'emit --help')\n");
+  }
 }
 
 }  // namespace

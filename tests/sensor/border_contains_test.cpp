@@ -19,11 +19,11 @@ namespace {
 TEST(BorderContains, PointsOnTheLinesWhereArcsMeetAreInside) {
   for (const Vector2& centre : {Vector2(0, 0), Vector2(30, 30), Vector2(-7.5, 12.25)}) {
     const Border circle = Border::circle(centre, 20);
-    for (const Vector2& offset :
-         {Vector2(1.3e-15, -2.0e-15), Vector2(0, 0), Vector2(0, -1e-15), Vector2(0, 1e-15), Vector2(-10, -4.9e-15),
-          Vector2(10, -4.9e-15), Vector2(19.9, 2e-15), Vector2(-19.9, -2e-15), Vector2(-3e-15, 15), Vector2(2e-15, -15)})
-      EXPECT_TRUE(circle.contains(centre + offset)) << "centre (" << centre.transpose() << ") + ("
-                                                    << offset.transpose() << ")";
+    for (const Vector2& offset : {Vector2(1.3e-15, -2.0e-15), Vector2(0, 0), Vector2(0, -1e-15), Vector2(0, 1e-15),
+                                  Vector2(-10, -4.9e-15), Vector2(10, -4.9e-15), Vector2(19.9, 2e-15),
+                                  Vector2(-19.9, -2e-15), Vector2(-3e-15, 15), Vector2(2e-15, -15)})
+      EXPECT_TRUE(circle.contains(centre + offset))
+          << "centre (" << centre.transpose() << ") + (" << offset.transpose() << ")";
     // And outside stays outside on those lines: 20.01 mm out along each axis.
     for (const Vector2& offset : {Vector2(20.01, -2e-15), Vector2(-20.01, 2e-15), Vector2(1e-15, 20.01)})
       EXPECT_FALSE(circle.contains(centre + offset)) << "(" << offset.transpose() << ")";

@@ -104,8 +104,7 @@ TEST_P(SimScriptsOnSheets, AMinuteOfEachScriptStaysOnTheSheet) {
     std::uint64_t pressed = 0, failures = 0;
     Press riskiest, first;
     double riskiest_room_mm = std::numeric_limits<double>::infinity();
-    for (std::uint64_t sequence = 0; sequence < minute_frames + options.untouched_frames && failures < 5;
-         ++sequence) {
+    for (std::uint64_t sequence = 0; sequence < minute_frames + options.untouched_frames && failures < 5; ++sequence) {
       for (const Press& press : script.presses_of(sequence)) {
         if (pressed++ == 0) first = press;
         try {
@@ -129,9 +128,11 @@ TEST_P(SimScriptsOnSheets, AMinuteOfEachScriptStaysOnTheSheet) {
     // per lift-off (16, 150 edges): the frame on an edge falls either side by rounding.
     const double expected = spec == "sim" ? 2600 : spec == "sim:random" ? 2250 : 3000;
     EXPECT_NEAR(static_cast<double>(pressed), expected, spec == "sim" ? 16 : spec == "sim:random" ? 150 : 0);
-    std::printf("%s, %s: %llu presses, the nearest %.2f mm from the border (radius + margin %.1f mm); figure-eight %.2f of its reach\n",
-                name.c_str(), spec.c_str(), static_cast<unsigned long long>(pressed), riskiest_room_mm,
-                script.script().radius_mm + ScriptedPresses::margin_mm, script.loop_scale());
+    std::printf(
+        "%s, %s: %llu presses, the nearest %.2f mm from the border (radius + margin %.1f mm); figure-eight %.2f of its "
+        "reach\n",
+        name.c_str(), spec.c_str(), static_cast<unsigned long long>(pressed), riskiest_room_mm,
+        script.script().radius_mm + ScriptedPresses::margin_mm, script.loop_scale());
     if (spec == "sim") {
       EXPECT_GE(script.loop_scale(), 0.5) << "the figure-eight shrank to a dot";
     }

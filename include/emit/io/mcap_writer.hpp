@@ -59,7 +59,7 @@ class McapWriter {
  private:
   void record(std::uint8_t opcode, std::span<const std::uint8_t> content);
   void write(const void* bytes, std::size_t size);
-  void check() const;  ///< \throw IoError if a write failed
+  void check() const;     ///< \throw IoError if a write failed
   void end(bool rename);  ///< close() (rename) or close_partial()
 
   OutputFile file_;

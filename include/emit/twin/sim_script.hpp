@@ -35,9 +35,9 @@ struct SimScript {
   double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
 };
 
-/// "sim", "sim:loop", "sim:random", "sim:fixed" (10 N held at the sheet's middle), "sim:fixed:X,Y[,F]", or "sim:fixed:OUTLINE": a flat punch of any
-/// outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…, ring:…, polygon:…; flat
-/// sheets only: sensor/press_outline.hpp), held. \throw InvalidInput naming the spec.
+/// "sim", "sim:loop", "sim:random", "sim:fixed" (10 N held at the sheet's middle), "sim:fixed:X,Y[,F]", or
+/// "sim:fixed:OUTLINE": a flat punch of any outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…,
+/// ring:…, polygon:…; flat sheets only: sensor/press_outline.hpp), held. \throw InvalidInput naming the spec.
 SimScript parse_sim_script(const std::string& spec);
 
 /// A script on a sheet: the presses of every frame.
@@ -78,8 +78,8 @@ class ScriptedPresses {
   const Mesh& mesh_;
   SimScript script_;
   SourceOptions options_;
-  Vector2 center_mm_, half_extent_mm_;  ///< of the sheet's chart box, for the loop's path
-  double loop_scale_ = 1;               ///< of the figure-eight's full reach, as the sheet has room
+  Vector2 center_mm_, half_extent_mm_;     ///< of the sheet's chart box, for the loop's path
+  double loop_scale_ = 1;                  ///< of the figure-eight's full reach, as the sheet has room
   std::vector<Vector3> border_points_mm_;  ///< the border on the surface (room_mm)
 };
 

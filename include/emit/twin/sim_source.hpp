@@ -3,7 +3,8 @@
 /// The digital twin as a live source: a scripted finger presses the sheet, the twin computes each
 /// frame (with the ADC's noise) on a thread of its own, paced at SourceOptions::frames_per_s, and
 /// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame
-/// `sequence` is a pure function of the script (presses_of, twin/sim_script.hpp), so tests can compare contacts with the truth.
+/// `sequence` is a pure function of the script (presses_of, twin/sim_script.hpp), so tests can compare contacts with
+/// the truth.
 #include <condition_variable>
 #include <deque>
 #include <exception>
