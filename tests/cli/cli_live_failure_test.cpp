@@ -137,6 +137,7 @@ TEST(CliLiveFailure, ASerialPortRemovedForGoodEndsWithItsMessage) {
                                               "--reconnect-s",  "1",
                                               "--cache",        test::temp_folder("cli_live_failure_cache")};
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;

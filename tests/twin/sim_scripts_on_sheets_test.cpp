@@ -30,7 +30,7 @@ namespace emit {
 namespace {
 
 constexpr double frames_per_s = 50;
-constexpr std::uint64_t minute_frames = 60 * 50;
+constexpr std::uint64_t minute_frames = 60ull * 50;
 
 /// "default" (the built-in sensor) and the name of every examples/sensors/*.json.
 std::vector<std::string> built_in_sheets() {
