@@ -41,6 +41,17 @@ struct LiveArgs {
   bool no_cache = false;
 };
 
+void print_summary(FILE* say, const LiveStats& stats) {
+  std::fprintf(say,
+               "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
+               "(from a frame's arrival to its contacts written and published); %llu missed (gaps in the "
+               "source's frame numbers)\n",
+               static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
+               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
+               static_cast<unsigned long long>(stats.frames_missed));
+  std::fflush(say);
+}
+
 }  // namespace
 
 void run_live(const LiveJob& job) {
@@ -60,20 +71,30 @@ void run_live(const LiveJob& job) {
 
   stop_requested = false;
   const StopOnSignals signals;
-  const LiveStats stats = session.run(stop_requested);
+  LiveStats stats;
+  try {
+    stats = session.run(stop_requested);
+  } catch (const std::exception&) {
+    // What the run did before it failed, and where what it wrote is; main() then prints the
+    // failure itself, last, and exits 1.
+    print_summary(say, session.stats());
+    if (!session.kept_partial().empty()) {
+      std::string kept;
+      for (const std::string& path : session.kept_partial()) kept += (kept.empty() ? "" : ", ") + path;
+      std::fprintf(stderr,
+                   "emit: the run failed; what it wrote is kept in %s (the files it would have replaced are "
+                   "untouched)\n",
+                   kept.c_str());
+    }
+    throw;
+  }
   if (stats.contacts_reader_left)
     std::fprintf(stderr, "emit: the reader of --contacts %s went away; stopped after %llu frames\n",
                  job.contacts_path.c_str(), static_cast<unsigned long long>(stats.frames));
   else if (stats.contacts_dropped > 0)
     std::fprintf(stderr, "emit: %llu contacts lines dropped while no one read --contacts %s\n",
                  static_cast<unsigned long long>(stats.contacts_dropped), job.contacts_path.c_str());
-  std::fprintf(say,
-               "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
-               "(from a frame's arrival to its contacts written and published); %llu missed (gaps in the "
-               "source's frame numbers)\n",
-               static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
-               1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
-               static_cast<unsigned long long>(stats.frames_missed));
+  print_summary(say, stats);
   if (!job.mcap_path.empty())
     std::fprintf(say, "recorded the reconstructed frames to %s (MCAP)\n", job.mcap_path.c_str());
   if (!job.record_path.empty())
@@ -94,7 +115,8 @@ void add_live_command(CLI::App& app) {
       "  emit live --source file:session.emitrec --contacts - --fps 0\n"
       "  emit live --source sim:fixed:20,40 --frames 100 --contacts contacts.jsonl");
   cmd->add_option("--source", job.source,
-                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed:X,Y[,F], sim:fixed:OUTLINE (a flat "
+                  "sim (a finger moving in a figure-eight), sim:random, sim:fixed (at the middle), sim:fixed:X,Y[,F], "
+                  "sim:fixed:OUTLINE (a flat "
                   "punch held, as simulate --press takes it: bar:x,y,L,W,angle,F, ellipse:…), file:REC (a recording), "
                   "or serial:PORT[@BAUD] (the board; 921600 baud by default)")
       ->capture_default_str();
@@ -132,6 +154,11 @@ void add_live_command(CLI::App& app) {
   cmd->add_option("--fps", job.frames_per_s,
                   "The simulator's frame rate; 0 replays a recording as fast as it goes (otherwise at its own pace)")
       ->check(non_negative_number())
+      ->capture_default_str();
+  cmd->add_option("--reconnect-s", job.reconnect_s,
+                  "serial: how long a port that went away (a pulled cable) is retried, every 0.5 s, before the run "
+                  "fails with its error")
+      ->check(positive_number())
       ->capture_default_str();
   cmd->add_flag("--loop", job.loop,
                 "Replay the recording (file:REC) again from its start at its end, frame numbers and board time "

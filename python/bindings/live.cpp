@@ -33,6 +33,7 @@ class LiveStream {
   }
 
   /// The next reconstructed frame's contacts; null at the source's end or after max_frames.
+  /// \throw IoError when the source fails (finished() is its normal end only: frame_source.hpp).
   /// Waits for frames without the GIL, taking it back between them to let Ctrl-C through.
   const std::vector<Contact>* next() {
     while (true) {
@@ -63,13 +64,17 @@ class LiveStream {
 void bind_live(py::module_& m) {
   py::class_<LiveStream>(m, "LiveStream", R"(A live source as an iterator of (frame, contacts), as `emit live` reads it.
 
-source: "sim" (a finger moving over the twin's sheet), "sim:random", "sim:fixed:X,Y[,F]",
+source: "sim" (a finger moving over the twin's sheet), "sim:random", "sim:fixed" (at the middle), "sim:fixed:X,Y[,F]",
 "file:PATH" (a recording) or "serial:PATH[@BAUD]" (the board). The first capture_frames frames
 are averaged into the baseline and not yielded; each later frame comes as its (N, N) volts and its
-list of Contact. A recording ends the iteration at its end; max_frames > 0 ends it after that many.)")
+list of Contact. A recording ends the iteration at its end; max_frames > 0 ends it after that many.
+A source that fails raises emit.IoError with its message (a recording cut mid-packet or corrupt,
+after the frames before it; the twin's error; a serial port gone longer than reconnect_s seconds:
+a pulled cable put back within them is no failure): a failure never ends the iteration quietly.)")
       .def(py::init([](const std::string& source, const std::optional<Sensor>& sensor, const std::string& method,
                        const std::optional<PythonCalibration>& calibration, double frames_per_s, std::uint64_t seed,
-                       bool loop, int capture_frames, std::uint64_t max_frames, const std::string& cache_dir) {
+                       bool loop, int capture_frames, std::uint64_t max_frames, const std::string& cache_dir,
+                       double reconnect_s) {
              PipelineOptions pipeline;
              pipeline.method = parse_method(method);
              pipeline.cache_dir = cache_dir;
@@ -77,6 +82,7 @@ list of Contact. A recording ends the iteration at its end; max_frames > 0 ends 
              source_options.frames_per_s = frames_per_s;
              source_options.seed = seed;
              source_options.loop = loop;
+             source_options.reconnect_s = reconnect_s;
              LiveOptions options;
              options.reference.capture_frames = capture_frames;
              options.max_frames = max_frames;
@@ -88,7 +94,7 @@ list of Contact. A recording ends the iteration at its end; max_frames > 0 ends 
            py::arg("source"), py::arg("sensor") = py::none(), py::arg("method") = "paper",
            py::arg("calibration") = py::none(), py::kw_only(), py::arg("frames_per_s") = 50.0, py::arg("seed") = 1,
            py::arg("loop") = false, py::arg("capture_frames") = 10, py::arg("max_frames") = 0,
-           py::arg("cache_dir") = "")
+           py::arg("cache_dir") = "", py::arg("reconnect_s") = 30.0)
       .def("__iter__", [](py::object self) { return self; })
       .def("__next__",
            [](LiveStream& self) {

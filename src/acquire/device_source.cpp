@@ -1,5 +1,8 @@
 #include "emit/acquire/device_source.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "emit/acquire/file_source.hpp"
 #include "emit/acquire/serial_source.hpp"
 #include "emit/core/errors.hpp"
@@ -10,7 +13,7 @@ namespace {
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }
 
 /// "serial:PATH" or "serial:PATH@BAUD" → a serial source.
-std::unique_ptr<FrameSource> open_serial(const std::string& spec, const Sensor& sensor) {
+std::unique_ptr<FrameSource> open_serial(const std::string& spec, const Sensor& sensor, double reconnect_s) {
   std::string path = spec.substr(7);
   unsigned baud = default_serial_baud;
   if (const std::size_t at = path.rfind('@'); at != std::string::npos) {
@@ -22,7 +25,8 @@ std::unique_ptr<FrameSource> open_serial(const std::string& spec, const Sensor& 
     path.resize(at);
   }
   if (path.empty()) throw InvalidInput("source \"" + spec + "\": no device path; expected serial:PATH[@BAUD]");
-  return std::make_unique<SerialSource>(path, baud, sensor);
+  const auto give_up_after = std::chrono::milliseconds(std::llround(std::min(reconnect_s, 1e9) * 1e3));
+  return std::make_unique<SerialSource>(path, baud, sensor, std::chrono::milliseconds(500), give_up_after);
 }
 
 }  // namespace
@@ -32,7 +36,7 @@ std::unique_ptr<FrameSource> open_device_source(const std::string& spec, const S
   if (starts_with(spec, "serial:")) {
     if (options.loop)
       throw InvalidInput("source \"" + spec + "\": only a recording (file:PATH) can be replayed in a loop");
-    return open_serial(spec, sensor);
+    return open_serial(spec, sensor, options.reconnect_s);
   }
   if (starts_with(spec, "file:")) {
     const std::string path = spec.substr(5);

@@ -37,16 +37,15 @@ FileSource::FileSource(std::string path, const Sensor& sensor, bool as_fast_as_p
                        " electrodes, but the sensor has " + std::to_string(sensor.electrode_count()));
   const std::size_t packet_bytes = fw::packet_size(header_.electrode_count);
   const std::uintmax_t body = size - bytes.size();
-  if (body % packet_bytes != 0)
-    throw InvalidInput(path_ + ": truncated: its last packet has " + std::to_string(body % packet_bytes) + " of its " +
-                       std::to_string(packet_bytes) + " bytes");
   frame_count_ = body / packet_bytes;
+  cut_bytes_ = body % packet_bytes;  // a recording cut mid-packet: its whole frames first, then the error
   packet_.resize(packet_bytes);
   pending_.volts.resize(header_.electrode_count, header_.electrode_count);
 }
 
 std::string FileSource::description() const {
-  return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames, " +
+  return "file:" + path_ + " (" + std::to_string(frame_count_) + " frames" +
+         (cut_bytes_ > 0 ? " and a cut one, " : ", ") +
          (as_fast_as_possible_ ? "as fast as possible" : "at the recorded pace") + (loop_ ? ", in a loop)" : ")");
 }
 
@@ -68,6 +67,10 @@ void FileSource::rewind() {
 }
 
 bool FileSource::read_pending() {
+  if (frames_read_ == frame_count_ && cut_bytes_ > 0)
+    throw IoError(path_ + ": truncated: frame " + std::to_string(frame_count_) + " (byte " +
+                  std::to_string(recording_header_size + frame_count_ * packet_.size()) + ") has " +
+                  std::to_string(cut_bytes_) + " of its " + std::to_string(packet_.size()) + " bytes");
   if (frames_read_ == frame_count_) {
     if (!loop_ || frame_count_ == 0) return false;
     rewind();
@@ -134,7 +137,7 @@ bool FileSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
   frame.received = Clock::now();
   have_pending_ = false;
   // The last frame is out: a reader can stop without asking again (a loop goes on).
-  finished_ = !loop_ && frames_read_ >= frame_count_;
+  finished_ = !loop_ && cut_bytes_ == 0 && frames_read_ >= frame_count_;
   return true;
 }
 

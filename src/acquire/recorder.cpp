@@ -63,4 +63,10 @@ void Recorder::close() {
   file_.commit();
 }
 
+void Recorder::close_partial() {
+  if (closed_) return;
+  closed_ = true;
+  file_.finish();
+}
+
 }  // namespace emit

@@ -24,12 +24,13 @@ std::chrono::milliseconds left_until(Clock::time_point deadline) {
 }  // namespace
 
 SerialSource::SerialSource(std::string path, unsigned baud, const Sensor& sensor,
-                           std::chrono::milliseconds retry_interval)
+                           std::chrono::milliseconds retry_interval, std::chrono::milliseconds give_up_after)
     : path_(std::move(path)),
       baud_(baud),
       electrode_count_(sensor.electrode_count()),
       vref_V_(sensor.adc.vref_V),
       retry_interval_(retry_interval),
+      give_up_after_(give_up_after),
       queue_(queue_capacity) {
   for (SourceFrame& slot : queue_) {
     slot.volts.resize(electrode_count_, electrode_count_);
@@ -63,6 +64,7 @@ bool SerialSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
       if (queue_size_ > 0) continue;
       if (Clock::now() >= deadline) return false;
     } else {
+      give_up_if_gone(Clock::now());
       if (Clock::now() >= deadline) return false;
       std::this_thread::sleep_until(std::min(deadline, next_retry_));
     }
@@ -82,7 +84,21 @@ void SerialSource::on_disconnect() {
   port_.close();
   decoder_.restart_stream();
   ++stats_.disconnects;
-  next_retry_ = Clock::now() + retry_interval_;
+  disconnected_at_ = Clock::now();
+  next_retry_ = disconnected_at_ + retry_interval_;
+}
+
+void SerialSource::give_up_if_gone(Clock::time_point now) {
+  if (now - disconnected_at_ < give_up_after_) return;
+  char gone[32];
+  std::snprintf(gone, sizeof gone, "%g s", 1e-3 * static_cast<double>(give_up_after_.count()));
+  fail(description() + ": disconnected for " + gone + " and not back (the last try: " + disconnect_reason_ + ")");
+}
+
+void SerialSource::fail(std::string why) {
+  failed_ = true;
+  failure_ = std::move(why);
+  throw IoError(failure_);
 }
 
 bool SerialSource::try_reconnect(Clock::time_point now) {
@@ -97,12 +113,9 @@ bool SerialSource::try_reconnect(Clock::time_point now) {
 }
 
 void SerialSource::push(const RawFrame& raw, Clock::time_point received) {
-  if (raw.electrode_count != electrode_count_) {
-    failed_ = true;
-    failure_ = description() + ": the board sends frames of " + std::to_string(raw.electrode_count) +
-               " electrodes but the sensor has " + std::to_string(electrode_count_);
-    throw IoError(failure_);
-  }
+  if (raw.electrode_count != electrode_count_)
+    fail(description() + ": the board sends frames of " + std::to_string(raw.electrode_count) +
+         " electrodes but the sensor has " + std::to_string(electrode_count_));
   if (queue_size_ == queue_.size()) {  // the consumer fell behind: drop the oldest
     queue_head_ = (queue_head_ + 1) % queue_.size();
     --queue_size_;

@@ -85,7 +85,10 @@ void McapWriter::write_message(std::uint16_t channel_id, std::uint32_t sequence,
   check();
 }
 
-void McapWriter::close() {
+void McapWriter::close() { end(/*rename=*/true); }
+void McapWriter::close_partial() { end(/*rename=*/false); }
+
+void McapWriter::end(bool rename) {
   if (closed_) return;
   closed_ = true;
   Fields(scratch_).put(crc_);  // the data section's CRC-32: every byte before the Data End record
@@ -93,7 +96,8 @@ void McapWriter::close() {
   Fields(scratch_).put(std::uint64_t{0}).put(std::uint64_t{0}).put(std::uint32_t{0});  // no summary
   record(footer_op, scratch_);
   write(magic, sizeof magic);
-  file_.commit();
+  if (rename) file_.commit();
+  else file_.finish();
 }
 
 void McapWriter::record(std::uint8_t opcode, std::span<const std::uint8_t> content) {

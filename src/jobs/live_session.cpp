@@ -2,7 +2,9 @@
 #include "emit/mesh/sheet_file.hpp"
 
 #include <array>
+#include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "emit/acquire/recorder.hpp"
 #include "emit/core/output_paths.hpp"
@@ -35,7 +37,28 @@ struct LiveSession::Impl {
   std::optional<Recorder> recorder;
   std::optional<McapPublisher> mcap;
   std::optional<DdsPublisher> dds;
-  std::array<OutputFile, 4> outputs;  ///< --contacts, --tracks, --record, --mcap (the last two moved to their writers)
+  std::array<OutputFile, 4> outputs;       ///< --contacts, --tracks, --record, --mcap (the last two moved to their writers)
+  std::vector<std::string> partial_paths;  ///< the PATH.partial each regular file grows as
+  std::vector<std::string> kept;           ///< those a failed run left (LiveSession::kept_partial)
+
+  /// A failed run: every output flushed and closed as it is, none renamed (file's comment in the
+  /// header). Their own errors are dropped: the failure that ended the run is the one to report.
+  void keep_what_was_written() {
+    const auto quietly = [](auto&& close) {
+      try {
+        close();
+      } catch (const std::exception&) {  // e.g. the writer that failed, failing again
+      }
+    };
+    if (recorder) quietly([&] { recorder->close_partial(); });
+    if (mcap) quietly([&] { mcap->close_partial(); });
+    for (OutputFile* output : {&outputs[0], &outputs[1]})  // the contacts and the tracks
+      if (output->given()) quietly([&] { output->finish(); });
+    for (const std::string& path : partial_paths) {
+      std::error_code error;
+      if (std::filesystem::file_size(path, error) > 0 && !error) kept.push_back(path);
+    }
+  }
 };
 
 LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
@@ -54,6 +77,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
                     OutputRequest{{"--record", job.record_path}, {.partial = true}},
                     OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
   auto& [contacts, tracks, record, mcap] = s.outputs;
+  for (const OutputFile& output : s.outputs)
+    if (output.given() && output.kind() == OutputKind::file) s.partial_paths.push_back(output.write_path());
   if (is_every_interface(job.serve))
     progress.warn("--serve " + job.serve + ": the viewer is open to every computer that can reach this one; " +
                   "use 127.0.0.1:PORT to keep it on this computer");
@@ -67,6 +92,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   SourceOptions source_options;
   source_options.frames_per_s = job.frames_per_s;
   source_options.loop = job.loop;
+  source_options.reconnect_s = job.reconnect_s;
   s.source = open_source(job.source, s.sensor, source_options);
   s.pipeline.emplace(s.sensor, PipelineOptions{job.method, 0, job.cache_dir, {}}, calibration, progress.stage,
                      job.calibration_path);
@@ -95,9 +121,18 @@ std::string LiveSession::viewer_url() const { return impl_->server ? impl_->serv
 bool LiveSession::calibrated() const { return impl_->pipeline->calibrated(); }
 std::uint64_t LiveSession::recorded_frames() const { return impl_->recorder ? impl_->recorder->frames() : 0; }
 
+const LiveStats& LiveSession::stats() const { return impl_->loop->stats(); }
+const std::vector<std::string>& LiveSession::kept_partial() const { return impl_->kept; }
+
 LiveStats LiveSession::run(const std::atomic<bool>& stop) {
   Impl& s = *impl_;
-  LiveStats stats = s.loop->run(stop);  // not const: returned by move
+  LiveStats stats;
+  try {
+    stats = s.loop->run(stop);
+  } catch (...) {
+    s.keep_what_was_written();
+    throw;
+  }
   if (s.recorder) s.recorder->close();
   if (s.mcap) s.mcap->close();
   // A reader that went away has had every line it could take: there is nothing left to flush.

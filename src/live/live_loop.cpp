@@ -42,12 +42,21 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
   const auto out_of_time = [&] {
     return options_.max_seconds > 0 && seconds_between(start, std::chrono::steady_clock::now()) >= options_.max_seconds;
   };
-  while (!stop && !source_.finished() && !out_of_time() && !stats_.contacts_reader_left &&
-         (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
-    step();
+  const auto measure = [this] {
+    stats_.seconds = stats_.frames > 1 ? seconds_between(first_, last_) : 0;
+    stats_.frames_per_s = stats_.seconds > 0 ? static_cast<double>(stats_.frames - 1) / stats_.seconds : 0;
+  };
+  try {
+    // finished() is a source's normal end only: a failed one throws from step() (frame_source.hpp).
+    while (!stop && !source_.finished() && !out_of_time() && !stats_.contacts_reader_left &&
+           (options_.max_frames == 0 || stats_.frames < options_.max_frames)) {
+      step();
+    }
+  } catch (...) {
+    measure();  // stats() tells what the run did before it failed
+    throw;
   }
-  stats_.seconds = stats_.frames > 1 ? seconds_between(first_, last_) : 0;
-  stats_.frames_per_s = stats_.seconds > 0 ? static_cast<double>(stats_.frames - 1) / stats_.seconds : 0;
+  measure();
   return stats_;
 }
 

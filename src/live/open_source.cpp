@@ -15,7 +15,7 @@ std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& 
   }
   if (auto device = open_device_source(spec, sensor, options)) return device;
   throw InvalidInput("source \"" + spec +
-                     "\": unknown; expected sim, sim:random, sim:fixed:X,Y[,F], file:PATH or serial:PATH[@BAUD]");
+                     "\": unknown; expected sim, sim:random, sim:fixed[:X,Y[,F]], file:PATH or serial:PATH[@BAUD]");
 }
 
 }  // namespace emit

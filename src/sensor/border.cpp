@@ -195,6 +195,10 @@ bool Border::contains(const Vector2& p_mm) const {
   if (distance_to_border_mm(p_mm) <= 1e-9 * size_mm_) return true;
   // Even-odd rule on a polyline through the border; arcs are sampled finely enough that the
   // chord error (≤ r·(1-cos(π/256)) ≈ 7.5e-5 r) only matters within that distance of the border.
+  // The polyline must close exactly: each piece's last point is the next piece's first, not its
+  // own end recomputed. A circle's quarter arcs end at cos/sin of π/2·k, a few 1e-15 mm from where
+  // the next one starts; a point on the line y = 0 between those two ends (the apex of a dome,
+  // the centre (1e-15, -2e-15) of a circle) then crossed neither piece there and fell "off the sheet".
   int crossings = 0;
   const int samples_per_arc = 128;
   auto crosses = [&](const Vector2& a, const Vector2& b) {
@@ -202,11 +206,13 @@ bool Border::contains(const Vector2& p_mm) const {
     const double x = a.x() + (p_mm.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
     return p_mm.x() < x;
   };
-  for (const auto& piece : pieces_) {
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const BorderPiece& piece = pieces_[i];
+    const Vector2& closing = pieces_[(i + 1) % pieces_.size()].start_mm;
     const int steps = piece.kind == BorderPiece::Kind::line ? 1 : samples_per_arc;
     Vector2 previous = piece.start_mm;
     for (int k = 1; k <= steps; ++k) {
-      const Vector2 next = point_on_piece(piece, piece.length_mm * k / steps);
+      const Vector2 next = k == steps ? closing : point_on_piece(piece, piece.length_mm * k / steps);
       if (crosses(previous, next)) ++crossings;
       previous = next;
     }

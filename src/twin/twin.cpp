@@ -54,6 +54,11 @@ Twin::Twin(Sensor sensor, const TwinOptions& options)
     : sensor_(std::move(sensor)), options_(options), model_(twin_model(sensor_, options)), rng_(options.noise_seed) {}
 
 ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
+  return press_contact_load(mesh(), placed(presses), sensor_.contact, options_.quadrature_levels,
+                            options_.cover_blur_mm);
+}
+
+std::vector<Press> Twin::placed(const std::vector<Press>& presses) const {
   std::vector<Press> on_sheet = presses;
   for (std::size_t i = 0; i < presses.size(); ++i) {
     const std::string where = "press " + std::to_string(i);
@@ -65,7 +70,7 @@ ContactLoad Twin::contact_of(const std::vector<Press>& presses) const {
     const Vector3 point = surface_point_mm(sensor_.shape, chart);
     on_sheet[i].x_mm = point.x(), on_sheet[i].y_mm = point.y(), on_sheet[i].z_mm = point.z();
   }
-  return press_contact_load(mesh(), on_sheet, sensor_.contact, options_.quadrature_levels, options_.cover_blur_mm);
+  return on_sheet;
 }
 
 Frame Twin::exact_frame(const std::vector<Press>& presses) {

@@ -174,8 +174,16 @@ TEST(Recording, MalformedFilesAreOneLineErrorsNamingTheFile) {
 
   const std::string truncated = folder + "/truncated.bin";
   write_bytes(truncated, std::vector<char>(bytes.begin(), bytes.end() - 100));  // a crash mid-packet
-  EXPECT_THROW(FileSource(truncated, sensor, true), InvalidInput);
-  EXPECT_EQ(replay_error(truncated, sensor), truncated + ": truncated: its last packet has 432 of its 532 bytes");
+  {
+    // Its 9 whole frames first (a crashed run's frames are worth replaying), then the cut, named
+    // by frame and byte (32 + 9·532 = 4820), and never taken for the recording's end.
+    FileSource source(truncated, sensor, true);
+    EXPECT_EQ(source.frame_count(), 9u);
+    SourceFrame frame;
+    for (int k = 0; k < 9; ++k) EXPECT_TRUE(source.next(frame, milliseconds(0))) << k;
+    EXPECT_FALSE(source.finished());
+  }
+  EXPECT_EQ(replay_error(truncated, sensor), truncated + ": truncated: frame 9 (byte 4820) has 432 of its 532 bytes");
 
   const std::string foreign = folder + "/foreign.bin";
   write_bytes(foreign, std::vector<char>(100, 'x'));

@@ -264,6 +264,34 @@ TEST(SerialEndToEnd, ReconnectsWhenTheDeviceComesBack) {
   EXPECT_EQ(stats.decoder.dropped + stats.decoder.corrupt, 0u);
 }
 
+// A device removed for good: the source retries for its reconnection time (here 1 s, every
+// 0.1 s), then fails with the port's last error, for good (frame_source.hpp: never finished()).
+TEST(SerialEndToEnd, APortGoneForGoodFailsAfterItsReconnectionTime) {
+  const std::vector<std::vector<std::uint8_t>> packets = fake_packets(3);
+  auto pty = std::make_unique<test::PseudoTerminal>();
+  SerialSource source(pty->slave_path(), default_serial_baud, default_sensor(), milliseconds(100), milliseconds(1000));
+  for (const auto& p : packets) fd_sink(pty->master())(p.data(), p.size());
+  EXPECT_EQ(receive(source, 3, std::chrono::seconds(10)).size(), 3u);
+  pty.reset();  // pulled, and never plugged back
+  SourceFrame frame;
+  const auto pulled = Clock::now();
+  std::string failure;
+  try {
+    while (Clock::now() - pulled < std::chrono::seconds(10)) EXPECT_FALSE(source.next(frame, milliseconds(50)));
+  } catch (const IoError& e) {
+    failure = e.what();
+  }
+  const double after_s = std::chrono::duration<double>(Clock::now() - pulled).count();
+  // Not before the reconnection time; after it by at most a retry (0.1 s) and a poll (0.05 s),
+  // with 0.35 s for a loaded machine's scheduling.
+  EXPECT_GE(after_s, 1.0);
+  EXPECT_LT(after_s, 1.5);
+  EXPECT_EQ(failure.rfind(source.description() + ": disconnected for 1 s and not back (the last try: ", 0), 0u)
+      << failure;
+  EXPECT_FALSE(source.finished());
+  EXPECT_THROW(source.next(frame, milliseconds(0)), IoError);
+}
+
 // The per-frame serial path (read, decode, counts to volts, hand out) allocates nothing once the
 // caller's frame has its size.
 TEST(SerialEndToEnd, AllocatesNothingPerFrameOnceWarmedUp) {
@@ -320,7 +348,9 @@ TEST(SerialEndToEnd, RejectsABoardWithAnotherElectrodeCount) {
     EXPECT_NE(std::string(e.what()).find("frames of 8 electrodes but the sensor has 16"), std::string::npos)
         << e.what();
   }
-  EXPECT_TRUE(source->finished());
+  // For good: never finished (a normal end), the same failure again on every call.
+  EXPECT_FALSE(source->finished());
+  EXPECT_THROW(source->next(frame, milliseconds(0)), IoError);
 }
 
 }  // namespace

@@ -106,3 +106,36 @@ def test_waiting_for_frames_releases_the_gil(sensor):
     # over every 5 ms only between Python bytecodes).
     assert elapsed > 0.3
     assert counter[0] > 10000
+
+
+def test_a_failing_source_raises_its_message(cli, sensor, tmp_path):
+    # A recording cut 100 bytes into its last packet (a crashed run's): its 29 whole frames come
+    # (10 for the baseline, 19 reconstructed), then emit.IoError naming the file, the frame and
+    # the byte (32 + 29 * 532 = 15460); never a quiet end of the iteration.
+    subprocess.run([cli, "live", "--source", "sim:fixed:30,30,10", "--fps", "0", "--frames", "20",
+                    "--record", tmp_path / "rec.emitrec", "--method", "paper", "--cache", tmp_path / "cache"],
+                   check=True, capture_output=True)
+    cut = tmp_path / "cut.emitrec"
+    cut.write_bytes((tmp_path / "rec.emitrec").read_bytes()[:-100])
+    stream = emit.LiveStream(f"file:{cut}", sensor, method="paper", frames_per_s=0)
+    frames = []
+    with pytest.raises(emit.IoError) as failure:
+        for frame in stream:
+            frames.append(frame)
+    assert str(failure.value) == f"{cut}: truncated: frame 29 (byte 15460) has 432 of its 532 bytes"
+    assert len(frames) == 19
+
+
+def test_a_serial_port_removed_for_good_raises_its_message(sensor):
+    # The board's port closed for good: retried for reconnect_s (here 1 s), then emit.IoError.
+    board, port = os.openpty()
+    tty.setraw(board)
+    path = os.ttyname(port)
+    stream = emit.LiveStream(f"serial:{path}", sensor, method="paper", reconnect_s=1.0)
+    os.close(board)
+    os.close(port)
+    start = time.monotonic()
+    with pytest.raises(emit.IoError) as failure:
+        next(stream)
+    assert time.monotonic() - start >= 1.0
+    assert str(failure.value).startswith(f"serial:{path} at 921600 baud: disconnected for 1 s and not back (")

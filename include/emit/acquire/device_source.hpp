@@ -1,8 +1,8 @@
 #pragma once
 /// \file device_source.hpp
 /// The sources that read a device or a file: "serial:PATH[@BAUD]" (serial_source.hpp; default
-/// 921600 baud) and "file:PATH" (a recording, file_source.hpp). open_source (frame_source.hpp)
-/// hands these specs here.
+/// 921600 baud; a port that goes away is retried for SourceOptions::reconnect_s) and "file:PATH"
+/// (a recording, file_source.hpp). open_source (frame_source.hpp) hands these specs here.
 #include <memory>
 #include <string>
 

@@ -3,9 +3,12 @@
 /// Frames replayed from a recording (recording.hpp; spec "file:PATH"), at the pace the board took
 /// them (from the packets' timestamps) or as fast as the caller asks for them; once, or in a loop.
 ///
-/// The file is checked when opened (header, the sensor's electrode count, a whole number of
-/// packets) and each packet (CRC and all) as it is read. Counts become volts with the recording's
-/// own ADC reference voltage (its header), so a replay gives the volts the live run saw.
+/// The file is checked when opened (header, the sensor's electrode count) and each packet (CRC
+/// and all) as it is read. A file cut mid-packet (a crashed run's PATH.partial) replays its whole
+/// frames, then fails naming the cut: "rec.emitrec: truncated: frame 9 (byte 4820) has 432 of its
+/// 532 bytes" (in a loop, at the first pass's cut). A failure is never finished(): the reader
+/// asks again and gets it. Counts become volts with the recording's own ADC reference voltage
+/// (its header), so a replay gives the volts the live run saw.
 ///
 /// In a loop, the recording starts again after its last frame as if the board had gone on: each
 /// pass's sequence numbers follow the last one handed out (+1) and its timestamps the last one by
@@ -37,20 +40,21 @@ class FileSource : public FrameSource {
   /// \param as_fast_as_possible  true: every next() returns the next frame at once (SourceOptions::
   ///   frames_per_s == 0); false: frame k is due (t_k − t_0) after the first was handed out, t the
   ///   board's unwrapped timestamps (board_clock.hpp).
-  /// \throw IoError if the file cannot be opened; InvalidInput naming it if it is not a recording,
-  ///   is truncated, or was recorded with another electrode count than the sensor's.
+  /// \throw IoError if the file cannot be opened; InvalidInput naming it if it is not a recording
+  ///   or was recorded with another electrode count than the sensor's.
   /// \param loop  false: the recording once, then "end of recording"; true: again and again.
   FileSource(std::string path, const Sensor& sensor, bool as_fast_as_possible, bool loop = false);
 
   /// received: when the frame was handed out. finished() turns true as the last frame is handed
-  /// out (never, in a loop, unless the recording has no frames). \throw IoError "PATH: end of recording" when asked for
-  /// more, or naming the packet if one is corrupt.
+  /// out (never, in a loop, unless the recording has no frames; never for a file cut mid-packet).
+  /// \throw IoError "PATH: end of recording" when asked for more, or naming the packet if one is
+  ///   corrupt or cut (file's comment).
   bool next(SourceFrame& frame, std::chrono::milliseconds timeout) override;
   bool finished() const override { return finished_; }
   std::string description() const override;
 
   const RecordingHeader& header() const { return header_; }
-  std::uint64_t frame_count() const { return frame_count_; }  ///< in the file (one pass)
+  std::uint64_t frame_count() const { return frame_count_; }  ///< whole frames in the file (one pass)
   std::uint64_t passes() const { return pass_; }              ///< completed passes through the file
 
  private:
@@ -66,6 +70,7 @@ class FileSource : public FrameSource {
   std::ifstream stream_;
   RecordingHeader header_;
   std::uint64_t frame_count_ = 0, frames_read_ = 0;
+  std::uint64_t cut_bytes_ = 0;  ///< of a last packet cut short (0: the file ends on a whole packet)
   // The loop's continuation (all 0 on the first pass): added to each packet's sequence number and
   // timestamp, modulo 2^32 as the board's own counters wrap.
   std::uint64_t pass_ = 0;

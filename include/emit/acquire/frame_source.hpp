@@ -33,6 +33,9 @@ struct SourceOptions {
   int untouched_frames = 15;
   /// A recording (file:) starts again after its last frame, its numbers going on (file_source.hpp).
   bool loop = false;
+  /// A serial port that went away (a pulled cable) is reopened every 0.5 s for this long [s]; if
+  /// it is not back by then, the source fails with the port's last error (serial_source.hpp).
+  double reconnect_s = 30;
   void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
@@ -40,9 +43,15 @@ class FrameSource {
  public:
   virtual ~FrameSource() = default;
   /// Waits up to `timeout` for the next frame. true: `frame` filled. false: none yet (the caller
-  /// serves commands and asks again).
-  /// \throw IoError when the source has failed for good or ended (finished() is then true).
+  /// serves commands and asks again; a source that can recover, a serial port whose cable was
+  /// pulled, is retrying meanwhile).
+  /// \throw IoError naming the source and why when it has failed for good (a corrupt recording, a
+  ///   port gone past its reconnection time, the simulator's error): every later call throws it
+  ///   again, and finished() stays false. Also when asked for more after it finished.
   virtual bool next(SourceFrame& frame, std::chrono::milliseconds timeout) = 0;
+  /// The source ended as it should (a recording's last frame was handed out): no frame will come,
+  /// and nothing went wrong. A failed source is not finished: its failure is next()'s to throw,
+  /// so a reader that stops on finished() never takes a failure for an end (live/live_loop.hpp).
   virtual bool finished() const = 0;
   /// One line for people, e.g. "sim: scripted finger on default 60 mm", "serial:/dev/ttyUSB0 at 921600".
   virtual std::string description() const = 0;

@@ -42,6 +42,9 @@ class Recorder {
 
   /// Flush, close and rename PATH.partial to PATH. Later calls do nothing. \throw IoError.
   void close();
+  /// Flush and close, but leave PATH.partial (every packet recorded, whole) and PATH untouched:
+  /// a run that failed. Later calls, and close(), do nothing. \throw IoError.
+  void close_partial();
 
   std::uint64_t frames() const { return frames_; }
   const std::string& path() const { return file_.path(); }

@@ -50,13 +50,17 @@ class McapWriter {
   /// Writes the data section's end (CRC-32 of everything before it), the footer and the closing
   /// magic, flushes, and renames PATH.partial to PATH. Later calls do nothing. \throw IoError.
   void close();
+  /// close() but for the rename: a whole MCAP file of what was written stays at PATH.partial and
+  /// PATH is untouched (a run that failed: `emit live`'s outputs). \throw IoError.
+  void close_partial();
 
   const std::string& path() const { return file_.path(); }
 
  private:
   void record(std::uint8_t opcode, std::span<const std::uint8_t> content);
   void write(const void* bytes, std::size_t size);
-  void check() const;  ///< \throw IoError if a write failed
+  void check() const;     ///< \throw IoError if a write failed
+  void end(bool rename);  ///< close() (rename) or close_partial()
 
   OutputFile file_;
   std::uint32_t crc_;  ///< zlib's running CRC-32 of all bytes so far

@@ -39,6 +39,8 @@ class TactileMcap {
              const Vector& pressure_N_per_mm2, double board_time_s = 0, const std::vector<Contact>* ended = nullptr);
   /// \throw IoError. Without it, PATH.partial stays and PATH is untouched.
   void close() { mcap_.close(); }
+  /// A whole file left at PATH.partial, PATH untouched (io/mcap_writer.hpp). \throw IoError.
+  void close_partial() { mcap_.close_partial(); }
 
   const std::string& path() const { return mcap_.path(); }
   std::uint64_t frames() const { return frames_; }

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "emit/core/progress.hpp"
 #include "emit/live/live_loop.hpp"
@@ -41,6 +42,7 @@ struct LiveJob {
   double seconds = 0;            ///< stop after this long (0: no limit)
   double frames_per_s = 50;      ///< the simulator's pace; 0: a recording as fast as it goes
   bool loop = false;             ///< a recording starts again at its end (SourceOptions::loop)
+  double reconnect_s = 30;       ///< a serial port that went away is retried this long (SourceOptions::reconnect_s)
 };
 
 class LiveSession {
@@ -58,8 +60,16 @@ class LiveSession {
   /// Runs until `stop`, the frame or time limit, the source's end, or the end of the reader of
   /// the contacts on standard output (LiveStats::contacts_reader_left); then closes the
   /// recordings and the contacts (renamed into place) and returns what the loop measured.
+  /// \throw IoError (or what else the loop threw) when the source, a publisher or a writer fails.
+  ///   Everything written until then is flushed and kept, but nothing is renamed: each regular
+  ///   file stays PATH.partial (the recording's whole packets, an MCAP file closed whole, the
+  ///   contacts' lines), so a failed run never replaces a good PATH; kept_partial() lists them
+  ///   and stats() tells what the run did.
   LiveStats run(const std::atomic<bool>& stop);
   std::uint64_t recorded_frames() const;  ///< after run(); 0 without a recording
+  const LiveStats& stats() const;         ///< the loop's, up to now (after a failed run: up to the failure)
+  /// After run() threw: the PATH.partial files it left with what was written (empty ones are removed).
+  const std::vector<std::string>& kept_partial() const;
 
  private:
   struct Impl;

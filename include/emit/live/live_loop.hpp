@@ -103,8 +103,10 @@ class LiveLoop {
   bool command(const std::string& name);
 
   /// Runs until `stop` is set, max_frames are reconstructed, the source has finished (a
-  /// recording's end) or the contacts' reader went away; a source's failure (IoError) propagates.
-  /// Returns what it measured.
+  /// recording's end: a normal end) or the contacts' reader went away. Returns what it measured.
+  /// \throw IoError (or what else was thrown) when the source, a publisher or the contacts' writer
+  ///   fails: a failure never ends the run as an end would. stats() then holds what was measured
+  ///   up to it; what was written stays written (the caller closes the outputs).
   LiveStats run(const std::atomic<bool>& stop);
 
   /// One turn of run()'s loop, for a caller that pulls frames (the Python iterator): applies a

@@ -19,6 +19,8 @@ class McapPublisher : public FramePublisher {
   void publish(const LiveFrame& frame) override;
   /// Renames PATH.partial to PATH (io/mcap_writer.hpp). \throw IoError.
   void close() { mcap_.close(); }
+  /// After a failed run: a whole file at PATH.partial, PATH untouched. \throw IoError.
+  void close_partial() { mcap_.close_partial(); }
 
  private:
   TactileMcap mcap_;

@@ -10,8 +10,8 @@
 namespace emit {
 
 /// "sim" (a finger moving over the sheet in a figure-eight, lifted now and then), "sim:random"
-/// (presses at random places), "sim:fixed:X,Y[,F]" (one press held at X, Y mm with F N, default
-/// 10); "file:PATH" (a recording, acquire/recording.hpp) and "serial:PATH[@BAUD]" (the board).
+/// (presses at random places), "sim:fixed" (10 N held at the sheet's middle), "sim:fixed:X,Y[,F]" (one press held at X,
+/// Y mm with F N, default 10); "file:PATH" (a recording, acquire/recording.hpp) and "serial:PATH[@BAUD]" (the board).
 /// \throw InvalidInput naming the spec.
 std::unique_ptr<FrameSource> open_source(const std::string& spec, const Sensor& sensor, const SourceOptions& options);
 

@@ -3,7 +3,8 @@
 /// The digital twin as a live source: a scripted finger presses the sheet, the twin computes each
 /// frame (with the ADC's noise) on a thread of its own, paced at SourceOptions::frames_per_s, and
 /// the frames queue up for next() (the thread starts at the first call: the reader is ready). Which presses made frame
-/// `sequence` is a pure function of the script (presses_of), so tests can compare contacts with the truth.
+/// `sequence` is a pure function of the script (presses_of, twin/sim_script.hpp), so tests can compare contacts with
+/// the truth.
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -12,38 +13,25 @@
 
 #include "emit/acquire/frame_source.hpp"
 #include "emit/sensor/press.hpp"
+#include "emit/twin/sim_script.hpp"
 #include "emit/twin/twin.hpp"
 
 namespace emit {
 
-/// What the simulated finger does.
-struct SimScript {
-  enum class Kind {
-    loop,    ///< a figure-eight over the sheet, 6 s pressed then 1 s lifted, again and again
-    random,  ///< a press at a random place for 0.6 s, then 0.2 s lifted, again and again
-    fixed,   ///< one press held: `fixed`, a disc or an outline
-  };
-  Kind kind = Kind::loop;
-  Press fixed{30, 30, 5, 10};               ///< kind fixed: where and how hard
-  double radius_mm = 5;                     ///< the indenter of loop and random
-  double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
-};
-
-/// "sim", "sim:loop", "sim:random", "sim:fixed:X,Y[,F]", or "sim:fixed:OUTLINE": a flat punch of any
-/// outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…, ring:…, polygon:…; flat
-/// sheets only: sensor/press_outline.hpp), held. \throw InvalidInput naming the spec.
-SimScript parse_sim_script(const std::string& spec);
-
 class SimSource : public FrameSource {
  public:
   /// Builds the twin (meshing takes a second); the frame thread starts at the first next().
-  /// \throw InvalidInput for a bad script (e.g. a fixed press off the sheet) or sensor.
+  /// \throw InvalidInput for a bad script (e.g. a fixed press off the sheet: twin/sim_script.hpp)
+  ///   or sensor.
   SimSource(const Sensor& sensor, SimScript script, const SourceOptions& options);
   ~SimSource() override;
   SimSource(const SimSource&) = delete;
   SimSource& operator=(const SimSource&) = delete;
 
+  /// \throw IoError "source sim: …" once the twin has failed (after the frames it made before),
+  ///   and again on every later call.
   bool next(SourceFrame& frame, std::chrono::milliseconds timeout) override;
+  /// Never: the twin streams until it fails or the reader stops (frame_source.hpp).
   bool finished() const override;
   std::string description() const override;
 
@@ -57,15 +45,11 @@ class SimSource : public FrameSource {
 
  private:
   void produce();
-  double script_time_s(std::uint64_t sequence) const;
-  /// The script's press of this force at chart point p (sensor/surface.hpp).
-  Press press_at(const Vector2& chart_mm, double force_N) const;
 
   Sensor sensor_;
-  SimScript script_;
   SourceOptions options_;
   Twin twin_;
-  Vector2 center_mm_, half_extent_mm_;  ///< of the sheet's bounding box, for the loop's path
+  ScriptedPresses script_;  ///< on twin_'s mesh
   mutable std::mutex mutex_;
   std::condition_variable ready_;
   std::deque<SourceFrame> queue_;

@@ -59,6 +59,10 @@ class Twin {
   Frame frame(const std::vector<Press>& presses, std::vector<std::uint16_t>* codes = nullptr);
   /// Node potentials, #V by N (column l: electrode l grounded), for pictures.
   Matrix potentials(const std::vector<Press>& presses);
+  /// The presses as every frame applies them: each validated (validate_press; a mesh file's
+  /// sheet asks its mesh) and centred on the surface at the point its chart point names.
+  /// \throw InvalidInput "press i: …" as frame() does for a bad press.
+  std::vector<Press> placed(const std::vector<Press>& presses) const;
 
  private:
   ContactLoad contact_of(const std::vector<Press>& presses) const;
