@@ -77,6 +77,11 @@ void add_reconstruct_command(CLI::App& app) {
                   "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
+  cmd->add_option("--fps", job.frames_per_s,
+                  "The frames' rate: frame f is at f/FPS s, for the contacts' velocities and the MCAP's stamps")
+      ->check(positive_number())
+      ->capture_default_str();
+  add_tracking_options(cmd, job.tracking);
   cmd->callback([a] { run_reconstruct(*a); });
 }
 

@@ -8,6 +8,7 @@
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/frame/batch.hpp"
 #include "emit/io/calibration_json.hpp"
@@ -68,8 +69,6 @@ FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N)
 /// across threads, and memory stays bounded (256 × 16² doubles = 0.5 MB).
 constexpr std::size_t chunk_frames = 256;
 
-/// Frames in an MCAP recording of a file are this far apart: the board's 50 frames/s.
-constexpr std::uint64_t mcap_frame_interval_ns = 20'000'000;
 
 }  // namespace
 
@@ -82,7 +81,9 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                               {OutputRequest{{"--contacts", job.contacts_path}, {.standard_output = true}},
                                OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
   auto& [contacts_file, mcap_file] = outputs;
-  FrameOptions declared;  // checked before anything is read
+  job.tracking.validate();  // checked before anything is read
+  option_check::positive("ReconstructJob", "frames_per_s", job.frames_per_s);
+  FrameOptions declared;
   declared.contact_radius_mm = job.contact_radius_mm;
   check_frame_options(job.method, declared);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
@@ -133,8 +134,12 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     reconstructor.emplace(pipeline.reconstructor(frame_options));
     reconstructor->set_reference(reference);
   }
-  // A file of frames has no times: the recording puts them at the board's 50 frames/s from now.
+  // A file of frames has no times: frame f is at f / frames_per_s (the board's 50 frames/s unless
+  // told), for the tracker and, from now, for the recording.
   const std::uint64_t start_ns = unix_time_ns();
+  const double frame_s = 1 / job.frames_per_s;
+  const auto frame_ns = static_cast<std::uint64_t>(std::llround(1e9 * frame_s));
+  ContactTracker tracker(job.tracking, 64, model.surface);
   std::optional<TactileMcap> mcap;
   if (mcap_file.given()) mcap.emplace(std::move(mcap_file), sensor.name, model.mesh, start_ns);
   const auto online_start = std::chrono::steady_clock::now();
@@ -149,16 +154,18 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     if (batch) {
       const auto contacts = pipeline.reconstruct_batch(frame_options, reference, chunk, job.threads);
       for (std::size_t f = 0; f < count; ++f)
-        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts[f], -1);
+        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f),
+                            tracker.update(contacts[f], static_cast<double>(first + f) * frame_s), -1);
     } else {
       for (std::size_t f = 0; f < count; ++f) {
-        const auto& contacts = reconstructor->process(chunk[f]);
+        const auto& contacts =
+            tracker.update(reconstructor->process(chunk[f]), static_cast<double>(first + f) * frame_s);
         const FitResult* fitted = reconstructor->fit_result();
         write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts,
                             fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
         if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
         if (mcap)
-          mcap->write(first + f, start_ns + (first + f) * mcap_frame_interval_ns, frame_view(chunk[f]), contacts,
+          mcap->write(first + f, start_ns + (first + f) * frame_ns, frame_view(chunk[f]), contacts,
                       reconstructor->pressure());
         progress.step("reconstructing frame", static_cast<long>(first + f + 1), survey.frames);
       }

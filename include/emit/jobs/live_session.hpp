@@ -40,6 +40,7 @@ struct LiveJob {
   double seconds = 0;            ///< stop after this long (0: no limit)
   double frames_per_s = 50;      ///< the simulator's pace; 0: a recording as fast as it goes
   bool loop = false;             ///< a recording starts again at its end (SourceOptions::loop)
+  TrackerOptions tracking;       ///< the contacts' ids, phases, velocities (frame/contact_tracker.hpp)
 };
 
 class LiveSession {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "emit/core/progress.hpp"
+#include "emit/frame/contact_tracker.hpp"
 #include "emit/model/method.hpp"
 
 namespace emit {
@@ -26,6 +27,10 @@ struct ReconstructJob {
   double contact_radius_mm = 0;  ///< a declared indenter (FrameOptions::contact_radius_mm); 0: none
   std::string cache_dir;         ///< empty: no operator cache
   int threads = 1;               ///< the linear methods' batch is split across them
+  /// The frames' rate: frame f is at f / frames_per_s s (a file of frames has no times), for
+  /// tracking's velocities and the MCAP recording's stamps.
+  double frames_per_s = 50;
+  TrackerOptions tracking;  ///< the contacts' ids, phases and velocities (frame/contact_tracker.hpp)
 };
 
 struct ReconstructReport {
