@@ -106,7 +106,9 @@ TrackingEvaluation evaluate_tracking(const EvalCase& eval_case, const TrackingEv
   std::vector<Frame> untouched;
   for (int i = 0; i < 10; ++i) untouched.push_back(twin.frame({}));
   const Reference reference = average_reference(untouched);
-  const Pipeline pipeline(sensor, {.method = Method::fit}, {}, progress.stage);
+  PipelineOptions pipeline_options;
+  pipeline_options.method = Method::fit;
+  const Pipeline pipeline(sensor, pipeline_options, {}, progress.stage);
   const double frame_s = 1 / options.frames_per_s;
 
   TrackingEvaluation result;
