@@ -109,8 +109,7 @@ void run_tracking(EvalArgs& args) {
       std::printf(
           "  crossings, %-10s: ids kept (no swap) in %d of %d = %.1f %% (target >= 99 %%); a finger's id changed "
           "otherwise in %d; one down and one up per finger in %d\n",
-          name, score.trials - score.swapped, score.trials, 100 * score.swap_free(), score.broken,
-          score.right_events);
+          name, score.trials - score.swapped, score.trials, 100 * score.swap_free(), score.broken, score.right_events);
     std::printf("  frames where a finger had no contact within 5 mm: %d of %d\n", e.frames_missing_a_finger,
                 e.crossing_frames);
     std::printf("  still %g N press: jitter %.4f mm rms unfiltered, %.4f mm filtered (target <= 0.05 mm)\n",

@@ -98,7 +98,8 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());
   cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly")->delimiter(',');
   cmd->add_option("--separation-mm", a->separation_mm,
-                  "Two-finger separation range MIN,MAX (crossing: at the closest approach); three- and four-finger: MIN, "
+                  "Two-finger separation range MIN,MAX (crossing: at the closest approach); three- and four-finger: "
+                  "MIN, "
                   "the least between any two")
       ->delimiter(',');
   cmd->add_option("--profile", a->profile,

@@ -40,9 +40,10 @@ std::pair<int, int> find_fingers(const Shape& surface, const std::vector<Contact
       if (i == j && i >= 0) continue;
       double total = 0;  // an unfound finger costs found_within_mm
       for (const auto& [k, truth] : {std::pair{i, a}, std::pair{j, b}}) {
-        const double d = k < 0 ? found_within_mm
-                               : (chart_of(surface, contacts[static_cast<std::size_t>(k)]) - truth).norm();
-        total += d > found_within_mm ? std::numeric_limits<double>::infinity() : d;
+        double d = found_within_mm;
+        if (k >= 0) d = (chart_of(surface, contacts[static_cast<std::size_t>(k)]) - truth).norm();
+        if (d > found_within_mm) d = std::numeric_limits<double>::infinity();
+        total += d;
       }
       if (total < best_total) best_total = total, best = {i, j};
     }
@@ -104,6 +105,7 @@ TrackingEvaluation evaluate_tracking(const EvalCase& eval_case, const TrackingEv
   twin_options.noise_seed = options.seed;
   Twin twin(sensor, twin_options);
   std::vector<Frame> untouched;
+  untouched.reserve(10);
   for (int i = 0; i < 10; ++i) untouched.push_back(twin.frame({}));
   const Reference reference = average_reference(untouched);
   PipelineOptions pipeline_options;
@@ -119,8 +121,7 @@ TrackingEvaluation evaluate_tracking(const EvalCase& eval_case, const TrackingEv
   std::mt19937_64 draw(options.seed);
   for (int trial = 0; trial < options.crossings; ++trial) {
     progress.step("crossing", trial, options.crossings);
-    const int frames =
-        std::uniform_int_distribution<int>(options.min_frames, options.max_frames)(draw);
+    const int frames = std::uniform_int_distribution<int>(options.min_frames, options.max_frames)(draw);
     PressStyle style;
     style.min_force_N = options.min_force_N, style.max_force_N = options.max_force_N;
     style.seed = options.seed + 1 + static_cast<std::uint64_t>(trial);
@@ -137,8 +138,8 @@ TrackingEvaluation evaluate_tracking(const EvalCase& eval_case, const TrackingEv
       auto start = std::chrono::steady_clock::now();
       const std::vector<Contact>& contacts = reconstructor.process(frame);
       reconstruct_s += seconds_since(start), ++reconstructed;
-      const auto [i, j] = find_fingers(surface, contacts, press_chart_mm(surface, presses[0]),
-                                       press_chart_mm(surface, presses[1]));
+      const auto [i, j] =
+          find_fingers(surface, contacts, press_chart_mm(surface, presses[0]), press_chart_mm(surface, presses[1]));
       result.frames_missing_a_finger += (i < 0) + (j < 0);
       ++result.crossing_frames;
       for (int k = 0; k < 2; ++k) {

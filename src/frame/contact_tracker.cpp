@@ -32,7 +32,7 @@ void TrackerOptions::validate() const {
 }
 
 ContactTracker::ContactTracker(const TrackerOptions& options, int max_contacts, Shape surface)
-    : options_((options.validate(), options)), max_contacts_(max_contacts), surface_(std::move(surface)) {
+    : options_((options.validate(), options)), surface_(std::move(surface)), max_contacts_(max_contacts) {
   if (max_contacts < 1)
     throw InvalidInput("ContactTracker: max_contacts must be at least 1, got " + std::to_string(max_contacts));
   if (is_sleeve(surface_)) sleeve_period_mm_ = 2 * std::numbers::pi * surface_.radius_mm;
@@ -140,9 +140,10 @@ void ContactTracker::follow(Track& track, const Contact& contact, const Vector2&
   if (options_.filter) {
     const Vector2 shift = place - seen;
     place_on_surface(surface_, wrapped_chart_mm(surface_, place), out);
-    for (int i = 0; i < out.outline.size; ++i) out.outline.vertices_mm[static_cast<std::size_t>(i)] = {
-        static_cast<float>(out.outline.vertices_mm[static_cast<std::size_t>(i)][0] + shift.x()),
-        static_cast<float>(out.outline.vertices_mm[static_cast<std::size_t>(i)][1] + shift.y())};
+    for (int i = 0; i < out.outline.size; ++i)
+      out.outline.vertices_mm[static_cast<std::size_t>(i)] =
+          {static_cast<float>(out.outline.vertices_mm[static_cast<std::size_t>(i)][0] + shift.x()),
+           static_cast<float>(out.outline.vertices_mm[static_cast<std::size_t>(i)][1] + shift.y())};
   }
   track.last = out;
 }
@@ -169,7 +170,7 @@ const std::vector<Contact>& ContactTracker::update(const std::vector<Contact>& c
 
   tracked_.assign(contacts.begin(), contacts.end());  // within the reserve up to max_contacts
   const int n = std::min(static_cast<int>(contacts.size()), max_contacts_);
-  for (std::size_t c = static_cast<std::size_t>(n); c < tracked_.size(); ++c) {
+  for (auto c = static_cast<std::size_t>(n); c < tracked_.size(); ++c) {
     tracked_[c].id = -1;  // past the limit: untracked
     tracked_[c].phase = TouchPhase::none;
   }
@@ -192,12 +193,12 @@ const std::vector<Contact>& ContactTracker::update(const std::vector<Contact>& c
     const Track& track = tracks_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r)])];
     double* row = cost_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(cols);
     for (int c = 0; c < n; ++c) {
-      const double d = chart_difference(charts_[static_cast<std::size_t>(c)],
-                                        Vector2(track.predicted[0], track.predicted[1]))
-                           .norm();
+      const double d =
+          chart_difference(charts_[static_cast<std::size_t>(c)], Vector2(track.predicted[0], track.predicted[1]))
+              .norm();
       const double force = contacts[static_cast<std::size_t>(c)].force_N;
-      const double relative = (force - track.predicted_force_N) /
-                              std::max({force, track.predicted_force_N, force_floor_N});
+      const double relative =
+          (force - track.predicted_force_N) / std::max({force, track.predicted_force_N, force_floor_N});
       row[c] = d > options_.gate_mm ? barred
                                     : std::pow(d / options_.gate_mm, 2) + options_.force_weight * relative * relative;
     }
@@ -211,8 +212,8 @@ const std::vector<Contact>& ContactTracker::update(const std::vector<Contact>& c
   for (int r = 0; r < rows; ++r) {
     Track& track = tracks_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r)])];
     const int c = column[static_cast<std::size_t>(r)];
-    if (c < n && cost_[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] <
-                     barred) {
+    if (c < n &&
+        cost_[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)] < barred) {
       paired_[static_cast<std::size_t>(c)] = 1;
       follow(track, contacts[static_cast<std::size_t>(c)], charts_[static_cast<std::size_t>(c)], time_s,
              tracked_[static_cast<std::size_t>(c)]);

@@ -69,7 +69,6 @@ FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N)
 /// across threads, and memory stays bounded (256 × 16² doubles = 0.5 MB).
 constexpr std::size_t chunk_frames = 256;
 
-
 }  // namespace
 
 ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress) {

@@ -1056,8 +1056,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"zero tracking gate",
                "reconstruct --reference DIR/ref.csv --frames DIR/ref.csv --contacts OUT --track-gate-mm 0",
                "--track-gate-mm: TrackerOptions::gate_mm must be positive, got 0"},
-        BadRun{"negative coast frames",
-               "live --source sim --frames 1 --track-coast-frames -1",
+        BadRun{"negative coast frames", "live --source sim --frames 1 --track-coast-frames -1",
                "--track-coast-frames: must be a whole number 0 or larger, got \"-1\""},
         BadRun{"contact radius for a linear method",
                "reconstruct --reference DIR/ref.csv --frames DIR/ref.csv --contacts OUT --method paper "

@@ -22,10 +22,12 @@ TEST(TrackingEvaluation, CrossingFingersKeepTheirIdsAndAStillPressHoldsStill) {
   o.min_frames = 20, o.max_frames = 24;
   o.still_frames = 40;  // 30 after the filter's settling: the jitter's rms to ±13 %
   const TrackingEvaluation e = evaluate_tracking(c, o);
-  std::printf("swaps %d/%d unfiltered, %d/%d filtered; broken %d, %d; jitter %.4f -> %.4f mm; fit %.1f ms, track %.2f us\n",
-              e.unfiltered.swapped, e.unfiltered.trials, e.filtered.swapped, e.filtered.trials, e.unfiltered.broken,
-              e.filtered.broken, e.jitter_mm, e.filtered_jitter_mm, e.reconstruct_ms_per_frame, e.track_us_per_frame);
-  for (const StepLag& s : e.steps) std::printf("step %.1f mm: lag %d filtered, %d raw\n", s.step_mm, s.lag_frames, s.raw_lag_frames);
+  std::printf(
+      "swaps %d/%d unfiltered, %d/%d filtered; broken %d, %d; jitter %.4f -> %.4f mm; fit %.1f ms, track %.2f us\n",
+      e.unfiltered.swapped, e.unfiltered.trials, e.filtered.swapped, e.filtered.trials, e.unfiltered.broken,
+      e.filtered.broken, e.jitter_mm, e.filtered_jitter_mm, e.reconstruct_ms_per_frame, e.track_us_per_frame);
+  for (const StepLag& s : e.steps)
+    std::printf("step %.1f mm: lag %d filtered, %d raw\n", s.step_mm, s.lag_frames, s.raw_lag_frames);
   // The target is no swap in 99 % of crossings (emit eval --tracking measures it over 200): at that
   // rate 3 crossings hold none with probability 0.97, so any swap here fails.
   EXPECT_EQ(e.unfiltered.swapped, 0);

@@ -45,7 +45,8 @@ Contact finger_at(int finger, const Vector2& p, double force_N) {
 }
 
 int count_phase(const std::vector<Contact>& contacts, TouchPhase phase) {
-  return static_cast<int>(std::count_if(contacts.begin(), contacts.end(), [&](const Contact& c) { return c.phase == phase; }));
+  return static_cast<int>(
+      std::count_if(contacts.begin(), contacts.end(), [&](const Contact& c) { return c.phase == phase; }));
 }
 
 // Two fingers pass each other along nearly the same line (2-6 mm apart sideways) at 50-250 mm/s,
@@ -72,8 +73,9 @@ TEST(ContactTracker, KeepsIdsThroughCrossingsWithCrossingForces) {
         const Vector2 a = centre + s * speed_a * along + 0.5 * offset_mm * across;
         const Vector2 b = centre - s * speed_b * along - 0.5 * offset_mm * across;
         const Vector2 noisy_a = a + Vector2(noise(rng), noise(rng)), noisy_b = b + Vector2(noise(rng), noise(rng));
-        const auto& tracked = tracker.update(
-            by_force({finger_at(0, noisy_a, 2 + 8 * share), finger_at(1, noisy_b, 10 - 8 * share)}), f * frame_s);
+        const auto& tracked =
+            tracker.update(by_force({finger_at(0, noisy_a, 2 + 8 * share), finger_at(1, noisy_b, 10 - 8 * share)}),
+                           f * frame_s);
         ASSERT_EQ(tracked.size(), 2u);
         const std::int64_t now_a = id_of(tracked, 0), now_b = id_of(tracked, 1);
         if (f == 0) id_a = now_a, id_b = now_b;
@@ -205,6 +207,7 @@ TEST(ContactTracker, IdsAreNeverReused) {
     // 0-4 touches at random places each frame: many downs and ups.
     std::vector<Contact> contacts;
     const int n = static_cast<int>(rng() % 5);
+    contacts.reserve(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k)
       contacts.push_back(contact_at(std::uniform_real_distribution<double>(0, 60)(rng),
                                     std::uniform_real_distribution<double>(0, 60)(rng), 5));
@@ -291,8 +294,7 @@ TEST(ContactTracker, FilterDoesNotLagAStep) {
     for (int f = 0; f < 50; ++f) tracker.update({contact_at(30, 30, 5, 0.1)}, f * frame_s);
     const auto& t = tracker.update({contact_at(30 + step_mm, 30, 5, 0.1)}, 50 * frame_s);
     EXPECT_EQ(t[0].id, 0);
-    if (step_mm > 0.62)
-      EXPECT_NEAR(t[0].x_mm, 30 + step_mm, 1e-9) << "step " << step_mm;
+    if (step_mm > 0.62) EXPECT_NEAR(t[0].x_mm, 30 + step_mm, 1e-9) << "step " << step_mm;
     else  // the steady state's α, ±0.02 for the settling left after 50 frames
       EXPECT_NEAR((t[0].x_mm - 30) / step_mm, 0.588, 0.02);
   }
@@ -340,8 +342,10 @@ TEST(ContactTracker, AllocatesNothingPerFrame) {
     options.filter = filter;
     ContactTracker tracker(options, 4);
     std::vector<std::vector<Contact>> frames;
+    frames.reserve(40);
     for (int f = 0; f < 40; ++f) {
       std::vector<Contact> contacts;
+      contacts.reserve(4);
       for (int k = 0; k < (f % 10 < 5 ? 4 : f % 4); ++k) contacts.push_back(contact_at(10 + 10 * k + 0.3 * f, 20, 5));
       frames.push_back(contacts);
     }

@@ -22,7 +22,9 @@ double brute_force(const std::vector<double>& cost, int rows, int cols) {
   double best = 1e300;
   do {
     double total = 0;
-    for (int r = 0; r < rows; ++r) total += cost[static_cast<std::size_t>(r * cols + columns[static_cast<std::size_t>(r)])];
+    for (int r = 0; r < rows; ++r)
+      total += cost[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) +
+                    static_cast<std::size_t>(columns[static_cast<std::size_t>(r)])];
     best = std::min(best, total);
   } while (std::next_permutation(columns.begin(), columns.end()));
   return best;
@@ -33,7 +35,8 @@ TEST(OptimalAssignment, MatchesBruteForceOnRandomProblems) {
   OptimalAssignment solver;
   solver.reserve(6, 7);
   for (int trial = 0; trial < 300; ++trial) {
-    const int cols = 1 + static_cast<int>(rng() % 7), rows = static_cast<int>(rng() % static_cast<unsigned>(std::min(cols, 6) + 1));
+    const int cols = 1 + static_cast<int>(rng() % 7),
+              rows = static_cast<int>(rng() % static_cast<unsigned>(std::min(cols, 6) + 1));
     std::vector<double> cost(static_cast<std::size_t>(rows * cols));
     for (double& c : cost) c = std::uniform_real_distribution<double>(0, 10)(rng);
     if (trial % 3 == 0)  // ties: integer costs
@@ -46,7 +49,7 @@ TEST(OptimalAssignment, MatchesBruteForceOnRandomProblems) {
       ASSERT_GE(c, 0);
       ASSERT_LT(c, cols);
       seen.push_back(c);
-      total += cost[static_cast<std::size_t>(r * cols + c)];
+      total += cost[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c)];
     }
     std::sort(seen.begin(), seen.end());
     EXPECT_EQ(std::adjacent_find(seen.begin(), seen.end()), seen.end()) << "a column used twice";

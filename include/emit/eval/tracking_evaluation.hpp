@@ -42,8 +42,8 @@ TrackingEvalOptions quick_tracking_options();
 
 struct CrossingScore {
   int trials = 0;
-  int swapped = 0;  ///< trials where a finger took the other's id
-  int broken = 0;   ///< trials where a finger's id changed otherwise
+  int swapped = 0;       ///< trials where a finger took the other's id
+  int broken = 0;        ///< trials where a finger's id changed otherwise
   int right_events = 0;  ///< trials with exactly two downs and two ups
   double swap_free() const { return trials > 0 ? 1 - static_cast<double>(swapped) / trials : 0; }
 };

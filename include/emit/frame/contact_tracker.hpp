@@ -91,15 +91,16 @@ class ContactTracker {
   struct Track {
     bool live = false;
     std::int64_t id = -1;
-    int missed = 0;         ///< frames unseen in a row
-    double time_s = 0;      ///< of its last update (seen or coasted)
-    Axis axis[2];           ///< chart place and velocity (filtered, or measured and differenced)
+    int missed = 0;     ///< frames unseen in a row
+    double time_s = 0;  ///< of its last update (seen or coasted)
+    Axis axis[2];       ///< chart place and velocity (filtered, or measured and differenced)
     double force_N = 0, force_rate_N_per_s = 0;
     double predicted[2] = {0, 0}, predicted_force_N = 0;  ///< at this frame's time
-    Contact last;  ///< as last reported
+    Contact last;                                         ///< as last reported
   };
 
-  Vector2 chart_difference(const Vector2& a, const Vector2& b) const;  ///< a − b (across a sleeve's seam: the shorter way)
+  Vector2 chart_difference(const Vector2& a,
+                           const Vector2& b) const;  ///< a − b (across a sleeve's seam: the shorter way)
   void predict(Track& track, double time_s) const;
   void start(Track& track, const Contact& contact, const Vector2& chart, double time_s, Contact& out);
   void follow(Track& track, const Contact& contact, const Vector2& chart, double time_s, Contact& out) const;
@@ -107,7 +108,6 @@ class ContactTracker {
   void end_all();
 
   TrackerOptions options_;
-  int max_contacts_;
   Shape surface_;
   double sleeve_period_mm_ = 0;  ///< 2πR around a sleeve, else 0
   std::vector<Track> tracks_;    ///< 2 × max_contacts slots, live or free
@@ -119,6 +119,7 @@ class ContactTracker {
   std::vector<Contact> tracked_, ended_;
   std::int64_t next_id_ = 0;
   double last_time_s_ = 0;
+  int max_contacts_;
   bool started_ = false, reset_pending_ = false;
 };
 

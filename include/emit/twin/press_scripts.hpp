@@ -1,8 +1,8 @@
 #pragma once
 /// \file press_scripts.hpp
 /// Sequences of presses for the twin: a grid of single presses, random presses, two-, three- and
-/// four-finger presses, a press that moves over time, and two fingers that cross. Every press lies inside the sheet, at least
-/// `margin_mm` from its border.
+/// four-finger presses, a press that moves over time, and two fingers that cross. Every press lies inside the sheet, at
+/// least `margin_mm` from its border.
 #include <cstdint>
 #include <string>
 
@@ -56,7 +56,7 @@ struct PressScript {
   double spacing_mm = 10, jitter_mm = 0;  ///< grid
   /// two_finger, crossing (at the closest approach); three/four: min only
   double min_separation_mm = 12, max_separation_mm = 40;
-  Vector2 from_mm{0, 0}, to_mm{0, 0};                     ///< moving
+  Vector2 from_mm{0, 0}, to_mm{0, 0};  ///< moving
   PressStyle style;
 };
 
