@@ -29,11 +29,12 @@ struct EvalArgs {
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
   RealisticEvalOptions realistic_options;
-  RealEvalJob real;        ///< --real DIR: a real skin's presses
-  bool outlines = false;   ///< --outlines
-  bool indenters = false;  ///< --indenters
-  bool tracking = false;   ///< --tracking
-  int crossings = 0;       ///< --crossings (0: the evaluation's own)
+  RealEvalJob real;                   ///< --real DIR: a real skin's presses
+  bool outlines = false;              ///< --outlines
+  bool indenters = false;             ///< --indenters
+  bool tracking = false;              ///< --tracking
+  int crossings = 0;                  ///< --crossings (0: the evaluation's own)
+  std::vector<double> separation_mm;  ///< --separation-mm MIN,MAX
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
@@ -92,6 +93,10 @@ void run_tracking(EvalArgs& args) {
   o.mesh_seed = args.options.mesh_seed;
   if (args.seed->count() > 0) o.seed = args.options.seed;
   if (args.crossings > 0) o.crossings = args.crossings;
+  if (!args.separation_mm.empty()) {
+    const auto separation = pair_or_single(args.separation_mm, "--separation-mm");
+    o.min_separation_mm = separation[0], o.max_separation_mm = separation[1];
+  }
   o.validate();
   const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
   std::printf(
@@ -208,6 +213,10 @@ void add_eval_command(CLI::App& app) {
           ->excludes("--indenters");
   cmd->add_option("--crossings", a->crossings, "With --tracking: this many crossings (default 200; --quick: 4)")
       ->check(positive_integer())
+      ->needs(tracking);
+  cmd->add_option("--separation-mm", a->separation_mm,
+                  "With --tracking: the fingers' distance at the closest approach, MIN,MAX (default 12,20)")
+      ->delimiter(',')
       ->needs(tracking);
   CLI::Option* real =
       cmd->add_option("--real", a->real.folder,

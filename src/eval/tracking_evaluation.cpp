@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -178,7 +179,9 @@ TrackingEvaluation evaluate_tracking(const EvalCase& eval_case, const TrackingEv
     apply_adc(sensor.adc, f, noise);
     return f;
   };
-  progress.say("a " + std::to_string(options.still_force_N) + " N press held still, and steps");
+  char what[64];
+  std::snprintf(what, sizeof what, "a %g N press held still, and steps", options.still_force_N);
+  progress.say(what);
   const Frame still_exact = twin.exact_frame({still});
   for (const double step_mm : {0.0, 0.5, 3.0}) {
     Vector2 to = place;
