@@ -35,6 +35,7 @@ struct EvalArgs {
   bool tracking = false;              ///< --tracking
   int crossings = 0;                  ///< --crossings (0: the evaluation's own)
   std::vector<double> separation_mm;  ///< --separation-mm MIN,MAX
+  TrackerOptions tracker;             ///< --track-gate-mm, --track-coast-frames
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
@@ -93,6 +94,7 @@ void run_tracking(EvalArgs& args) {
   o.mesh_seed = args.options.mesh_seed;
   if (args.seed->count() > 0) o.seed = args.options.seed;
   if (args.crossings > 0) o.crossings = args.crossings;
+  o.tracker = args.tracker;
   if (!args.separation_mm.empty()) {
     const auto separation = pair_or_single(args.separation_mm, "--separation-mm");
     o.min_separation_mm = separation[0], o.max_separation_mm = separation[1];
@@ -213,6 +215,13 @@ void add_eval_command(CLI::App& app) {
           ->excludes("--indenters");
   cmd->add_option("--crossings", a->crossings, "With --tracking: this many crossings (default 200; --quick: 4)")
       ->check(positive_integer())
+      ->needs(tracking);
+  cmd->add_option("--track-gate-mm", a->tracker.gate_mm, "With --tracking: the tracker's gate")
+      ->check(checked_by(&TrackerOptions::gate_mm))
+      ->needs(tracking);
+  cmd->add_option("--track-coast-frames", a->tracker.coast_frames,
+                  "With --tracking: frames a touch may go unseen before it ends")
+      ->check(non_negative_integer())
       ->needs(tracking);
   cmd->add_option("--separation-mm", a->separation_mm,
                   "With --tracking: the fingers' distance at the closest approach, MIN,MAX (default 12,20)")
