@@ -1,11 +1,13 @@
 // emit eval: accuracy per method on the twin beside the paper's figures; --realistic, a user's
 // round on a realistic sheet beside its targets; --outlines, pressed regions of many outlines per
-// method; --real, a real skin's presses (jobs/eval_job.hpp, jobs/real_eval_job.hpp; their tables:
+// method; --tracking, touches over time (ids through crossings, the filter's jitter and lag);
+// --real, a real skin's presses (jobs/eval_job.hpp, jobs/real_eval_job.hpp; their tables:
 // eval_tables.cpp, realistic_eval_table.cpp, outline_eval_table.cpp).
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "emit/core/errors.hpp"
@@ -27,9 +29,13 @@ struct EvalArgs {
   CLI::Option* seed = nullptr;       ///< --seed, given or not
   std::string realistic_seed;
   RealisticEvalOptions realistic_options;
-  RealEvalJob real;        ///< --real DIR: a real skin's presses
-  bool outlines = false;   ///< --outlines
-  bool indenters = false;  ///< --indenters
+  RealEvalJob real;                   ///< --real DIR: a real skin's presses
+  bool outlines = false;              ///< --outlines
+  bool indenters = false;             ///< --indenters
+  bool tracking = false;              ///< --tracking
+  int crossings = 0;                  ///< --crossings (0: the evaluation's own)
+  std::vector<double> separation_mm;  ///< --separation-mm MIN,MAX
+  TrackerOptions tracker;             ///< --track-gate-mm, --track-coast-frames
   long long test_from = -1;
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
@@ -82,6 +88,47 @@ void run_outlines(EvalArgs& args) {
   }
 }
 
+/// `emit eval --tracking`: touches over time on each chosen sheet (the 60 mm one by default).
+void run_tracking(EvalArgs& args) {
+  TrackingEvalOptions o = args.options.quick ? quick_tracking_options() : TrackingEvalOptions{};
+  o.mesh_seed = args.options.mesh_seed;
+  if (args.seed->count() > 0) o.seed = args.options.seed;
+  if (args.crossings > 0) o.crossings = args.crossings;
+  o.tracker = args.tracker;
+  if (!args.separation_mm.empty()) {
+    const auto separation = pair_or_single(args.separation_mm, "--separation-mm");
+    o.min_separation_mm = separation[0], o.max_separation_mm = separation[1];
+  }
+  o.validate();
+  const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
+  std::printf(
+      "emit eval --tracking on the twin (mesh seed %d; noise and presses from seed %llu), contact fitting as emit "
+      "live runs it, %g frames/s: %d crossings of two fingers (%d-%d frames, %g-%g mm apart, forces %g-%g N "
+      "crossing), a %g N press held still for %d frames, steps%s\n",
+      o.mesh_seed, static_cast<unsigned long long>(o.seed), o.frames_per_s, o.crossings, o.min_frames, o.max_frames,
+      o.min_separation_mm, o.max_separation_mm, o.min_force_N, o.max_force_N, o.still_force_N, o.still_frames,
+      args.options.quick ? " (--quick: a smoke test, too few crossings to judge by)" : "");
+  for (const auto& [c, electrodes] : sheets) {
+    std::printf("\n%s, %d electrodes\n", c.name.c_str(), electrodes);
+    std::fflush(stdout);
+    const TrackingEvaluation e = run_tracking_eval_job(c, o, stderr_progress());
+    for (const auto& [name, score] : {std::pair{"unfiltered", e.unfiltered}, std::pair{"filtered", e.filtered}})
+      std::printf(
+          "  crossings, %-10s: ids kept (no swap) in %d of %d = %.1f %% (target >= 99 %%); a finger's id changed "
+          "otherwise in %d; one down and one up per finger in %d\n",
+          name, score.trials - score.swapped, score.trials, 100 * score.swap_free(), score.broken, score.right_events);
+    std::printf("  frames where a finger had no contact within 5 mm: %d of %d\n", e.frames_missing_a_finger,
+                e.crossing_frames);
+    std::printf("  still %g N press: jitter %.4f mm rms unfiltered, %.4f mm filtered (target <= 0.05 mm)\n",
+                o.still_force_N, e.jitter_mm, e.filtered_jitter_mm);
+    for (const StepLag& s : e.steps)
+      std::printf("  step of %g mm: within 10 %% of it after %d frames filtered, %d unfiltered (target <= 1)\n",
+                  s.step_mm, s.lag_frames, s.raw_lag_frames);
+    std::printf("  reconstruction %.1f ms a frame; tracking %.2f us a frame\n", e.reconstruct_ms_per_frame,
+                e.track_us_per_frame);
+  }
+}
+
 /// `emit eval --real DIR --sensor S`: a real skin's presses, calibrated on the first N.
 void run_real(EvalArgs& args) {
   RealEvalJob& job = args.real;
@@ -102,6 +149,7 @@ void run_eval(EvalArgs args) {
   if (!args.real.folder.empty()) return run_real(args);
   if (args.realistic->count() > 0) return run_realistic(args);
   if (args.outlines || args.indenters) return run_outlines(args);
+  if (args.tracking) return run_tracking(args);
   args.options.methods.clear();
   for (const std::string& name : args.methods) args.options.methods.push_back(parse_method(name));
   if (run_merit_eval(args.merit, args.sheet, args.options.methods, args.options.mesh_seed, args.options.seed,
@@ -135,7 +183,7 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--mesh-seed", o.mesh_seed, "Seed of the twin's mesh")->capture_default_str();
   a->seed = cmd->add_option("--seed", o.seed,
                             "Seed of the presses and of the ADC noise (default 1; with --realistic, 11; with "
-                            "--outlines and --indenters, 21)");
+                            "--outlines and --indenters, 21; with --tracking, 31)");
   cmd->add_flag("--sweep", a->sweep, "Print every lambda of the sweep");
   cmd->add_option("--sheet", a->sheet,
                   "Only the sheets whose name begins with this (60, 30, circle, 120, dome, sleeve, fingertip)");
@@ -157,6 +205,28 @@ void add_eval_command(CLI::App& app) {
                 "also with each radius declared (--contact-radius-mm)")
       ->excludes(a->realistic)
       ->excludes("--outlines");
+  CLI::Option* tracking =
+      cmd->add_flag("--tracking", a->tracking,
+                    "Touches over time with contact fitting (the 60 mm sheet unless --sheet says): two fingers "
+                    "crossing, their forces crossing (ids kept, downs and ups), a 5 N press held still (jitter, "
+                    "unfiltered and filtered) and steps (lag)")
+          ->excludes(a->realistic)
+          ->excludes("--outlines")
+          ->excludes("--indenters");
+  cmd->add_option("--crossings", a->crossings, "With --tracking: this many crossings (default 200; --quick: 4)")
+      ->check(positive_integer())
+      ->needs(tracking);
+  cmd->add_option("--track-gate-mm", a->tracker.gate_mm, "With --tracking: the tracker's gate")
+      ->check(checked_by(&TrackerOptions::gate_mm))
+      ->needs(tracking);
+  cmd->add_option("--track-coast-frames", a->tracker.coast_frames,
+                  "With --tracking: frames a touch may go unseen before it ends")
+      ->check(non_negative_integer())
+      ->needs(tracking);
+  cmd->add_option("--separation-mm", a->separation_mm,
+                  "With --tracking: the fingers' distance at the closest approach, MIN,MAX (default 12,20)")
+      ->delimiter(',')
+      ->needs(tracking);
   CLI::Option* real =
       cmd->add_option("--real", a->real.folder,
                       "A real skin's presses: a folder of frames.csv, references_per_frame.csv (or reference.csv) and "

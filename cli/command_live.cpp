@@ -165,6 +165,7 @@ void add_live_command(CLI::App& app) {
                 "going on, until Ctrl-C, --frames or --seconds");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
+  add_tracking_options(cmd, job.tracking);
   cmd->callback([a] {
     LiveJob job = a->job;
     job.method = parse_method(a->method);

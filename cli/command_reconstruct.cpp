@@ -53,6 +53,9 @@ void add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--frames", job.frames_path, "Frames to reconstruct (CSV)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame); - for stdout")
       ->required();
+  cmd->add_option("--tracks", job.tracks_path,
+                  "Touches out as CSV, one row per touch per frame (time_s, id, phase, x_mm, y_mm, force_N, ...) for "
+                  "a spreadsheet or pandas");
   cmd->add_option("--calibration", job.calibration_path, "Pressure calibration (JSON from 'emit calibrate')")
       ->check(CLI::ExistingFile);
   cmd->add_option("--method", a->method,
@@ -77,6 +80,11 @@ void add_reconstruct_command(CLI::App& app) {
                   "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");
+  cmd->add_option("--fps", job.frames_per_s,
+                  "The frames' rate: frame f is at f/FPS s, for the contacts' velocities and the MCAP's stamps")
+      ->check(positive_number())
+      ->capture_default_str();
+  add_tracking_options(cmd, job.tracking);
   cmd->callback([a] { run_reconstruct(*a); });
 }
 

@@ -87,18 +87,20 @@ void add_simulate_command(CLI::App& app) {
                   "(semi-axes), ring:x,y,inner_r,outer_r,F, polygon:x,y,F,u1,v1,u2,v2,u3,v3[,...] (vertices relative "
                   "to x,y) (repeat for simultaneous presses)");
   cmd->add_option("--script", a->script,
-                  "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger or "
-                  "moving");
+                  "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger, "
+                  "moving or crossing (two fingers passing each other, their forces crossing)");
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
-  cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger and moving scripts")
+  cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger, moving and crossing scripts")
       ->check(positive_integer());
   cmd->add_option("--spacing-mm", script.spacing_mm, "Grid pitch")->check(positive_number());
   cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(non_negative_number());
   cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());
   cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly")->delimiter(',');
   cmd->add_option("--separation-mm", a->separation_mm,
-                  "Two-finger separation range MIN,MAX; three- and four-finger: MIN, the least between any two")
+                  "Two-finger separation range MIN,MAX (crossing: at the closest approach); three- and four-finger: "
+                  "MIN, "
+                  "the least between any two")
       ->delimiter(',');
   cmd->add_option("--profile", a->profile,
                   "Indenter profile of --press and scripts: flat (uniform) or spherical (Hertz)")

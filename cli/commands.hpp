@@ -42,6 +42,10 @@ void add_calibrate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_live_command(CLI::App& app);
 
+/// --track-gate-mm, --track-coast-frames and --filter: the contacts' tracking (frame/contact_tracker.hpp),
+/// for `emit live` and `emit reconstruct`.
+void add_tracking_options(CLI::App* cmd, TrackerOptions& options);
+
 /// Runs `emit live` (command_live.cpp): until Ctrl-C or the job's limits; prints the source, the
 /// viewer's address, and frames/s and latency at the end. `emit demo` runs it too.
 void run_live(const LiveJob& job);

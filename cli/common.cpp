@@ -91,4 +91,18 @@ void print_simulate_report(const SimulateJob& job, const SimulateReport& r, bool
   if (r.realistic) print_realistic_sheet(*r.realistic, r.sheet_path);
 }
 
+void add_tracking_options(CLI::App* cmd, TrackerOptions& options) {
+  cmd->add_option("--track-gate-mm", options.gate_mm,
+                  "Tracking: a contact farther than this from a touch's predicted place is another touch")
+      ->check(checked_by(&TrackerOptions::gate_mm))
+      ->capture_default_str();
+  cmd->add_option("--track-coast-frames", options.coast_frames,
+                  "Tracking: frames a touch may go unseen before it ends (its up event)")
+      ->check(non_negative_integer())
+      ->capture_default_str();
+  cmd->add_flag("--filter", options.filter,
+                "Tracking: smooth each touch's position (a constant-velocity Kalman filter that restarts on a jump, "
+                "so it does not lag a press)");
+}
+
 }  // namespace emit::cli

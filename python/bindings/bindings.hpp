@@ -24,6 +24,7 @@ void bind_sensor(py::module_& m);         ///< sensor.cpp: Sensor, Mesh, Press, 
 void bind_twin(py::module_& m);           ///< twin.cpp: Twin, simulate
 void bind_calibration(py::module_& m);    ///< calibration.cpp: Calibration, calibrate
 void bind_reconstructor(py::module_& m);  ///< reconstructor.cpp: Contact, CONTACT_DTYPE, Reconstructor
+void bind_tracker(py::module_& m);        ///< tracker.cpp: Tracker
 void bind_live(py::module_& m);           ///< live.cpp: LiveStream
 
 }  // namespace emit::python

@@ -108,6 +108,15 @@ a pulled cable put back within them is no failure): a failure never ends the ite
           "sequence", [](const LiveStream& self) { return self.loop().last_frame().sequence; },
           "The source's number of the last frame.")
       .def_property_readonly(
+          "ended",
+          [](const LiveStream& self) {
+            py::list list;
+            for (const Contact& c : self.loop().tracker().ended()) list.append(py::cast(c));
+            return list;
+          },
+          "The touches that ended with the last frame: each its last state, phase 'up' (the contacts carry "
+          "their touches' id, phase and velocity).")
+      .def_property_readonly(
           "board_time_s", [](const LiveStream& self) { return self.loop().last_frame().board_time_s; },
           "When the board took the last frame [s], on the board's clock.")
       .def_property_readonly(

@@ -10,5 +10,6 @@ PYBIND11_MODULE(_emit, m) {
   emit::python::bind_twin(m);
   emit::python::bind_calibration(m);
   emit::python::bind_reconstructor(m);
+  emit::python::bind_tracker(m);
   emit::python::bind_live(m);
 }

@@ -28,6 +28,7 @@ from ._emit import (  # noqa: F401  (the package's names; `from emit import *` t
     Reconstructor,
     Sensor,
     SolverError,
+    Tracker,
     Twin,
     __version__,
     calibrate,

@@ -204,6 +204,24 @@ class Reconstructor:
     @property
     def fit_rms_misfit_mV(self) -> Optional[float]: ...
 
+class Tracker:
+    def __init__(
+        self,
+        sensor: Optional[Sensor] = None,
+        *,
+        gate_mm: float = 15.0,
+        coast_frames: int = 1,
+        filter: bool = False,
+        force_weight: float = 0.25,
+        max_contacts: int = 64,
+    ) -> None: ...
+    def update(self, contacts: list[Contact], time_s: float) -> list[Contact]: ...
+    @property
+    def ended(self) -> list[Contact]: ...
+    def reset(self) -> None: ...
+    @property
+    def live_count(self) -> int: ...
+
 class LiveStream(Iterator[Tuple[FloatArray, list[Contact]]]):
     def __init__(
         self,
@@ -224,6 +242,8 @@ class LiveStream(Iterator[Tuple[FloatArray, list[Contact]]]):
     def __next__(self) -> Tuple[FloatArray, list[Contact]]: ...
     @property
     def sequence(self) -> int: ...
+    @property
+    def ended(self) -> list[Contact]: ...
     @property
     def board_time_s(self) -> float: ...
     @property

@@ -37,4 +37,9 @@ OutlineEvaluation run_outline_eval_job(const EvalCase& eval_case, const OutlineE
   return evaluate_outlines(eval_case, options, progress);
 }
 
+TrackingEvaluation run_tracking_eval_job(const EvalCase& eval_case, const TrackingEvalOptions& options,
+                                         const Progress& progress) {
+  return evaluate_tracking(eval_case, options, progress);
+}
+
 }  // namespace emit

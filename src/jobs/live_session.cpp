@@ -67,6 +67,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain}.validate();
   LiveOptions live_options;
   live_options.frame.contact_radius_mm = job.contact_radius_mm;
+  live_options.tracking = job.tracking;
   check_frame_options(job.method, live_options.frame);
   // Every output opened before any input is read: one that cannot be opened touches none. Each
   // file grows as PATH.partial while the run lasts and is renamed to PATH at its end.

@@ -8,10 +8,12 @@
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/core/errors.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/frame/batch.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
+#include "emit/io/tracks_csv.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/ros2_messages.hpp"
 #include "emit/io/tactile_mcap.hpp"
@@ -68,9 +70,6 @@ FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N)
 /// across threads, and memory stays bounded (256 × 16² doubles = 0.5 MB).
 constexpr std::size_t chunk_frames = 256;
 
-/// Frames in an MCAP recording of a file are this far apart: the board's 50 frames/s.
-constexpr std::uint64_t mcap_frame_interval_ns = 20'000'000;
-
 }  // namespace
 
 ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress& progress) {
@@ -80,9 +79,12 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                                {"--frames", job.frames_path},
                                {"--calibration", job.calibration_path}},
                               {OutputRequest{{"--contacts", job.contacts_path}, {.standard_output = true}},
+                               OutputRequest{{"--tracks", job.tracks_path}},
                                OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
-  auto& [contacts_file, mcap_file] = outputs;
-  FrameOptions declared;  // checked before anything is read
+  auto& [contacts_file, tracks_file, mcap_file] = outputs;
+  job.tracking.validate();  // checked before anything is read
+  option_check::positive("ReconstructJob", "frames_per_s", job.frames_per_s);
+  FrameOptions declared;
   declared.contact_radius_mm = job.contact_radius_mm;
   check_frame_options(job.method, declared);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
@@ -133,8 +135,13 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     reconstructor.emplace(pipeline.reconstructor(frame_options));
     reconstructor->set_reference(reference);
   }
-  // A file of frames has no times: the recording puts them at the board's 50 frames/s from now.
+  // A file of frames has no times: frame f is at f / frames_per_s (the board's 50 frames/s unless
+  // told), for the tracker and, from now, for the recording.
   const std::uint64_t start_ns = unix_time_ns();
+  const double frame_s = 1 / job.frames_per_s;
+  const auto frame_ns = static_cast<std::uint64_t>(std::llround(1e9 * frame_s));
+  ContactTracker tracker(job.tracking, 64, model.surface);
+  if (tracks_file.given()) write_tracks_header(tracks_file.stream());
   std::optional<TactileMcap> mcap;
   if (mcap_file.given()) mcap.emplace(std::move(mcap_file), sensor.name, model.mesh, start_ns);
   const auto online_start = std::chrono::steady_clock::now();
@@ -146,29 +153,41 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
     for (Frame frame; chunk.size() < chunk_frames && reader.next(frame);) chunk.push_back(frame);
     const std::size_t count = chunk.size();
     check_no_stuck_rows(chunk, sensor.adc, options.excluded, job.frames_path, first);
+    // Each frame's contacts tracked, then written: its line (with its board time and the touches
+    // that ended) and its tracks' rows.
+    const auto track_and_write = [&](std::size_t index, const std::vector<Contact>& found, double misfit_mV) {
+      const double time_s = static_cast<double>(index) * frame_s;
+      const std::vector<Contact>& contacts = tracker.update(found, time_s);
+      write_contacts_line(contacts_file.stream(), static_cast<long>(index), contacts, misfit_mV, FrameTimes{time_s},
+                          &tracker.ended());
+      if (tracks_file.given()) write_tracks_rows(tracks_file.stream(), time_s, index, contacts, &tracker.ended());
+      return &contacts;
+    };
     if (batch) {
       const auto contacts = pipeline.reconstruct_batch(frame_options, reference, chunk, job.threads);
-      for (std::size_t f = 0; f < count; ++f)
-        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts[f], -1);
+      for (std::size_t f = 0; f < count; ++f) track_and_write(first + f, contacts[f], -1);
     } else {
       for (std::size_t f = 0; f < count; ++f) {
-        const auto& contacts = reconstructor->process(chunk[f]);
+        const auto& found = reconstructor->process(chunk[f]);
         const FitResult* fitted = reconstructor->fit_result();
-        write_contacts_line(contacts_file.stream(), static_cast<long>(first + f), contacts,
-                            fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
+        const std::vector<Contact>& contacts =
+            *track_and_write(first + f, found, fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
         if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
         if (mcap)
-          mcap->write(first + f, start_ns + (first + f) * mcap_frame_interval_ns, frame_view(chunk[f]), contacts,
-                      reconstructor->pressure(), 1e-9 * static_cast<double>((first + f) * mcap_frame_interval_ns));
+          mcap->write(first + f, start_ns + (first + f) * frame_ns, frame_view(chunk[f]), contacts,
+                      reconstructor->pressure(), static_cast<double>(first + f) * frame_s, &tracker.ended());
         progress.step("reconstructing frame", static_cast<long>(first + f + 1), survey.frames);
       }
     }
     if (batch) progress.step("reconstructing frame", static_cast<long>(first + count), survey.frames);
     contacts_file.check();  // a full disk or a reader gone stops the run here, not at its end
+    if (tracks_file.given()) tracks_file.check();
   }
   contacts_file.finish();
+  if (tracks_file.given()) tracks_file.finish();
   if (mcap) mcap->close();
   contacts_file.commit();
+  if (tracks_file.given()) tracks_file.commit();
   report.frames_per_s = static_cast<double>(report.frames) / std::max(seconds_since(online_start), 1e-9);
   return report;
 }

@@ -21,6 +21,8 @@ std::uint64_t unix_time_ns_at(std::chrono::steady_clock::time_point at) {
 }
 
 constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in the displayed rate
+/// The most contacts tracked a frame (the tracker's limit; a linear method's further regions pass untracked).
+constexpr int live_max_contacts = 64;
 
 }  // namespace
 
@@ -28,6 +30,7 @@ LiveLoop::LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& o
     : source_(source),
       options_((options.validate(), options)),  // checked before anything is built for it
       reconstructor_(pipeline.reconstructor(options.frame)),
+      tracker_(options.tracking, live_max_contacts, pipeline.model().surface),
       reference_(options.reference),
       no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {}
 
@@ -76,6 +79,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   out.host_time_ns = last_host_time_ns_ = unix_time_ns_at(frame.received);
   if (recorder_) recorder_->record(frame.raw);
   if (reference_.capturing()) {
+    tracker_.reset();  // the touches end: a new reference, new contacts
     if (reference_.capture(frame.volts)) reconstructor_.set_reference(reference_.reference());
     ++stats_.capture_frames;
     out.capturing_reference = true;
@@ -84,7 +88,8 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
     publish(out);
     return nullptr;
   }
-  const std::vector<Contact>& contacts = reconstructor_.process(frame.volts);
+  const std::vector<Contact>& contacts = tracker_.update(reconstructor_.process(frame.volts), frame.board_time_s);
+  out.ended = &tracker_.ended();
   if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
   if (contacts_out_) write_contacts(out, contacts);
   if (tracks_out_) {
@@ -144,6 +149,7 @@ void LiveLoop::publish(LiveFrame& frame) {
 void LiveOptions::validate() const {
   reference.validate();
   frame.validate();
+  tracking.validate();
   option_check::non_negative("LiveOptions", "max_seconds", max_seconds);
   option_check::at_least("LiveOptions", "poll", poll.count(), 1);
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "emit/core/errors.hpp"
 #include "emit/core/quote_input.hpp"
@@ -180,6 +181,36 @@ PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& fro
   return sequence;
 }
 
+PressSequence crossing_script(const Sensor& sensor, int frames, double min_separation_mm, double max_separation_mm,
+                              const PressStyle& style) {
+  if (frames < 2) throw InvalidInput("two crossing fingers need at least 2 frames");
+  if (!(min_separation_mm > 0) || max_separation_mm < min_separation_mm)
+    throw InvalidInput("separations must satisfy 0 < min <= max");
+  Sampler sampler(sensor, style);
+  for (int attempt = 0; attempt < 10000; ++attempt) {
+    const Vector2 centre = sampler.random_point();
+    const double angle = sampler.uniform(0, 2 * std::numbers::pi);
+    const double separation_mm = sampler.uniform(min_separation_mm, max_separation_mm);
+    const double length_a_mm = sampler.uniform(10, 40), length_b_mm = sampler.uniform(10, 40);
+    double low_N = sampler.force(), high_N = sampler.force();
+    if (low_N > high_N) std::swap(low_N, high_N);
+    const Vector2 along(std::cos(angle), std::sin(angle)), across(-along.y(), along.x());
+    PressSequence sequence;
+    for (int f = 0; f < frames; ++f) {
+      const double share = static_cast<double>(f) / (frames - 1), from_middle = share - 0.5;
+      const Vector2 a = centre + from_middle * length_a_mm * along + 0.5 * separation_mm * across;
+      const Vector2 b = centre - from_middle * length_b_mm * along - 0.5 * separation_mm * across;
+      if (!sampler.admissible(a) || !sampler.admissible(b)) break;
+      Press first = sampler.press_at(a), second = sampler.press_at(b);
+      first.force_N = low_N + share * (high_N - low_N);
+      second.force_N = high_N - share * (high_N - low_N);
+      sequence.push_back({first, second});
+    }
+    if (static_cast<int>(sequence.size()) == frames) return sequence;
+  }
+  throw InvalidInput("no room on the sheet for two fingers crossing that far apart");
+}
+
 PressScript::Kind parse_script_kind(const std::string& name) {
   if (name == "none") return PressScript::Kind::none;
   if (name == "grid") return PressScript::Kind::grid;
@@ -188,8 +219,9 @@ PressScript::Kind parse_script_kind(const std::string& name) {
   if (name == "three-finger") return PressScript::Kind::three_finger;
   if (name == "four-finger") return PressScript::Kind::four_finger;
   if (name == "moving") return PressScript::Kind::moving;
+  if (name == "crossing") return PressScript::Kind::crossing;
   throw InvalidInput("--script: unknown script " + quote_input(name) +
-                     " (none, grid, random, two-finger, three-finger, four-finger, moving)");
+                     " (none, grid, random, two-finger, three-finger, four-finger, moving, crossing)");
 }
 
 double script_frame_count(const Sensor& sensor, const PressScript& script) {
@@ -211,6 +243,8 @@ PressSequence run_script(const Sensor& sensor, const PressScript& script) {
       return fingers_script(sensor, script.frames, 4, script.min_separation_mm, script.style);
     case PressScript::Kind::moving:
       return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
+    case PressScript::Kind::crossing:
+      return crossing_script(sensor, script.frames, script.min_separation_mm, script.max_separation_mm, script.style);
   }
   return {};
 }

@@ -18,7 +18,9 @@
 #include "emit/eval/real_evaluation.hpp"
 #include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
+#include "emit/eval/tracking_evaluation.hpp"
 #include "emit/frame/contact_fitter.hpp"
+#include "emit/frame/contact_tracker.hpp"
 #include "emit/frame/reconstructor.hpp"
 #include "emit/frame/reference.hpp"
 #include "emit/live/dds_publisher.hpp"
@@ -193,8 +195,22 @@ TEST(OptionCheck, EveryOptionsStructChecksItself) {
          o.validate();
        },
        "ReferenceOptions::drift_rate"},
+      {"TrackerOptions", [] { TrackerOptions{}.validate(); },
+       [] {
+         TrackerOptions o;
+         o.jump_sigmas = 0;
+         o.validate();
+       },
+       "TrackerOptions::jump_sigmas must be positive, got 0"},
+      {"TrackingEvalOptions", [] { TrackingEvalOptions{}.validate(); },
+       [] {
+         TrackingEvalOptions o;
+         o.max_frames = 10;
+         o.validate();
+       },
+       "TrackingEvalOptions::max_frames"},
   };
-  EXPECT_EQ(cases.size(), 21u) << "every *Options struct of include/emit";
+  EXPECT_EQ(cases.size(), 23u) << "every *Options struct of include/emit";
   for (const Case& c : cases) {
     EXPECT_EQ(test::error_of(c.defaults), "no error") << c.name << "'s defaults";
     const std::string said = test::error_of(c.wrong);

@@ -171,6 +171,38 @@ TEST(LiveLoop, SteppingGivesEachReconstructedFramesContacts) {
   EXPECT_EQ(pressed, 20 - (unpaced().untouched_frames - capture));
 }
 
+// The loop tracks its contacts at the frames' board times: the scripted finger is one touch (one id,
+// down then move, moving at the script's pace); capturing the reference again ends it (its up comes
+// with the next reconstructed frame) and the finger comes back as a new touch.
+TEST(LiveLoop, TracksTheFingerAsOneTouchUntilTheReferenceIsCapturedAgain) {
+  LiveBench& b = bench();
+  SimSource source(b.sensor, parse_sim_script("sim"), unpaced());
+  LiveLoop loop(source, b.pipeline);
+  std::vector<Contact> touches;
+  while (touches.size() < 15)
+    if (const std::vector<Contact>* contacts = loop.step(); contacts && !contacts->empty()) {
+      ASSERT_EQ(contacts->size(), 1u);
+      touches.push_back((*contacts)[0]);
+    }
+  EXPECT_EQ(touches.front().phase, TouchPhase::down);
+  for (std::size_t k = 1; k < touches.size(); ++k) {
+    EXPECT_EQ(touches[k].id, touches.front().id) << "frame " << k;
+    EXPECT_EQ(touches[k].phase, TouchPhase::move);
+  }
+  // The finger's speed along its figure-eight is tens of mm/s; the tracker's velocity says so.
+  EXPECT_GT(std::hypot(touches.back().vx_mm_per_s, touches.back().vy_mm_per_s), 1.0);
+  loop.command("recapture");
+  const std::vector<Contact>* contacts = nullptr;
+  while (!contacts) contacts = loop.step();
+  ASSERT_EQ(loop.tracker().ended().size(), 1u);
+  EXPECT_EQ(loop.tracker().ended()[0].id, touches.front().id);
+  EXPECT_EQ(loop.tracker().ended()[0].phase, TouchPhase::up);
+  for (const Contact& c : *contacts) {  // against a reference taken under the finger: whatever it finds is new
+    EXPECT_GT(c.id, touches.front().id);
+    EXPECT_EQ(c.phase, TouchPhase::down);
+  }
+}
+
 /// Hands out one frame's volts under the sequence numbers it is given, then ends.
 class NumberedSource : public FrameSource {
  public:

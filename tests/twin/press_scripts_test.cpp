@@ -1,6 +1,8 @@
 // Press scripts: every press on the sheet and inside its margin, counts, separations, seeds.
 #include "emit/twin/press_scripts.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "emit/core/errors.hpp"
@@ -78,6 +80,49 @@ TEST(PressScripts, MovingPressFollowsAStraightLine) {
 
 // Three and four fingers: every two at least the separation apart, inside the margin, seeded,
 // each with the style's profile.
+// Two fingers crossing: each on its own straight line at constant speed, the lines parallel and the
+// drawn separation apart (the least distance, half-way), the forces crossing there; seeds differ.
+TEST(PressScripts, CrossingFingers) {
+  const Sensor sensor = default_sensor();
+  PressStyle style;
+  style.min_force_N = 2, style.max_force_N = 12;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    style.seed = seed;
+    const PressSequence s = crossing_script(sensor, 31, 12, 20, style);
+    ASSERT_EQ(s.size(), 31u);
+    expect_inside_margin(sensor, s, style.margin_mm);
+    double closest = 1e9;
+    int closest_frame = -1;
+    for (int f = 0; f < 31; ++f) {
+      const auto& frame = s[static_cast<std::size_t>(f)];
+      ASSERT_EQ(frame.size(), 2u);
+      const double d = std::hypot(frame[0].x_mm - frame[1].x_mm, frame[0].y_mm - frame[1].y_mm);
+      if (d < closest) closest = d, closest_frame = f;
+      if (f > 1) {  // constant velocity: equal steps (round-off of sums of ~60 mm)
+        for (int k = 0; k < 2; ++k) {
+          const Press &a = s[f - 2][k], &b = s[f - 1][k], &c = frame[k];
+          EXPECT_NEAR(c.x_mm - b.x_mm, b.x_mm - a.x_mm, 1e-9);
+          EXPECT_NEAR(c.y_mm - b.y_mm, b.y_mm - a.y_mm, 1e-9);
+        }
+      }
+    }
+    EXPECT_EQ(closest_frame, 15);  // the middle frame
+    EXPECT_GE(closest, 12 - 1e-9);
+    EXPECT_LE(closest, 20 + 1e-9);
+    EXPECT_LT(s[0][0].force_N, s[0][1].force_N);  // the first rises, the second falls …
+    EXPECT_GT(s[30][0].force_N, s[30][1].force_N);
+    EXPECT_NEAR(s[15][0].force_N, s[15][1].force_N, 1e-9);  // … equal half-way
+    EXPECT_NEAR(s[0][0].force_N, s[30][1].force_N, 1e-12);
+  }
+  style.seed = 1;
+  const PressSequence a = crossing_script(sensor, 31, 12, 20, style);
+  style.seed = 2;
+  EXPECT_NE(crossing_script(sensor, 31, 12, 20, style)[0][0].x_mm, a[0][0].x_mm);
+  EXPECT_THROW(crossing_script(sensor, 1, 12, 20, style), InvalidInput);
+  EXPECT_THROW(crossing_script(sensor, 30, 70, 80, style), InvalidInput);  // no room on a 60 mm sheet
+  EXPECT_EQ(parse_script_kind("crossing"), PressScript::Kind::crossing);
+}
+
 TEST(PressScripts, FingersAreAtLeastTheSeparationApart) {
   const Sensor sensor = default_sensor();
   PressStyle style;

@@ -3,7 +3,8 @@
 /// `emit eval` on the digital twin: the standard sheets, each evaluated per method beside the
 /// paper's figures (eval/sheet_evaluation.hpp) with its plots, or the round a user runs with a real
 /// sheet on a realistic one (`--realistic`, eval/realistic_evaluation.hpp), or pressed regions of
-/// many outlines (`--outlines`, eval/outline_evaluation.hpp). A sheet at a time, so
+/// many outlines (`--outlines`, eval/outline_evaluation.hpp), or touches over time (`--tracking`,
+/// eval/tracking_evaluation.hpp). A sheet at a time, so
 /// the command can print each as it is done (an evaluation runs for minutes).
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "emit/eval/outline_evaluation.hpp"
 #include "emit/eval/realistic_evaluation.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
+#include "emit/eval/tracking_evaluation.hpp"
 
 namespace emit {
 
@@ -43,5 +45,10 @@ RealisticEvaluation run_realistic_eval_job(const EvalCase& eval_case, const Real
 /// curved sheet), SolverError.
 OutlineEvaluation run_outline_eval_job(const EvalCase& eval_case, const OutlineEvalOptions& options,
                                        const Progress& progress = {});
+
+/// Touches over time on one sheet: crossings, a still press, steps. \throw InvalidInput (a bad
+/// option, a sheet without room), SolverError.
+TrackingEvaluation run_tracking_eval_job(const EvalCase& eval_case, const TrackingEvalOptions& options,
+                                         const Progress& progress = {});
 
 }  // namespace emit

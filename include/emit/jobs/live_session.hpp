@@ -43,6 +43,7 @@ struct LiveJob {
   double frames_per_s = 50;      ///< the simulator's pace; 0: a recording as fast as it goes
   bool loop = false;             ///< a recording starts again at its end (SourceOptions::loop)
   double reconnect_s = 30;       ///< a serial port that went away is retried this long (SourceOptions::reconnect_s)
+  TrackerOptions tracking;       ///< the contacts' ids, phases, velocities (frame/contact_tracker.hpp)
 };
 
 class LiveSession {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "emit/core/progress.hpp"
+#include "emit/frame/contact_tracker.hpp"
 #include "emit/model/method.hpp"
 
 namespace emit {
@@ -17,6 +18,7 @@ struct ReconstructJob {
   std::string reference_path;    ///< no-contact frames (CSV; averaged)
   std::string frames_path;       ///< frames to reconstruct (CSV)
   std::string contacts_path;     ///< contacts out (JSON Lines); "-": standard output
+  std::string tracks_path;       ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
   std::string calibration_path;  ///< empty: uncalibrated
   std::string images_dir;        ///< empty: no pictures
   std::string mcap_path;         ///< empty: no MCAP recording (io/tactile_mcap.hpp)
@@ -26,6 +28,10 @@ struct ReconstructJob {
   double contact_radius_mm = 0;  ///< a declared indenter (FrameOptions::contact_radius_mm); 0: none
   std::string cache_dir;         ///< empty: no operator cache
   int threads = 1;               ///< the linear methods' batch is split across them
+  /// The frames' rate: frame f is at f / frames_per_s s (a file of frames has no times), for
+  /// tracking's velocities and the MCAP recording's stamps.
+  double frames_per_s = 50;
+  TrackerOptions tracking;  ///< the contacts' ids, phases and velocities (frame/contact_tracker.hpp)
 };
 
 struct ReconstructReport {

@@ -1,7 +1,8 @@
 #pragma once
 /// \file live_loop.hpp
-/// The live path: source → reference (frame/reference.hpp) → Reconstructor → contacts (JSON Lines) and
-/// publishers (the viewer's server). One thread runs it; commands (re-capture the reference) may
+/// The live path: source → reference (frame/reference.hpp) → Reconstructor → ContactTracker (ids,
+/// phases, velocities: frame/contact_tracker.hpp) → contacts (JSON Lines) and publishers (the
+/// viewer's server). One thread runs it; commands (re-capture the reference) may
 /// come from any thread and are applied between frames. It measures frames/s and end-to-end
 /// latency: from SourceFrame::received to the frame's contacts written and published.
 #include <atomic>
@@ -14,6 +15,7 @@
 #include "emit/acquire/frame_source.hpp"
 #include "emit/acquire/recorder.hpp"
 #include "emit/core/output_file.hpp"
+#include "emit/frame/contact_tracker.hpp"
 #include "emit/frame/reference.hpp"
 #include "emit/live/latency_stats.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -48,6 +50,8 @@ class FramePublisher {
 struct LiveOptions {
   ReferenceOptions reference;  ///< its capture and drift (frame/reference.hpp)
   FrameOptions frame;
+  /// Touches over time: each frame's contacts tracked at the frame's board time (SourceFrame::board_time_s).
+  TrackerOptions tracking;
   /// Stop after this many reconstructed frames (the reference capture's frames do not count); 0: run until stopped.
   std::uint64_t max_frames = 0;
   /// Stop after this many seconds of running; 0: no limit.
@@ -120,6 +124,9 @@ class LiveLoop {
   /// When the last frame handled reached the host [ns since the Unix epoch, the system clock].
   std::uint64_t last_host_time_ns() const { return last_host_time_ns_; }
   const Reconstructor& reconstructor() const { return reconstructor_; }
+  /// The tracker: its ended() are the touches that ended at the last reconstructed frame (their ups).
+  /// Every touch ends when the reference is captured again (reported at the next reconstructed frame).
+  const ContactTracker& tracker() const { return tracker_; }
   const LiveStats& stats() const { return stats_; }
 
  private:
@@ -131,6 +138,7 @@ class LiveLoop {
   FrameSource& source_;
   LiveOptions options_;
   Reconstructor reconstructor_;
+  ContactTracker tracker_;
   ReferenceTracker reference_;
   OutputFile* contacts_out_ = nullptr;
   OutputFile* tracks_out_ = nullptr;

@@ -1,8 +1,8 @@
 #pragma once
 /// \file press_scripts.hpp
 /// Sequences of presses for the twin: a grid of single presses, random presses, two-, three- and
-/// four-finger presses, and a press that moves over time. Every press lies inside the sheet, at least
-/// `margin_mm` from its border.
+/// four-finger presses, a press that moves over time, and two fingers that cross. Every press lies inside the sheet, at
+/// least `margin_mm` from its border.
 #include <cstdint>
 #include <string>
 
@@ -36,20 +36,32 @@ PressSequence fingers_script(const Sensor& sensor, int frames, int fingers, doub
 /// One press moving in a straight line from `from` to `to` over `frames` frames.
 PressSequence moving_script(const Sensor& sensor, int frames, const Vector2& from_mm, const Vector2& to_mm,
                             const PressStyle& style);
+/// Two fingers passing each other, their forces crossing (contact tracking's test,
+/// frame/contact_tracker.hpp): each moves along a straight line at its own constant speed, the two
+/// lines parallel and `separation` apart, past each other half-way through (frame (frames − 1)/2);
+/// the first finger's force rises linearly from F_low to F_high while the second's falls from F_high
+/// to F_low, so that they are equal there too. Drawn from style.seed: the crossing's place and the
+/// lines' angle, each path's length (10-40 mm over the frames), F_low < F_high within
+/// [min_force_N, max_force_N], and the separation within [min_separation_mm, max_separation_mm].
+/// Each frame holds {first finger, second finger}, in that order (the truth of their identities).
+/// 	hrow InvalidInput for fewer than 2 frames, separations not 0 < min ≤ max, or a sheet without room.
+PressSequence crossing_script(const Sensor& sensor, int frames, double min_separation_mm, double max_separation_mm,
+                              const PressStyle& style);
 
 /// A script by name, as `emit simulate --script` takes it, with every script's parameters.
 struct PressScript {
-  enum class Kind { none, grid, random, two_finger, three_finger, four_finger, moving };
+  enum class Kind { none, grid, random, two_finger, three_finger, four_finger, moving, crossing };
   Kind kind = Kind::none;
-  int frames = 20;                                        ///< none (no-contact references), random, two_finger, moving
-  double spacing_mm = 10, jitter_mm = 0;                  ///< grid
-  double min_separation_mm = 12, max_separation_mm = 40;  ///< two_finger; three/four: min only
-  Vector2 from_mm{0, 0}, to_mm{0, 0};                     ///< moving
+  int frames = 20;                        ///< none (no-contact references), random, two_finger, moving, crossing
+  double spacing_mm = 10, jitter_mm = 0;  ///< grid
+  /// two_finger, crossing (at the closest approach); three/four: min only
+  double min_separation_mm = 12, max_separation_mm = 40;
+  Vector2 from_mm{0, 0}, to_mm{0, 0};  ///< moving
   PressStyle style;
 };
 
-/// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving". \throw InvalidInput naming the
-/// text.
+/// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving", "crossing". \throw
+/// InvalidInput naming the text.
 PressScript::Kind parse_script_kind(const std::string& name);
 
 /// How many frames run_script gives, at most, found without running it: `frames`, or a grid's
