@@ -33,7 +33,8 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
     throw InvalidInput("condensed contact solver: the cell size must be positive");
   std::vector<char> on_skeleton(static_cast<std::size_t>(n), 0);
   for (const int d : kept_) {
-    if (d < 0 || d >= n) throw InvalidInput("condensed contact solver: kept dof " + std::to_string(d) + " out of range");
+    if (d < 0 || d >= n)
+      throw InvalidInput("condensed contact solver: kept dof " + std::to_string(d) + " out of range");
     on_skeleton[static_cast<std::size_t>(d)] = 1;
   }
   for (const int k : unit_rhs_)
@@ -50,8 +51,9 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
     const Eigen::Array3d cell = ((position_mm[static_cast<std::size_t>(d)] - lowest) / cell_size_mm).array().floor();
     if (!(cell.maxCoeff() < static_cast<double>(span)))
       throw InvalidInput("condensed contact solver: the cell size is too small for the sheet");
-    key[static_cast<std::size_t>(d)] = static_cast<std::int64_t>(cell.x()) +
-                                       span * (static_cast<std::int64_t>(cell.y()) + span * static_cast<std::int64_t>(cell.z()));
+    key[static_cast<std::size_t>(d)] =
+        static_cast<std::int64_t>(cell.x()) +
+        span * (static_cast<std::int64_t>(cell.y()) + span * static_cast<std::int64_t>(cell.z()));
   }
   // The skeleton: of every coupled pair in two cells, the one in the later cell, so no two cells'
   // interiors are coupled.
@@ -76,7 +78,8 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
       skeleton_.push_back(d);
       continue;
     }
-    const auto j = static_cast<int>(std::lower_bound(keys.begin(), keys.end(), key[static_cast<std::size_t>(d)]) - keys.begin());
+    const auto j =
+        static_cast<int>(std::lower_bound(keys.begin(), keys.end(), key[static_cast<std::size_t>(d)]) - keys.begin());
     Cell& cell = cells_[static_cast<std::size_t>(j)];
     cell_of_[static_cast<std::size_t>(d)] = j;
     local_of_[static_cast<std::size_t>(d)] = static_cast<int>(cell.interior.size());
@@ -109,7 +112,8 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
   boundary_pos_.assign(static_cast<std::size_t>(n), -1);
   for (Cell& cell : cells_) {
     const auto p = static_cast<Index>(cell.interior.size()), nb = static_cast<Index>(cell.boundary.size());
-    for (Index a = 0; a < nb; ++a) boundary_pos_[static_cast<std::size_t>(cell.boundary[static_cast<std::size_t>(a)])] = static_cast<int>(a);
+    for (Index a = 0; a < nb; ++a)
+      boundary_pos_[static_cast<std::size_t>(cell.boundary[static_cast<std::size_t>(a)])] = static_cast<int>(a);
     assemble_cell(cell, nullptr, nullptr);
     Eigen::Ref<Matrix> II = work_II_.topLeftCorner(p, p);
     const Eigen::LLT<Eigen::Ref<Matrix>> llt(II);  // in place
@@ -127,7 +131,8 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
   rhs_listed_.assign(static_cast<std::size_t>(n), 0);
 }
 
-void CondensedContactSolver::assemble_cell(const Cell& cell, const std::vector<Entry>* C, const std::vector<int>* entries) {
+void CondensedContactSolver::assemble_cell(const Cell& cell, const std::vector<Entry>* C,
+                                           const std::vector<int>* entries) {
   const auto p = static_cast<Index>(cell.interior.size()), nb = static_cast<Index>(cell.boundary.size());
   reserve(work_II_, p, p);
   reserve(work_IB_, p, nb);
@@ -153,7 +158,8 @@ void CondensedContactSolver::assemble_cell(const Cell& cell, const std::vector<E
   }
 }
 
-void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vector<std::pair<int, double>>& b, Matrix& X) {
+void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vector<std::pair<int, double>>& b,
+                                   Matrix& X) {
   const auto n = static_cast<int>(A0_.rows());
   const auto cols = static_cast<Index>(1 + unit_rhs_.size());
   // The scratch is left as found, whether this returns or throws.
@@ -175,7 +181,7 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
     const int r = C[e].row(), c = C[e].col();
     if (r < 0 || r >= n || c < 0 || c >= n) throw InvalidInput("condensed contact solver: contact dof out of range");
     const int cell = cell_of_[static_cast<std::size_t>(r)] >= 0 ? cell_of_[static_cast<std::size_t>(r)]
-                                                                 : cell_of_[static_cast<std::size_t>(c)];
+                                                                : cell_of_[static_cast<std::size_t>(c)];
     if (cell < 0) {
       const int* first = A0_.innerIndexPtr() + A0_.outerIndexPtr()[c];
       const int* last = A0_.innerIndexPtr() + A0_.outerIndexPtr()[c + 1];
@@ -189,7 +195,8 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
     list.push_back(static_cast<int>(e));
   }
   for (const int d : rhs_dofs_)
-    if (const int cell = cell_of_[static_cast<std::size_t>(d)]; cell >= 0 && entries_of_cell_[static_cast<std::size_t>(cell)].empty())
+    if (const int cell = cell_of_[static_cast<std::size_t>(d)];
+        cell >= 0 && entries_of_cell_[static_cast<std::size_t>(cell)].empty())
       throw InvalidInput("condensed contact solver: a right-hand side off the contact and the kept dofs");
 
   // Q: the skeleton dofs round the reached cells and the contact's skeleton dofs (T, first), then
@@ -203,7 +210,8 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
   };
   for (const int cell : touched_cells_)
     for (const int d : cells_[static_cast<std::size_t>(cell)].boundary) add_q(d);
-  for (const int e : skeleton_entries_) add_q(C[static_cast<std::size_t>(e)].row()), add_q(C[static_cast<std::size_t>(e)].col());
+  for (const int e : skeleton_entries_)
+    add_q(C[static_cast<std::size_t>(e)].row()), add_q(C[static_cast<std::size_t>(e)].col());
   for (const int d : rhs_dofs_)
     if (cell_of_[static_cast<std::size_t>(d)] < 0) add_q(d);
   const auto t = static_cast<Index>(q_dofs_.size());
@@ -221,7 +229,8 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
   for (const int j : touched_cells_) {
     const Cell& cell = cells_[static_cast<std::size_t>(j)];
     const auto p = static_cast<Index>(cell.interior.size()), nb = static_cast<Index>(cell.boundary.size());
-    for (Index a = 0; a < nb; ++a) boundary_pos_[static_cast<std::size_t>(cell.boundary[static_cast<std::size_t>(a)])] = static_cast<int>(a);
+    for (Index a = 0; a < nb; ++a)
+      boundary_pos_[static_cast<std::size_t>(cell.boundary[static_cast<std::size_t>(a)])] = static_cast<int>(a);
     assemble_cell(cell, &C, &entries_of_cell_[static_cast<std::size_t>(j)]);
     Eigen::Ref<Matrix> II = work_II_.topLeftCorner(p, p);
     const Eigen::LLT<Eigen::Ref<Matrix>> llt(II);  // in place
@@ -229,14 +238,16 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
     reserve(work_Z_, p, nb + 1);
     auto Z = work_Z_.topLeftCorner(p, nb + 1);
     Z.leftCols(nb) = work_IB_.topLeftCorner(p, nb);
-    for (Index li = 0; li < p; ++li) Z(li, nb) = rhs_[static_cast<std::size_t>(cell.interior[static_cast<std::size_t>(li)])];
+    for (Index li = 0; li < p; ++li)
+      Z(li, nb) = rhs_[static_cast<std::size_t>(cell.interior[static_cast<std::size_t>(li)])];
     llt.solveInPlace(Z);
     reserve(work_H_, nb, nb + 1);
     auto H = work_H_.topLeftCorner(nb, nb + 1);
     H.noalias() = work_IB_.topLeftCorner(p, nb).transpose() * Z;
     for (Index a = 0; a < nb; ++a) {
       const int qa = qpos(cell.boundary[static_cast<std::size_t>(a)]);
-      for (Index c = 0; c < nb; ++c) delta(qa, qpos(cell.boundary[static_cast<std::size_t>(c)])) += cell.H0(a, c) - H(a, c);
+      for (Index c = 0; c < nb; ++c)
+        delta(qa, qpos(cell.boundary[static_cast<std::size_t>(c)])) += cell.H0(a, c) - H(a, c);
       Rq(qa, 0) -= H(a, nb);
     }
     for (const int d : cell.boundary) boundary_pos_[static_cast<std::size_t>(d)] = -1;
@@ -247,14 +258,16 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
   }
   for (const int d : rhs_dofs_)
     if (cell_of_[static_cast<std::size_t>(d)] < 0) Rq(qpos(d), 0) += rhs_[static_cast<std::size_t>(d)];
-  for (Index k = 1; k < cols; ++k) Rq(qpos(kept_[static_cast<std::size_t>(unit_rhs_[static_cast<std::size_t>(k - 1)])]), k) = 1;
+  for (Index k = 1; k < cols; ++k)
+    Rq(qpos(kept_[static_cast<std::size_t>(unit_rhs_[static_cast<std::size_t>(k - 1)])]), k) = 1;
 
   // Woodbury on Σ0⁻¹ = A0⁻¹ restricted to Q.
   reserve(Mq_, q, q);
   auto Mq = Mq_.topLeftCorner(q, q);
   for (Index k = 0; k < q; ++k) {
     const auto sk = local_of_[static_cast<std::size_t>(q_dofs_[static_cast<std::size_t>(k)])];
-    for (Index i = 0; i < q; ++i) Mq(i, k) = M_(local_of_[static_cast<std::size_t>(q_dofs_[static_cast<std::size_t>(i)])], sk);
+    for (Index i = 0; i < q; ++i)
+      Mq(i, k) = M_(local_of_[static_cast<std::size_t>(q_dofs_[static_cast<std::size_t>(i)])], sk);
   }
   reserve(z_, q, cols);
   auto z = z_.topLeftCorner(q, cols);

@@ -160,10 +160,14 @@ struct ForwardModel::Impl {
       kept_of_reduced[static_cast<std::size_t>(kept[k])] = static_cast<int>(k);
       f0_stiffness[static_cast<Index>(k)] = stiffness_dof.coeff(kept[k] + 1, 0);
     }
-    condensed.emplace(Condensed{
-        CondensedContactSolver(A0, position, std::move(kept), std::move(units),
-                               cell_size_mm > 0 ? cell_size_mm : default_cells_edges * edge_mm),
-        std::move(kept_of_reduced), std::move(f0_stiffness), {}, {}, {}, {}});
+    condensed.emplace(Condensed{CondensedContactSolver(A0, position, std::move(kept), std::move(units),
+                                                       cell_size_mm > 0 ? cell_size_mm : default_cells_edges * edge_mm),
+                                std::move(kept_of_reduced),
+                                std::move(f0_stiffness),
+                                {},
+                                {},
+                                {},
+                                {}});
   }
 
   Frame condensed_frame(const ContactLoad& contact, double E) {

@@ -21,7 +21,7 @@ constexpr double loop_pressed_s = 6, loop_lifted_s = 1;  // the figure-eight, th
 constexpr double random_pressed_s = 0.6, random_lifted_s = 0.2;
 constexpr double force_swing_period_s = 3;
 constexpr double script_clock_frames_per_s = 50;  // the scripts' clock when frames come unpaced
-constexpr double pace_budget = 0.8;  // of the frame interval the twin may take: the rest is headroom
+constexpr double pace_budget = 0.8;               // of the frame interval the twin may take: the rest is headroom
 
 double parse_number(const std::string& text, const std::string& spec) {
   try {
@@ -110,8 +110,8 @@ void SimSource::measure_pace() {
   twin_.exact_frame(pressed.front());
   const auto start = std::chrono::steady_clock::now();
   for (const auto& presses : pressed) twin_.exact_frame(presses);
-  measured_frame_s_ =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / static_cast<double>(pressed.size());
+  measured_frame_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                      static_cast<double>(pressed.size());
   if (options_.frames_per_s > 0 && measured_frame_s_ > pace_budget / options_.frames_per_s)
     frames_per_s_ = std::max(1.0, std::floor(pace_budget / measured_frame_s_));
 }
@@ -248,7 +248,8 @@ std::string SimSource::description() const {
                   "%g frames/s asked, but a twin frame takes %.1f ms on this machine: running at %g frames/s",
                   options_.frames_per_s, 1e3 * measured_frame_s_, frames_per_s_);
   else if (frames_per_s_ > 0)
-    std::snprintf(rate, sizeof rate, "%g frames/s (a twin frame takes %.1f ms)", frames_per_s_, 1e3 * measured_frame_s_);
+    std::snprintf(rate, sizeof rate, "%g frames/s (a twin frame takes %.1f ms)", frames_per_s_,
+                  1e3 * measured_frame_s_);
   else std::snprintf(rate, sizeof rate, "as fast as the twin goes");
   std::string what;
   switch (script_.kind) {

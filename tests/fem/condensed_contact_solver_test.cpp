@@ -84,7 +84,8 @@ TEST(CondensedContactSolver, MatchesADenseSolve) {
       for (std::size_t i = 0; i < kept.size(); ++i)
         for (Index k = 0; k < B.cols(); ++k)
           EXPECT_NEAR(X(static_cast<Index>(i), k), exact(kept[i], k), test::solve_roundoff * scale)
-              << "cell " << cell_mm << " mm, triangles " << first << "–" << last << ", kept " << kept[i] << ", rhs " << k;
+              << "cell " << cell_mm << " mm, triangles " << first << "–" << last << ", kept " << kept[i] << ", rhs "
+              << k;
     }
   }
 }
@@ -124,8 +125,8 @@ TEST(CondensedContactSolver, ForwardModelFramesEqualTheDirectOnes) {
   const Sensor sensor = default_sensor();
   const Mesh mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
   std::vector<ContactLoad> contacts;
-  for (const std::vector<Press>& presses : std::vector<std::vector<Press>>{
-           {{30, 30, 5, 10}}, {{12, 41, 4, 3}, {47, 20, 6, 20}}, {{31.3, 28.9, 0.7, 1}}})
+  for (const std::vector<Press>& presses :
+       std::vector<std::vector<Press>>{{{30, 30, 5, 10}}, {{12, 41, 4, 3}, {47, 20, 6, 20}}, {{31.3, 28.9, 0.7, 1}}})
     contacts.push_back(press_contact_load(mesh, presses, sensor.contact));
   for (int e : {0, 5}) {  // every triangle with a node on electrode e, and its neighbours
     const std::vector<int>& nodes = mesh.electrode_nodes[static_cast<std::size_t>(e)];

@@ -68,15 +68,15 @@ class CondensedContactSolver {
 
   SparseMatrix A0_;
   std::vector<int> kept_, unit_rhs_;
-  std::vector<int> cell_of_;        ///< per dof: its cell, −1 on the skeleton
-  std::vector<int> local_of_;       ///< per dof: its index in its cell's interior, or on the skeleton
-  std::vector<int> skeleton_;       ///< skeleton dofs, ascending; M's order
+  std::vector<int> cell_of_;   ///< per dof: its cell, −1 on the skeleton
+  std::vector<int> local_of_;  ///< per dof: its index in its cell's interior, or on the skeleton
+  std::vector<int> skeleton_;  ///< skeleton dofs, ascending; M's order
   std::vector<Cell> cells_;
-  Matrix M_;                        ///< A0⁻¹ on the skeleton, m × m
+  Matrix M_;  ///< A0⁻¹ on the skeleton, m × m
 
   // Scratch, per solve.
-  std::vector<int> boundary_pos_;   ///< per dof: its index in the current cell's boundary, −1 otherwise
-  std::vector<int> q_pos_;          ///< per skeleton index: its position in Q, −1 otherwise
+  std::vector<int> boundary_pos_;  ///< per dof: its index in the current cell's boundary, −1 otherwise
+  std::vector<int> q_pos_;         ///< per skeleton index: its position in Q, −1 otherwise
   std::vector<int> touched_cells_, q_dofs_;
   std::vector<std::vector<int>> entries_of_cell_;  ///< per cell: indices into C
   std::vector<int> skeleton_entries_;              ///< C's entries with both dofs on the skeleton

@@ -82,7 +82,7 @@ class SimSource : public FrameSource {
   Vector2 center_mm_, half_extent_mm_;  ///< of the sheet's bounding box, for the loop's path
   double frames_per_s_ = 0;             ///< the pace it runs at
   double measured_frame_s_ = 0;
-  double making_s_ = 0;                 ///< the twin's time on the frames made so far (under mutex_)
+  double making_s_ = 0;  ///< the twin's time on the frames made so far (under mutex_)
   std::uint64_t made_ = 0;
   mutable std::mutex mutex_;
   std::condition_variable ready_;
