@@ -102,7 +102,8 @@ CondensedContactSolver::CondensedContactSolver(const SparseMatrix& A0, const std
   for (int first = 0; first < m; first += solve_block) {
     const int count = std::min(solve_block, m - first);
     units.setZero(n, count);
-    for (int k = 0; k < count; ++k) units(skeleton_[static_cast<std::size_t>(first + k)], k) = 1;
+    for (int k = 0; k < count; ++k)
+      units(skeleton_[static_cast<std::size_t>(first) + static_cast<std::size_t>(k)], k) = 1;
     const Matrix solved = cholesky.solve(units);
     for (int k = 0; k < count; ++k)
       for (int s = 0; s < m; ++s) M_(s, first + k) = solved(skeleton_[static_cast<std::size_t>(s)], k);
@@ -165,8 +166,13 @@ void CondensedContactSolver::solve(const std::vector<Entry>& C, const std::vecto
   // The scratch is left as found, whether this returns or throws.
   struct Reset {
     CondensedContactSolver& solver;
+    explicit Reset(CondensedContactSolver& s) : solver(s) {}
+    Reset(const Reset&) = delete;
+    Reset& operator=(const Reset&) = delete;
+    Reset(Reset&&) = delete;
+    Reset& operator=(Reset&&) = delete;
     ~Reset() { solver.reset_scratch(); }
-  } reset{*this};
+  } reset(*this);
   // The first right-hand side, summed per dof.
   for (const auto& [d, value] : b) {
     if (d < 0 || d >= n) throw InvalidInput("condensed contact solver: right-hand side dof out of range");
