@@ -258,6 +258,9 @@ void ForwardModel::condense_contacts(double cell_size_mm) {
 }
 
 bool ForwardModel::condensed() const { return impl_->condensed.has_value(); }
+int ForwardModel::condensed_skeleton_size() const {
+  return impl_->condensed ? impl_->condensed->solver.skeleton_size() : 0;
+}
 
 Matrix ForwardModel::solve_potentials(const ContactLoad& contact, double drive_voltage_V) {
   const Matrix U = impl_->solve_dofs(contact, drive_voltage_V);

@@ -54,6 +54,8 @@ class ForwardModel {
   /// driving layer (its coupling's pattern follows the contact) or a negative cell size.
   void condense_contacts(double cell_size_mm = 0);
   bool condensed() const;
+  /// The skeleton's dofs (m above; 0 before condense_contacts).
+  int condensed_skeleton_size() const;
 
   /// Electrode potentials for every grounding. An empty contact gives the zero frame. A solve
   /// factorises into the model's own workspace (the stiffness and its analysis stay as they
