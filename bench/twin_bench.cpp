@@ -86,7 +86,7 @@ void BM_TwinCondense(benchmark::State& state, const std::string& name) {
     ForwardModel model(generate_mesh(sensor, *options.mesh), sensor.sheet_resistance_ohm_per_sq);
     state.ResumeTiming();
     model.condense_contacts();
-    state.counters["dofs"] = static_cast<double>(model.mesh().node_count());
+    state.counters["nodes"] = static_cast<double>(model.mesh().node_count());
     state.counters["skeleton"] = model.condensed_skeleton_size();
     state.counters["M_MB"] = 8e-6 * model.condensed_skeleton_size() * model.condensed_skeleton_size();
   }

@@ -21,8 +21,8 @@
 /// eliminated in another order).
 ///
 /// Setup: one factorisation of A0 and m solves, m the skeleton's dofs (~15 % of n at 150 dofs a
-/// cell); M takes m² doubles: measured 2,031 of 13.6k dofs, 33 MB, 1.1 s on the default twin; 3,058
-/// of 20.1k, 75 MB, 1.9 s on the sleeve's (bench/twin_bench.cpp, BM_TwinCondense).
+/// cell); M takes m² doubles: measured 2,031 for 13.6k nodes, 33 MB, 1.1 s on the default twin; 3,058
+/// for 20.1k, 75 MB, 1.9 s on the sleeve's (bench/twin_bench.cpp, BM_TwinCondense).
 #include <vector>
 
 #include <Eigen/Dense>
