@@ -4,6 +4,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 #include "commands.hpp"
 
@@ -41,6 +42,14 @@ struct LiveArgs {
   bool no_cache = false;
 };
 
+/// ", made in X ms on its own thread" for a source that makes its frames (the twin), else nothing.
+std::string making(const LiveStats& stats) {
+  if (stats.source_make_s <= 0) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, " (made in %.2f ms on its own thread)", 1e3 * stats.source_make_s);
+  return text;
+}
+
 void print_summary(FILE* say, const LiveStats& stats) {
   std::fprintf(say,
                "live: %llu frames in %.1f s: %.1f frames/s; latency mean %.2f ms, p95 %.2f ms, max %.2f ms "
@@ -49,6 +58,11 @@ void print_summary(FILE* say, const LiveStats& stats) {
                static_cast<unsigned long long>(stats.frames), stats.seconds, stats.frames_per_s,
                1e3 * stats.latency.mean_s(), 1e3 * stats.latency.quantile_s(0.95), 1e3 * stats.latency.max_s(),
                static_cast<unsigned long long>(stats.frames_missed));
+  std::fprintf(say,
+               "time per frame: source %.2f ms waited for%s, reconstruction %.2f ms, output %.2f ms (recording, "
+               "writing and publishing); the bottleneck: %s\n",
+               1e3 * stats.source_wait_s, making(stats).c_str(), 1e3 * stats.reconstruction_s, 1e3 * stats.output_s,
+               stats.bottleneck());
   std::fflush(say);
 }
 

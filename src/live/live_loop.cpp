@@ -1,5 +1,7 @@
 #include "emit/live/live_loop.hpp"
 
+#include <algorithm>
+
 #include "emit/core/option_check.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/tracks_csv.hpp"
@@ -48,6 +50,7 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
   const auto measure = [this] {
     stats_.seconds = stats_.frames > 1 ? seconds_between(first_, last_) : 0;
     stats_.frames_per_s = stats_.seconds > 0 ? static_cast<double>(stats_.frames - 1) / stats_.seconds : 0;
+    fill_stage_times();
   };
   try {
     // finished() is a source's normal end only: a failed one throws from step() (frame_source.hpp).
@@ -65,7 +68,23 @@ LiveStats LiveLoop::run(const std::atomic<bool>& stop) {
 
 const std::vector<Contact>* LiveLoop::step() {
   if (recapture_requested_.exchange(false)) reference_.recapture();
-  return source_.next(frame_, options_.poll) ? handle(frame_) : nullptr;
+  const auto waiting = std::chrono::steady_clock::now();
+  const bool got = source_.next(frame_, options_.poll);
+  if (!reference_.capturing()) waited_s_ += seconds_between(waiting, std::chrono::steady_clock::now());
+  return got ? handle(frame_) : nullptr;
+}
+
+void LiveLoop::fill_stage_times() {
+  const double frames = static_cast<double>(std::max<std::uint64_t>(stats_.frames, 1));
+  stats_.source_wait_s = waited_s_ / frames;
+  stats_.source_make_s = source_.frame_cost_s();
+  stats_.reconstruction_s = reconstructing_s_ / frames;
+  stats_.output_s = outputting_s_ / frames;
+}
+
+const char* LiveStats::bottleneck() const {
+  if (std::max(source_wait_s, source_make_s) >= std::max(reconstruction_s, output_s)) return "source";
+  return reconstruction_s >= output_s ? "reconstruction" : "output";
 }
 
 const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
@@ -77,7 +96,11 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   out.volts = &frame.volts;
   out.board_time_s = frame.board_time_s;
   out.host_time_ns = last_host_time_ns_ = unix_time_ns_at(frame.received);
-  if (recorder_) recorder_->record(frame.raw);
+  if (recorder_) {
+    const auto recording = std::chrono::steady_clock::now();
+    recorder_->record(frame.raw);
+    outputting_s_ += seconds_between(recording, std::chrono::steady_clock::now());
+  }
   if (reference_.capturing()) {
     tracker_.reset();  // the touches end: a new reference, new contacts
     if (reference_.capture(frame.volts)) reconstructor_.set_reference(reference_.reference());
@@ -88,9 +111,12 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
     publish(out);
     return nullptr;
   }
+  const auto reconstructing = std::chrono::steady_clock::now();
   const std::vector<Contact>& contacts = tracker_.update(reconstructor_.process(frame.volts), frame.board_time_s);
   out.ended = &tracker_.ended();
   if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
+  const auto outputting = std::chrono::steady_clock::now();
+  reconstructing_s_ += seconds_between(reconstructing, outputting);
   if (contacts_out_) write_contacts(out, contacts);
   if (tracks_out_) {
     write_tracks_rows(tracks_out_->stream(), frame.board_time_s, frame.sequence, contacts, out.ended);
@@ -102,6 +128,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   if (observer_) observer_(frame, contacts);
 
   const auto now = std::chrono::steady_clock::now();
+  outputting_s_ += seconds_between(outputting, now);
   last_latency_s_ = seconds_between(frame.received, now);
   stats_.latency.add(last_latency_s_);
   if (stats_.frames == 0) first_ = now;

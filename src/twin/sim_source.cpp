@@ -1,5 +1,7 @@
 #include "emit/twin/sim_source.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -8,6 +10,12 @@
 
 namespace emit {
 
+namespace {
+
+constexpr double pace_budget = 0.8;  // of the frame interval the twin may take: the rest is headroom
+
+}  // namespace
+
 SimSource::SimSource(const Sensor& sensor, SimScript script, const SourceOptions& options)
     : sensor_(sensor),
       options_(options),
@@ -15,9 +23,32 @@ SimSource::SimSource(const Sensor& sensor, SimScript script, const SourceOptions
             [&] {
               TwinOptions twin;
               twin.noise_seed = options.seed;
+              twin.condensed_frames = true;  // the direct solve's frames, several times faster
               return twin;
             }()),
-      script_(sensor_, twin_.mesh(), std::move(script), options) {}
+      script_(sensor_, twin_.mesh(), std::move(script), options),
+      frames_per_s_(options.frames_per_s) {
+  measure_pace();
+}
+
+void SimSource::measure_pace() {
+  // A few pressed frames of the script, spread over it (exact frames: the ADC's noise stream is
+  // left as it was); the first is a warm-up.
+  std::vector<std::vector<Press>> pressed;
+  for (std::uint64_t k = 0; k < 400 && pressed.size() < 4; k += 37)
+    if (auto presses = presses_of(static_cast<std::uint64_t>(options_.untouched_frames) + k); !presses.empty())
+      pressed.push_back(std::move(presses));
+  if (pressed.empty()) return;
+  twin_.exact_frame(pressed.front());
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& presses : pressed) twin_.exact_frame(presses);
+  measured_frame_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                      static_cast<double>(pressed.size());
+  if (options_.frames_per_s > 0 && measured_frame_s_ > pace_budget / options_.frames_per_s) {
+    frames_per_s_ = std::max(1.0, std::floor(pace_budget / measured_frame_s_));
+    script_.set_frames_per_s(frames_per_s_);  // the finger as fast in seconds
+  }
+}
 
 std::vector<Press> SimSource::presses_of(std::uint64_t sequence) const { return script_.presses_of(sequence); }
 
@@ -35,23 +66,26 @@ void SimSource::produce() {
   try {
     for (std::uint64_t sequence = 0;; ++sequence) {
       SourceFrame frame;
+      const auto making = std::chrono::steady_clock::now();
       frame.volts = twin_.frame(presses_of(sequence), &frame.raw.counts);
+      const double made_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - making).count();
       frame.sequence = sequence;
-      const double due_s = options_.frames_per_s > 0 ? static_cast<double>(sequence) / options_.frames_per_s : 0;
+      const double due_s = frames_per_s_ > 0 ? static_cast<double>(sequence) / frames_per_s_ : 0;
       const auto due =
           start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(due_s));
       std::unique_lock lock(mutex_);
+      making_s_ += made_s;
+      ++made_;
       if (ready_.wait_until(lock, due, [this] { return stop_; })) return;
       frame.received = std::chrono::steady_clock::now();
-      frame.board_time_s =
-          options_.frames_per_s > 0 ? due_s : std::chrono::duration<double>(frame.received - start).count();
+      frame.board_time_s = frames_per_s_ > 0 ? due_s : std::chrono::duration<double>(frame.received - start).count();
       frame.raw.sequence = static_cast<std::uint32_t>(sequence);  // the packet's fields wrap, as the board's do
       frame.raw.timestamp_us =
           static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(frame.board_time_s * 1e6)));
       frame.raw.electrode_count = static_cast<int>(frame.volts.rows());
       frame.raw.adc_bits = sensor_.adc.bits;
       frame.raw.oversampling = 1;
-      if (options_.frames_per_s == 0) {  // unpaced: the twin waits for the reader, so every frame is read
+      if (frames_per_s_ == 0) {  // unpaced: the twin waits for the reader, so every frame is read
         ready_.wait(lock, [this] { return stop_ || queue_.size() < queue_limit; });
         if (stop_) return;
       } else if (queue_.size() >= queue_limit) {  // paced like a board: its frames come whether read or not
@@ -88,14 +122,25 @@ bool SimSource::next(SourceFrame& frame, std::chrono::milliseconds timeout) {
 
 bool SimSource::finished() const { return false; }  // the twin streams until it fails (next() throws) or is stopped
 
+double SimSource::frame_cost_s() const {
+  std::lock_guard lock(mutex_);
+  return made_ > 0 ? making_s_ / static_cast<double>(made_) : 0;
+}
+
 std::uint64_t SimSource::dropped() const {
   std::lock_guard lock(mutex_);
   return dropped_;
 }
 
 std::string SimSource::description() const {
-  char rate[64];
-  if (options_.frames_per_s > 0) std::snprintf(rate, sizeof rate, "%g frames/s", options_.frames_per_s);
+  char rate[160];
+  if (frames_per_s_ > 0 && frames_per_s_ < options_.frames_per_s)
+    std::snprintf(rate, sizeof rate,
+                  "%g frames/s asked, but a twin frame takes %.1f ms on this machine: running at %g frames/s",
+                  options_.frames_per_s, 1e3 * measured_frame_s_, frames_per_s_);
+  else if (frames_per_s_ > 0)
+    std::snprintf(rate, sizeof rate, "%g frames/s (a twin frame takes %.1f ms)", frames_per_s_,
+                  1e3 * measured_frame_s_);
   else std::snprintf(rate, sizeof rate, "as fast as the twin goes");
   return "sim: " + script_.description() + " on " + sensor_.name + ", " + rate + ", ADC noise on";
 }

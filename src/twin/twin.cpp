@@ -45,6 +45,7 @@ ForwardModel twin_model(const Sensor& sensor, const TwinOptions& options) {
   // The twin's own departure, else what the sensor description says (sensor.hpp).
   model.set_series_resistance(options.series_resistance_ohm.empty() ? sensor.series_resistance_ohm
                                                                     : options.series_resistance_ohm);
+  if (options.condensed_frames) model.condense_contacts();
   return model;
 }
 
@@ -108,5 +109,7 @@ void TwinOptions::validate() const {
     option_check::non_negative("TwinOptions", "series_resistance_ohm", ohm);
   option_check::non_negative("TwinOptions", "cover_blur_mm", cover_blur_mm);
   option_check::non_negative("TwinOptions", "driving_sheet_resistance_ohm_per_sq", driving_sheet_resistance_ohm_per_sq);
+  if (condensed_frames && driving_sheet_resistance_ohm_per_sq != 0)
+    option_check::fail("TwinOptions", "condensed_frames", "off with a resistive driving layer", "on");
 }
 }  // namespace emit

@@ -803,6 +803,11 @@ TEST(Cli, LiveLoopsARecordingWithFrameNumbersGoingOn) {
   EXPECT_NE(r.out.find("(20 frames, as fast as possible, in a loop)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("live: 100 frames"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("; 0 missed"), std::string::npos) << r.out;
+  // Each stage's time per frame, and the one that sets the rate: a recording read as fast as it
+  // goes makes nothing on a thread of its own.
+  EXPECT_NE(r.out.find("time per frame: source "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("made in"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("; the bottleneck: "), std::string::npos) << r.out;
   std::istringstream lines(test::read_text(d + "/c.jsonl"));
   std::string line;
   long expected = 10, frame = -1;

@@ -56,7 +56,9 @@ TEST(SimSource, PacedSourceDropsWhatIsNotRead) {
   SourceOptions options;
   options.frames_per_s = 1000;
   SimSource source(coarse_sensor(), parse_sim_script("sim:fixed:10,20,5"), options);
-  EXPECT_EQ(source.description(), "sim: a press held at (10, 20) mm, 5 N on 30 mm, 1000 frames/s, ADC noise on");
+  // The pace it says depends on this machine (sim_pace_test.cpp): the rest of the line does not.
+  EXPECT_EQ(source.description().rfind("sim: a press held at (10, 20) mm, 5 N on 30 mm, 1000 frames/s", 0), 0u)
+      << source.description();
   SourceFrame frame;
   ASSERT_TRUE(source.next(frame, std::chrono::seconds(30)));
   EXPECT_EQ(frame.sequence, 0u);

@@ -55,6 +55,9 @@ class FrameSource {
   virtual bool finished() const = 0;
   /// One line for people, e.g. "sim: scripted finger on default 60 mm", "serial:/dev/ttyUSB0 at 921600".
   virtual std::string description() const = 0;
+  /// The mean time the source has spent making a frame on a thread of its own [s] (the simulator's
+  /// twin); 0 for a source that only reads what a board or a file gives.
+  virtual double frame_cost_s() const { return 0; }
 };
 
 }  // namespace emit

@@ -76,6 +76,15 @@ struct LiveStats {
   /// The run ended because the reader of the contacts went away (standard output or another
   /// descriptor's pipe closed, as `| head` does); a FIFO's reader may come back instead.
   bool contacts_reader_left = false;
+  /// Time per reconstructed frame by stage [s], means over the run: the loop waiting for the
+  /// source; the source making a frame on its own thread (FrameSource::frame_cost_s: the twin's
+  /// solve; 0 for a board or a recording); the reconstruction (with the reference's tracking); the
+  /// output (the recording, the contacts written, the publishers: viewer, MCAP, DDS).
+  double source_wait_s = 0, source_make_s = 0, reconstruction_s = 0, output_s = 0;
+  /// The stage that sets the rate: "source" when the loop waits for frames longer than it works
+  /// on one (or the source takes longer to make one than the loop), else the loop's slower stage,
+  /// "reconstruction" or "output".
+  const char* bottleneck() const;
 };
 
 class LiveLoop {
@@ -133,6 +142,7 @@ class LiveLoop {
   /// \return the contacts of a reconstructed frame; null for a capture frame.
   const std::vector<Contact>* handle(const SourceFrame& frame);
   void publish(LiveFrame& frame);
+  void fill_stage_times();  ///< LiveStats' time per frame by stage, from the totals
   void write_contacts(const LiveFrame& frame, const std::vector<Contact>& contacts);
 
   FrameSource& source_;
@@ -155,6 +165,7 @@ class LiveLoop {
   std::uint64_t last_host_time_ns_ = 0;
   std::chrono::steady_clock::time_point first_, last_, previous_publish_;
   double mean_interval_s_ = 0, last_latency_s_ = 0;
+  double waited_s_ = 0, reconstructing_s_ = 0, outputting_s_ = 0;  ///< totals, for LiveStats' stages
 };
 
 }  // namespace emit

@@ -52,6 +52,9 @@ class ScriptedPresses {
   /// The presses for frame `sequence` (empty: nothing touches), each centred on the surface.
   std::vector<Press> presses_of(std::uint64_t sequence) const;
   const SimScript& script() const { return script_; }
+  /// The scripts' clock: frame k at (k − untouched) / frames_per_s (the pace its source runs at;
+  /// 0: 50 frames/s), so the finger moves as fast in seconds at any pace.
+  void set_frames_per_s(double frames_per_s) { options_.frames_per_s = frames_per_s; }
   /// How much of its full reach the figure-eight has on this sheet (1: all of it).
   double loop_scale() const { return loop_scale_; }
   /// "a finger moving in a figure-eight", "a press held at (30, 30) mm, 10 N", …

@@ -40,6 +40,11 @@ struct TwinOptions {
   /// A driving layer with this sheet resistance, fed along a bus bar at the bottom of the sheet
   /// (driving_layer.hpp); 0: an equipotential driving layer, as the reconstruction assumes.
   double driving_sheet_resistance_ohm_per_sq = 0;
+  /// Frames by condensing each press onto a skeleton of the twin's mesh (fem/forward_model.hpp,
+  /// condense_contacts) instead of factorising it: the same frames to rounding (1e-9 of the largest
+  /// potential, tests/twin/twin_test.cpp), several times faster a frame, for a second or so of
+  /// setup and tens of MB. The live simulator's (sim_source.hpp). Not with a resistive driving layer.
+  bool condensed_frames = false;
   void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
 };
 
