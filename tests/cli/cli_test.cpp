@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -787,6 +788,42 @@ TEST(Cli, LiveRecordsAndReplaysAFile) {
       ++pressed;
     }
   EXPECT_GE(pressed, 10);  // the script holds the press from its 16th frame on (frames 15..29)
+}
+
+// A press held and lifted, as a user's traces: the CSV of tracks has one row per pressed frame, all of
+// one touch (one id), "down" first then "move"; the JSON Lines carry the same id and the frame's
+// frame's board time and host receive time.
+TEST(Cli, LiveWritesTracksAsCsv) {
+  const std::string d = test::temp_folder("cli_tracks");
+  auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --method paper --tracks " + d +
+                    "/t.csv --contacts " + d + "/c.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream rows(test::read_text(d + "/t.csv"));
+  std::string row;
+  ASSERT_TRUE(std::getline(rows, row));
+  EXPECT_EQ(row, "time_s,frame,id,phase,x_mm,y_mm,z_mm,force_N,area_mm2,pressure_N_per_mm2,vx_mm_per_s,vy_mm_per_s");
+  int count = 0;
+  std::set<std::string> ids;
+  while (std::getline(rows, row)) {
+    std::vector<std::string> cells;
+    for (std::istringstream cells_of(row); std::getline(cells_of, cells.emplace_back(), ',');) {
+    }
+    cells.pop_back();
+    ASSERT_EQ(cells.size(), 12u) << row;
+    ids.insert(cells[2]);
+    EXPECT_EQ(cells[3], count == 0 ? "down" : "move") << row;
+    EXPECT_LT(std::hypot(std::stod(cells[4]) - 20, std::stod(cells[5]) - 40), 8.05) << row;  // paper's p95
+    ++count;
+  }
+  EXPECT_EQ(count, 15);  // the twin presses from its 16th frame on (frames 15..29 of 10..29)
+  EXPECT_EQ(ids.size(), 1u);
+  std::istringstream lines(test::read_text(d + "/c.jsonl"));
+  for (std::string line; std::getline(lines, line);) {
+    const ContactsLine read = parse_contacts_record(line);
+    EXPECT_GE(read.times.board_s, 0);
+    EXPECT_GT(read.times.host_unix_s, 1.7e9);  // a Unix time of this century
+    for (const Contact& c : read.contacts) EXPECT_EQ(std::to_string(c.id), *ids.begin());
+  }
 }
 
 // A 20-frame recording replayed in a loop for 100 frames: five passes and more, the contacts'

@@ -68,8 +68,8 @@ def test_pressure_images_match_the_contacts(paper, frames):
 
 
 def test_python_gives_the_clis_contacts(cli, paper, reference, frames, tmp_path):
-    # The same frames through `emit reconstruct` (files) and through Python (arrays): the same
-    # contacts to the last digit the CLI writes.
+    # The same frames through `emit reconstruct` (files) and through Python (arrays) and its
+    # Tracker (the CLI's, at the CLI's 50 frames/s): the same touches to the last digit the CLI writes.
     np.savetxt(tmp_path / "ref.csv", reference.reshape(len(reference), -1), delimiter=",", fmt="%.17g")
     np.savetxt(tmp_path / "frames.csv", frames.reshape(len(frames), -1), delimiter=",", fmt="%.17g")
     subprocess.run(
@@ -78,8 +78,11 @@ def test_python_gives_the_clis_contacts(cli, paper, reference, frames, tmp_path)
         check=True, capture_output=True)
     lines = [json.loads(line) for line in open(tmp_path / "contacts.jsonl")]
     assert len(lines) == len(frames)
-    for line, frame in zip(lines, frames):
-        mine = paper.reconstruct(frame)
+    tracker = emit.Tracker()
+    for f, (line, frame) in enumerate(zip(lines, frames)):
+        mine = tracker.update(paper.reconstruct(frame), f / 50)
+        assert line["board_time_s"] == pytest.approx(f / 50, rel=1e-9)
+        assert [c["id"] for c in line.get("ended", [])] == [c.id for c in tracker.ended]
         assert len(line["contacts"]) == len(mine)
         for theirs, contact in zip(line["contacts"], mine):
             fields = contact.as_dict()
@@ -90,6 +93,7 @@ def test_python_gives_the_clis_contacts(cli, paper, reference, frames, tmp_path)
             assert contact.outline_mm == pytest.approx(np.array(outline), rel=1e-5, abs=1e-12)
             x, y = contact.outline_mm.T
             assert np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)) > 0
+            assert theirs.pop("phase") == contact.phase in ("down", "move")
             for key, value in theirs.items():
                 # The CLI writes 6 significant digits (io/contacts_jsonl).
                 assert fields[key] == pytest.approx(value, rel=1e-5, abs=1e-12), key
