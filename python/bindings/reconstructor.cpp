@@ -200,7 +200,8 @@ outline's polygon, outline_mm, a (K, 2) array (not in CONTACT_DTYPE). Read-only.
       .def_readonly("area_std_mm2", &Contact::area_std_mm2)
       .def_readonly("orientation_std_deg", &Contact::orientation_std_deg)
       .def_readonly("element_count", &Contact::element_count)
-      .def_readonly("id", &Contact::id, "The touch's id, the same while it lasts (a Tracker's, or LiveStream's); -1 untracked.")
+      .def_readonly("id", &Contact::id,
+                    "The touch's id, the same while it lasts (a Tracker's, or LiveStream's); -1 untracked.")
       .def_property_readonly(
           "phase", [](const Contact& c) { return std::string(touch_phase_name(c.phase)); },
           "'down' (the touch's first frame), 'move', 'up' (ended: its last state), or 'none' (untracked).")

@@ -180,10 +180,9 @@ Contact contact_of(const nlohmann::json& object, std::size_t k) {
   if (const auto phase = object.find("phase"); phase != object.end()) {
     const auto* name = phase->get_ptr<const std::string*>();
     constexpr TouchPhase phases[] = {TouchPhase::down, TouchPhase::move, TouchPhase::up};
-    const auto* known =
-        std::find_if(std::begin(phases), std::end(phases), [&](TouchPhase p) { return name && *name == touch_phase_name(p); });
-    if (known == std::end(phases))
-      throw InvalidInput(where + ": \"phase\" is not one of \"down\", \"move\", \"up\"");
+    const auto* known = std::find_if(std::begin(phases), std::end(phases),
+                                     [&](TouchPhase p) { return name && *name == touch_phase_name(p); });
+    if (known == std::end(phases)) throw InvalidInput(where + ": \"phase\" is not one of \"down\", \"move\", \"up\"");
     contact.phase = *known;
   }
   return contact;

@@ -15,8 +15,8 @@ void check_finite(double time_s, std::uint64_t frame, const std::vector<Contact>
   };
   if (!std::isfinite(time_s)) bad("the time");
   for (const Contact& c : contacts)
-    for (const double v : {c.x_mm, c.y_mm, c.z_mm, c.force_N, c.area_mm2, c.pressure_N_per_mm2, c.vx_mm_per_s,
-                           c.vy_mm_per_s})
+    for (const double v :
+         {c.x_mm, c.y_mm, c.z_mm, c.force_N, c.area_mm2, c.pressure_N_per_mm2, c.vx_mm_per_s, c.vy_mm_per_s})
       if (!std::isfinite(v)) bad("a contact's number");
 }
 

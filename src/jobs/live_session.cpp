@@ -37,7 +37,7 @@ struct LiveSession::Impl {
   std::optional<Recorder> recorder;
   std::optional<McapPublisher> mcap;
   std::optional<DdsPublisher> dds;
-  std::array<OutputFile, 4> outputs;       ///< --contacts, --tracks, --record, --mcap (the last two moved to their writers)
+  std::array<OutputFile, 4> outputs;  ///< --contacts, --tracks, --record, --mcap (the last two moved to their writers)
   std::vector<std::string> partial_paths;  ///< the PATH.partial each regular file grows as
   std::vector<std::string> kept;           ///< those a failed run left (LiveSession::kept_partial)
 

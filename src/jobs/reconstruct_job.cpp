@@ -13,10 +13,10 @@
 #include "emit/frame/batch.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
-#include "emit/io/tracks_csv.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/ros2_messages.hpp"
 #include "emit/io/tactile_mcap.hpp"
+#include "emit/io/tracks_csv.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/sensor/sensor_json.hpp"
@@ -81,7 +81,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                               {OutputRequest{{"--contacts", job.contacts_path}, {.standard_output = true}},
                                OutputRequest{{"--tracks", job.tracks_path}},
                                OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
-  auto& [contacts_file, tracks_file, mcap_file] = outputs;
+  OutputFile &contacts_file = outputs[0], &tracks_file = outputs[1], &mcap_file = outputs[2];
   job.tracking.validate();  // checked before anything is read
   option_check::positive("ReconstructJob", "frames_per_s", job.frames_per_s);
   FrameOptions declared;

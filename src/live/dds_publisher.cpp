@@ -74,8 +74,9 @@ struct ContactMessages {
                      {},
                      vector3(c.velocity_m_per_s)};
       for (std::uint32_t k = 0; k < c.outline_size; ++k) outlines[i][k] = {c.outline_m[k][0], c.outline_m[k][1], 0.0f};
-      messages[i].outline.points = borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(
-          c.outline_size > 0 ? outlines[i].data() : nullptr, c.outline_size);
+      messages[i].outline.points =
+          borrowed<dds_sequence_geometry_msgs_msg_dds__Point32_>(c.outline_size > 0 ? outlines[i].data() : nullptr,
+                                                                 c.outline_size);
     }
     return borrowed<dds_sequence_emit_msgs_msg_dds__TactileContact_>(contacts.empty() ? nullptr : messages.data(),
                                                                      contacts.size());

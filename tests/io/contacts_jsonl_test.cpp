@@ -102,7 +102,8 @@ TEST(ContactsJsonl, WritesAndReadsTrackedTouchesAndTheFramesTimes) {
             "\"phase\": \"move\", \"x_mm\": 21.5, \"y_mm\": 37.25, \"area_mm2\": 78.5, \"pressure_N_per_mm2\": 0.125, "
             "\"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125, \"vx_mm_per_s\": 40.5, \"vy_mm_per_s\": -3.25}], "
             "\"ended\": [{\"id\": 11, \"phase\": \"up\", \"x_mm\": 21.5, \"y_mm\": 37.25, \"area_mm2\": 78.5, "
-            "\"pressure_N_per_mm2\": 0.125, \"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125, \"vx_mm_per_s\": 0, "
+            "\"pressure_N_per_mm2\": 0.125, \"peak_pressure_N_per_mm2\": 0.25, \"force_N\": 9.8125, \"vx_mm_per_s\": "
+            "0, "
             "\"vy_mm_per_s\": 0}]}\n");
   const ContactsLine read = parse_contacts_record(out.str());
   EXPECT_EQ(read.frame, 8);
@@ -174,10 +175,12 @@ INSTANTIATE_TEST_SUITE_P(
         std::pair{
             R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "outline_mm": [[0, 0], [1, 0], [1]]}]})",
             "contacts line: contact 0: \"outline_mm\" vertex 2 is not [x, y], finite numbers"},
-        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": -2}]})",
-                  "contacts line: contact 0: \"id\" is not a non-negative integer"},
-        std::pair{R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": 2, "phase": "hover"}]})",
-                  "contacts line: contact 0: \"phase\" is not one of \"down\", \"move\", \"up\""},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": -2}]})",
+            "contacts line: contact 0: \"id\" is not a non-negative integer"},
+        std::pair{
+            R"({"frame": 1, "contacts": [{"x_mm": 1, "y_mm": 2, "area_mm2": 3, "pressure_N_per_mm2": 4, "peak_pressure_N_per_mm2": 5, "force_N": 6, "id": 2, "phase": "hover"}]})",
+            "contacts line: contact 0: \"phase\" is not one of \"down\", \"move\", \"up\""},
         std::pair{R"({"frame": 1, "board_time_s": "now", "contacts": []})",
                   "contacts line: \"board_time_s\" is not a finite number"},
         // The sensor JSON's fuzz finding, here too: nlohmann's out_of_range escaped.

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "emit/core/errors.hpp"
 #include "allocation_counter.hpp"
+#include "emit/core/errors.hpp"
 
 namespace emit {
 namespace {

@@ -129,7 +129,7 @@ bool agree(double a, double b) { return std::abs(a - b) <= 1e-5 * std::max(std::
 
 /// Every frame's contacts in the JSON Lines file, by frame number; its board time into `board_times`.
 std::map<std::uint64_t, std::vector<Fields>> read_json_lines(const std::string& path,
-                                                              std::map<std::uint64_t, double>& board_times) {
+                                                             std::map<std::uint64_t, double>& board_times) {
   std::map<std::uint64_t, std::vector<Fields>> frames;
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {

@@ -34,9 +34,8 @@ struct FrameTimes {
 
 /// Append one frame's line. Numbers are written with enough digits (e.g. %.6g), finite only.
 /// `fit_misfit_mV` < 0: not written. `ended`: null or empty, no "ended".
-void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts,
-                         double fit_misfit_mV = -1, const FrameTimes& times = {},
-                         const std::vector<Contact>* ended = nullptr);
+void write_contacts_line(std::ostream& out, long frame, const std::vector<Contact>& contacts, double fit_misfit_mV = -1,
+                         const FrameTimes& times = {}, const std::vector<Contact>* ended = nullptr);
 
 /// One line read back: everything write_contacts_line writes.
 struct ContactsLine {

@@ -28,8 +28,8 @@ struct LiveFrame {
   std::uint64_t sequence = 0;        ///< the source's number
   bool capturing_reference = false;  ///< no reference yet, or a re-capture under way: no contacts
   std::uint64_t reference_captures = 0;
-  const Frame* volts = nullptr;  ///< the frame as the source gave it
-  double board_time_s = 0;       ///< when the board took it, on the board's clock (SourceFrame)
+  const Frame* volts = nullptr;    ///< the frame as the source gave it
+  double board_time_s = 0;         ///< when the board took it, on the board's clock (SourceFrame)
   std::uint64_t host_time_ns = 0;  ///< when it reached the host, ns since the Unix epoch (system clock)
   const std::vector<Contact>* contacts = nullptr;
   /// The touches that ended with this frame, their last state (frame/contact_tracker.hpp); null: none.

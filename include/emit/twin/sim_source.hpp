@@ -63,7 +63,7 @@ class SimSource : public FrameSource {
   Sensor sensor_;
   SourceOptions options_;
   Twin twin_;
-  ScriptedPresses script_;  ///< on twin_'s mesh
+  ScriptedPresses script_;   ///< on twin_'s mesh
   double frames_per_s_ = 0;  ///< the pace it runs at
   double measured_frame_s_ = 0;
   double making_s_ = 0;  ///< the twin's time on the frames made so far (under mutex_)
