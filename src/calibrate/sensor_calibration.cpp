@@ -119,6 +119,7 @@ class PressesMisfit {
     unit_loads_.resize(centres_mm_.size());
     for (std::size_t i = 0; i < centres_mm_.size(); ++i) {
       const Vector2& c = centres_mm_[i];
+      unit_loads_[i].clear();  // integrate() appends
       integrator.integrate({c.x(), c.y(), options_.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
       for (Index t : unit_loads_[i].triangles)
         for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);

@@ -26,6 +26,9 @@ double Press::pressure_at_N_per_mm2(double distance_mm) const {
   return 1.5 * pressure_N_per_mm2() * std::sqrt(std::max(0.0, 1.0 - s * s));
 }
 
+bool place_known(const Press& press) { return std::isfinite(press.x_mm) && std::isfinite(press.y_mm); }
+bool force_known(const Press& press) { return std::isfinite(press.force_N); }
+
 const char* profile_name(PressProfile profile) { return profile == PressProfile::flat ? "flat" : "spherical"; }
 
 PressProfile parse_press_profile(const std::string& name) {

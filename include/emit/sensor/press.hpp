@@ -39,6 +39,13 @@ struct Press {
   double pressure_at_N_per_mm2(double distance_mm) const;
 };
 
+/// A calibration press whose place or force was not measured (a finger put down anywhere, a
+/// weight set down somewhere; issue: calibration without a robot) has NaN for x_mm and y_mm, or
+/// for force_N. Only calibration takes such presses (calibrate/sensor_calibration.hpp fits an
+/// unknown place; the contact law needs a known force); everything else validates them away.
+bool place_known(const Press& press);
+bool force_known(const Press& press);
+
 /// "flat", "spherical".
 const char* profile_name(PressProfile profile);
 /// \throw InvalidInput naming the text and the choices.
