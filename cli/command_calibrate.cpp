@@ -28,6 +28,12 @@ void print_sensor_fit(const SensorCalibration& s, double factor_low, double fact
   for (const CalibratedParameter& p : s.parameters)
     std::printf("  %-40s %12.5g %12.3g %12.3g  %s\n", p.name.c_str(), p.value, p.std, p.prior_std,
                 p.determined ? "yes" : "no: the prior holds it");
+  std::size_t placed = 0;
+  for (std::size_t i = 0; i < s.centres_mm.size(); ++i) {
+    if (!s.place_fitted[i]) continue;
+    if (placed++ == 0) std::printf("  places fitted to the presses of unknown place (chart mm; also in the report):\n");
+    std::printf("    press %zu at (%.2f, %.2f)\n", i, s.centres_mm[i].x(), s.centres_mm[i].y());
+  }
   std::printf(
       "  not determined by presses: the sheet's overall resistance (only series resistance x sheet conductance is "
       "seen), a contact's radial spread (indenter profile, cover blur); the contact law absorbs both\n");

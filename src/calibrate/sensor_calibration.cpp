@@ -4,11 +4,15 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
+#include <mutex>
+#include <thread>
 
 #include <ceres/ceres.h>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/threads.hpp"
 #include "emit/mesh/sheet_chart.hpp"
 #include "emit/mesh/slide_electrodes.hpp"
 #include "emit/model/green_function.hpp"
@@ -33,104 +37,127 @@ constexpr double series_prior_std = 3.0;  // 300 Ω
 constexpr double shift_prior_std_mm = 0.5;
 constexpr double shift_bound_mm = 1.5;  // slide_electrodes refuses what its room does not allow
 
-/// The presses' misfits (predicted − measured)/σ for a sensor (θ, E, R): the Green's function of
-/// the corrected sheet (on the columns the presses and electrodes need only; kept while θ stays),
-/// then per press a 1-D Gauss–Newton on its log conductance, warm-started from the last evaluation.
-class PressesMisfit {
- public:
-  PressesMisfit(const Sensor& sensor, const Mesh& mesh, const MeasurementSet& measurements,
-                const std::vector<Vector>& dV, const std::vector<Vector2>& centres_mm, const FitOptions& options,
-                int sheet_terms)
-      : sensor_(sensor),
-        base_mesh_(mesh),
-        measurements_(measurements),
-        dV_(dV),
-        centres_mm_(centres_mm),
-        options_(options),
-        noise_V_(reading_noise_V(sensor.adc)),
-        box_(SheetCorrection::identity_over(mesh, sheet_terms)) {
-    for (const Vector2& c : centres_mm)
-      if (!chart_on_sheet(mesh, sensor.shape, c))
-        throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " +
-                           std::to_string(c.y()) + ") mm is off the sheet");
-    log_g_.assign(dV.size(), std::log(sensor.contact.conductance_S_per_mm2(0.1)));
-  }
+/// What every evaluation of the presses' misfit shares: the sensor, its base mesh, each press's
+/// readings and whether its place is known.
+struct Presses {
+  const Sensor& sensor;
+  const Mesh& base_mesh;
+  const MeasurementSet& measurements;
+  const std::vector<Vector>& dV;
+  std::vector<bool> place_free;  ///< per press: its centre is fitted with it
+  FitOptions options;
+  double noise_V;
+  SheetCorrection box;  ///< the correction's frame (terms, scaling) with θ = 0
+  bool any_free = false;
 
-  int residual_count() const { return measurements_.size() * static_cast<int>(dV_.size()); }
-  int electrode_count() const { return measurements_.electrode_count; }
-
+  int readings() const { return measurements.size(); }
+  int electrodes() const { return measurements.electrode_count; }
+  int residual_count() const { return readings() * static_cast<int>(dV.size()); }
   SheetCorrection correction(const double* theta) const {
-    SheetCorrection c = box_;
+    SheetCorrection c = box;
     for (int k = 0; k < c.terms(); ++k) c.log_conductance[static_cast<std::size_t>(k)] = theta[k];
     return c;
   }
-  double drive_V(const double* log_drive) const { return sensor_.drive_voltage_V * std::exp(log_drive[0]); }
+  double drive_V(const double* log_drive) const { return sensor.drive_voltage_V * std::exp(log_drive[0]); }
   std::vector<double> series_ohm(const double* series) const {
-    std::vector<double> ohm(static_cast<std::size_t>(electrode_count()));
+    std::vector<double> ohm(static_cast<std::size_t>(electrodes()));
     for (std::size_t e = 0; e < ohm.size(); ++e) ohm[e] = std::max(0.0, series_unit_ohm * series[e]);
     return ohm;
   }
+};
 
-  std::vector<double> shifts(const double* shift) const {
-    return std::vector<double>(shift, shift + electrode_count());
-  }
+/// One press's own unknowns, solved inside each evaluation (variable projection): its centre
+/// (fitted only when unknown) and its log contact conductance.
+struct PressFit {
+  Vector2 centre_mm;
+  double log_g = 0;
+};
 
-  /// For ceres::DynamicNumericDiffCostFunction: blocks θ, log E, R, electrode shifts.
-  bool operator()(double const* const* blocks, double* residuals) const {
-    const std::vector<double> theta(blocks[0], blocks[0] + box_.terms());
-    const std::vector<double> shift = shifts(blocks[3]);
-    const bool moved = !predictor_ || shift != cached_shift_;
-    if (moved) {  // the electrodes slid: the mesh, the presses' loads and the columns they need
+/// The presses' misfits (predicted − measured)/σ for one sensor (θ, shifts, R, E): the Green's
+/// function of the corrected sheet on the slid mesh (on the columns the presses and electrodes
+/// need, every column when a press's place is free; kept while θ and the shifts stay), then per
+/// press its own unknowns by a small damped Gauss–Newton, warm-started. One per thread.
+class Evaluator {
+ public:
+  explicit Evaluator(const Presses& presses) : p_(presses) {}
+
+  /// The sheet and electrodes of the next evaluations. False when the electrodes cannot slide
+  /// that far (Ceres then rejects the step).
+  bool set_sheet(const double* theta, const double* shift, const std::vector<PressFit>& known_centres) {
+    const std::vector<double> t(theta, theta + p_.box.terms()), d(shift, shift + p_.electrodes());
+    const bool moved = !predictor_ || d != shift_;
+    if (moved) {
       predictor_.reset();
       try {
-        const bool none = std::all_of(shift.begin(), shift.end(), [](double s) { return s == 0; });
-        mesh_ = none ? base_mesh_ : slide_electrodes(base_mesh_, sensor_, shift);
+        const bool none = std::all_of(d.begin(), d.end(), [](double s) { return s == 0; });
+        mesh_ = none ? p_.base_mesh : slide_electrodes(p_.base_mesh, p_.sensor, d);
       } catch (const InvalidInput&) {
-        return false;  // beyond the room to slide: Ceres rejects the step
+        return false;  // beyond the room to slide
       }
-      integrate_presses();
-      cached_shift_ = shift;
+      integrator_ = std::make_unique<DiscContactIntegrator>(mesh_, p_.options.edge_mm, 3, p_.sensor.shape);
+      integrate_known(known_centres);
+      shift_ = d;
     }
-    if (moved || theta != cached_theta_) {  // the Green's function only when the sheet changes
+    if (moved || t != theta_) {  // the Green's function only when the sheet changes
       predictor_.reset();
-      green_ = dense_green_function(mesh_,
-                                    correction(theta.data())
-                                        .element_conductance_S(mesh_, sensor_.sheet_resistance_ohm_per_sq),
-                                    columns_);
+      green_ = dense_green_function(
+          mesh_, p_.correction(t.data()).element_conductance_S(mesh_, p_.sensor.sheet_resistance_ohm_per_sq), columns_);
       predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
-      cached_theta_ = theta;
+      theta_ = t;
     }
-    predictor_->set_series_resistance(series_ohm(blocks[2]));
-    const double E = drive_V(blocks[1]);
-    const int M = measurements_.size();
-    for (std::size_t i = 0; i < dV_.size(); ++i)
-      if (!fit_press(E, i, residuals + static_cast<std::ptrdiff_t>(i) * M)) return false;
     return true;
   }
 
+  /// Every press's residuals for series resistances R and drive E on the sheet set, each press's
+  /// unknowns warm-started from `fits` and left there.
+  bool residuals(const std::vector<double>& series_ohm, double E, std::vector<PressFit>& fits, double* residuals) {
+    set_series_resistance(series_ohm);
+    const int M = p_.readings();
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+      double* r = residuals + static_cast<std::ptrdiff_t>(i) * M;
+      if (!(p_.place_free[i] ? fit_free(E, i, fits[i], r) : fit_known(E, i, fits[i].log_g, r))) return false;
+    }
+    return true;
+  }
+
+  void set_series_resistance(const std::vector<double>& ohm) { predictor_->set_series_resistance(ohm); }
+
+  /// The frame, in units of the noise, of a disc of log conductance s at c: the starting search's.
+  bool scaled_frame(const Vector2& c, double s, double E, Vector& out) {
+    if (!chart_on_sheet(mesh_, p_.sensor.shape, c)) return false;
+    load_.clear();
+    integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, std::exp(s)}, load_);
+    predictor_->predict(load_.triangles, load_.local_S, E, frame_);
+    out.resize(p_.readings());
+    for (int r = 0; r < p_.readings(); ++r)
+      out[r] = frame_.data()[p_.measurements.frame_index[static_cast<std::size_t>(r)]] / p_.noise_V;
+    return out.allFinite();
+  }
+
  private:
-  /// Each press a held disc of unit conductance at its true centre on the current mesh, and the
-  /// Green's function's columns they and the electrodes need.
-  void integrate_presses() const {
-    const DiscContactIntegrator integrator(mesh_, options_.edge_mm, 3, sensor_.shape);
+  /// Each press of known place a held disc of unit conductance at its centre on the current
+  /// mesh, and the Green's function's columns the presses and the electrodes need.
+  void integrate_known(const std::vector<PressFit>& at) {
     const ElectrodeDofs dofs = number_electrode_dofs(mesh_);
     columns_.clear();
-    for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
-    unit_loads_.resize(centres_mm_.size());
-    for (std::size_t i = 0; i < centres_mm_.size(); ++i) {
-      const Vector2& c = centres_mm_[i];
+    unit_loads_.resize(at.size());
+    if (!p_.any_free)  // else every column: a free press may go anywhere
+      for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
+    for (std::size_t i = 0; i < at.size(); ++i) {
       unit_loads_[i].clear();  // integrate() appends
-      integrator.integrate({c.x(), c.y(), options_.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
-      for (Index t : unit_loads_[i].triangles)
-        for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
+      if (p_.place_free[i]) continue;
+      const Vector2& c = at[i].centre_mm;
+      integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
+      if (!p_.any_free)
+        for (Index t : unit_loads_[i].triangles)
+          for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
     }
   }
 
   /// Gauss–Newton on s = log g (∂C/∂s = C); leaves the press's residuals in `residuals`.
-  bool fit_press(double E, std::size_t i, double* residuals) const {
+  bool fit_known(double E, std::size_t i, double& s, double* residuals) {
     const DiscLoad& unit = unit_loads_[i];
-    const int M = measurements_.size();
-    double& s = log_g_[i];
+    const int M = p_.readings();
     for (int iteration = 0; iteration < 40; ++iteration) {
       scaled_.resize(unit.local_S.size());
       for (std::size_t t = 0; t < scaled_.size(); ++t) scaled_[t] = std::exp(s) * unit.local_S[t];
@@ -138,9 +165,9 @@ class PressesMisfit {
       predictor_->derivative(unit.triangles, scaled_, d_frame_);
       double jr = 0, jj = 0;
       for (int r = 0; r < M; ++r) {
-        const int at = measurements_.frame_index[static_cast<std::size_t>(r)];
-        residuals[r] = (frame_.data()[at] - dV_[i][r]) / noise_V_;
-        const double j = d_frame_.data()[at] / noise_V_;
+        const int at = p_.measurements.frame_index[static_cast<std::size_t>(r)];
+        residuals[r] = (frame_.data()[at] - p_.dV[i][r]) / p_.noise_V;
+        const double j = d_frame_.data()[at] / p_.noise_V;
         jr += j * residuals[r], jj += j * j;
       }
       if (!std::isfinite(jr) || !(jj > 0)) return false;
@@ -151,24 +178,170 @@ class PressesMisfit {
     return true;
   }
 
-  const Sensor& sensor_;
-  const Mesh& base_mesh_;
-  const MeasurementSet& measurements_;
-  const std::vector<Vector>& dV_;
-  const std::vector<Vector2>& centres_mm_;
-  FitOptions options_;
-  double noise_V_;
-  SheetCorrection box_;
-  mutable Mesh mesh_;  ///< the base mesh with the electrodes slid to cached_shift_
-  mutable std::vector<double> cached_shift_;
-  mutable std::vector<int> columns_;
-  mutable std::vector<DiscLoad> unit_loads_;
-  mutable std::vector<double> log_g_;
-  mutable std::vector<Eigen::Matrix3d> scaled_;
-  mutable Frame frame_, d_frame_;
-  mutable std::vector<double> cached_theta_;
-  mutable DenseGreenFunction green_;
-  mutable std::unique_ptr<FramePredictor> predictor_;
+  /// The residuals of press i held at (c, s) into r, their cost ½|r|², and with `derivatives`
+  /// the Jacobian in (x, y, s) into J_. Infinite off the sheet.
+  double press_cost(double E, std::size_t i, const Vector2& c, double s, bool derivatives, double* r) {
+    if (!chart_on_sheet(mesh_, p_.sensor.shape, c)) return std::numeric_limits<double>::infinity();
+    load_.clear();
+    integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, std::exp(s)}, load_, derivatives);
+    if (load_.triangles.empty()) return std::numeric_limits<double>::infinity();
+    predictor_->predict(load_.triangles, load_.local_S, E, frame_);
+    const int M = p_.readings();
+    double cost = 0;
+    for (int k = 0; k < M; ++k) {
+      r[k] = (frame_.data()[p_.measurements.frame_index[static_cast<std::size_t>(k)]] - p_.dV[i][k]) / p_.noise_V;
+      cost += 0.5 * r[k] * r[k];
+    }
+    if (!derivatives) return std::isfinite(cost) ? cost : std::numeric_limits<double>::infinity();
+    J_.resize(M, 3);
+    for (int direction = 0; direction < 3; ++direction) {
+      if (direction < 2) {
+        scaled_.resize(load_.triangles.size());
+        for (std::size_t t = 0; t < scaled_.size(); ++t)
+          scaled_[t] = load_.d_local_S[t][static_cast<std::size_t>(direction)];
+        predictor_->derivative(load_.triangles, scaled_, d_frame_);
+      } else {
+        predictor_->derivative(load_.triangles, load_.local_S, d_frame_);  // ∂C/∂s = C
+      }
+      for (int k = 0; k < M; ++k)
+        J_(k, direction) = d_frame_.data()[p_.measurements.frame_index[static_cast<std::size_t>(k)]] / p_.noise_V;
+    }
+    return std::isfinite(cost) && J_.allFinite() ? cost : std::numeric_limits<double>::infinity();
+  }
+
+  /// Levenberg–Marquardt on (x, y, s) for a press of unknown place, from `fit`; leaves its
+  /// residuals in `residuals`.
+  bool fit_free(double E, std::size_t i, PressFit& fit, double* residuals) {
+    const int M = p_.readings();
+    trial_.resize(M);
+    double cost = press_cost(E, i, fit.centre_mm, fit.log_g, true, residuals);
+    if (!std::isfinite(cost)) return false;
+    double mu = 1e-3;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      const Eigen::Map<const Vector> r(residuals, M);
+      Eigen::Matrix3d A = J_.transpose() * J_;
+      const Eigen::Vector3d g = J_.transpose() * r;
+      A.diagonal() *= 1 + mu;
+      const Eigen::Vector3d step = -A.ldlt().solve(g);
+      const Vector2 c = fit.centre_mm + step.head<2>();
+      const double s = fit.log_g + std::clamp(step[2], -2.0, 2.0);
+      const double tried = press_cost(E, i, c, s, false, trial_.data());
+      if (tried < cost) {
+        fit.centre_mm = c, fit.log_g = s;
+        mu = std::max(1e-9, mu / 4);
+        cost = press_cost(E, i, c, s, true, residuals);
+        if (step.head<2>().norm() < 1e-7 && std::abs(step[2]) < 1e-9) break;
+      } else {
+        mu *= 8;
+        if (mu > 1e8) break;  // no step lowers the cost: a minimum to the precision there is
+      }
+    }
+    return std::isfinite(cost);
+  }
+
+  const Presses& p_;
+  Mesh mesh_;  ///< the base mesh with the electrodes slid to shift_
+  std::vector<double> shift_, theta_;
+  std::unique_ptr<DiscContactIntegrator> integrator_;
+  std::vector<int> columns_;
+  std::vector<DiscLoad> unit_loads_;
+  DiscLoad load_;
+  std::vector<Eigen::Matrix3d> scaled_;
+  Frame frame_, d_frame_;
+  Matrix J_;
+  Vector trial_;
+  DenseGreenFunction green_;
+  std::unique_ptr<FramePredictor> predictor_;
+};
+
+/// The presses' misfit as one Ceres residual block over the blocks θ, log E, R and the shifts,
+/// its Jacobian by forward differences of the profiled residuals (the presses' own unknowns
+/// solved again for each step, warm-started from the point's). The steps that change the sheet
+/// or the electrodes need a Green's function each; they are shared between threads (each its own
+/// Evaluator), the cheap ones (R, E) go first on the evaluator that holds the point's sheet.
+class PressesCost : public ceres::CostFunction {
+ public:
+  PressesCost(const Presses& presses, std::vector<PressFit> start, int threads)
+      : p_(presses), fits_(std::move(start)) {
+    for (int t = 0; t < std::max(1, threads); ++t) evaluators_.push_back(std::make_unique<Evaluator>(presses));
+    set_num_residuals(presses.residual_count());
+    mutable_parameter_block_sizes()->assign({presses.box.terms(), 1, presses.electrodes(), presses.electrodes()});
+  }
+
+  const std::vector<PressFit>& fits() const { return fits_; }
+  Evaluator& evaluator() const { return *evaluators_.front(); }
+
+  bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override {
+    std::vector<PressFit> fits = fits_;
+    Evaluator& base = *evaluators_.front();
+    if (!base.set_sheet(x[0], x[3], fits_)) return false;
+    if (!base.residuals(p_.series_ohm(x[2]), p_.drive_V(x[1]), fits, residuals)) return false;
+    const int R = num_residuals();
+    double cost = 0;
+    for (int k = 0; k < R; ++k) cost += residuals[k] * residuals[k];
+    if (cost < best_cost_) best_cost_ = cost, fits_ = fits;  // warm starts from the best point seen
+    if (!jacobians) return true;
+
+    struct Direction {
+      int block, index;
+      double step;
+    };
+    std::vector<Direction> directions;  // the cheap ones first
+    const std::array<double, 4> steps{1e-4, 1e-5, 1e-3, 1e-3};  // θ, log E, R/100 Ω, shift [mm]
+    for (const int block : {1, 2, 0, 3})
+      if (jacobians[block])
+        for (int k = 0; k < parameter_block_sizes()[static_cast<std::size_t>(block)]; ++k)
+          directions.push_back({block, k, steps[static_cast<std::size_t>(block)]});
+    std::mutex taking;
+    std::size_t front = 0, back = directions.size();
+    bool failed = false;
+    const auto work = [&](std::size_t which) {
+      Evaluator& evaluator = *evaluators_[which];
+      std::vector<double> moved(static_cast<std::size_t>(R));
+      std::vector<std::vector<double>> blocks(4);
+      for (std::size_t b = 0; b < 4; ++b)
+        blocks[b].assign(x[b], x[b] + parameter_block_sizes()[b]);
+      for (;;) {
+        Direction d{};
+        {
+          const std::lock_guard<std::mutex> lock(taking);
+          if (front == back || failed) return;
+          d = which == 0 ? directions[front++] : directions[--back];  // the first takes the cheap end
+        }
+        std::vector<double>& value = blocks[static_cast<std::size_t>(d.block)];
+        value[static_cast<std::size_t>(d.index)] += d.step;
+        std::vector<PressFit> warm = fits;
+        const bool ok = evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits_) &&
+                        evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm,
+                                            moved.data());
+        value[static_cast<std::size_t>(d.index)] -= d.step;
+        if (!ok) {
+          const std::lock_guard<std::mutex> lock(taking);
+          failed = true;
+          return;
+        }
+        const int size = parameter_block_sizes()[static_cast<std::size_t>(d.block)];
+        for (int k = 0; k < R; ++k)
+          jacobians[d.block][static_cast<std::ptrdiff_t>(k) * size + d.index] = (moved[static_cast<std::size_t>(k)] - residuals[k]) / d.step;
+      }
+    };
+    if (evaluators_.size() == 1) {
+      work(0);
+    } else {
+      const SingleThreadedBlas one_each;
+      std::vector<std::thread> threads;
+      for (std::size_t t = 1; t < evaluators_.size(); ++t) threads.emplace_back(work, t);
+      work(0);
+      for (std::thread& t : threads) t.join();
+    }
+    return !failed;
+  }
+
+ private:
+  const Presses& p_;
+  mutable std::vector<PressFit> fits_;
+  mutable double best_cost_ = std::numeric_limits<double>::infinity();
+  std::vector<std::unique_ptr<Evaluator>> evaluators_;
 };
 
 /// (x − mean)/σ per parameter: weak priors, so that what the presses cannot see stays nominal.
@@ -231,6 +404,63 @@ Matrix data_jacobian(ceres::Problem& problem, ceres::ResidualBlockId data, const
   return J;
 }
 
+/// Where each press of unknown place starts: the point of a grid over the sheet (about 40 × 40
+/// steps) whose disc, at one of a few conductances and scaled, comes nearest its frame; the
+/// damped Gauss–Newton inside each evaluation refines it. The frames of the grid are computed once.
+void start_free_presses(Evaluator& evaluator, const Presses& p, const Mesh& mesh, double E,
+                        std::vector<PressFit>& fits) {
+  const Eigen::AlignedBox2d box = chart_box(mesh, p.sensor.shape);
+  const double step_mm = std::max(box.sizes().x(), box.sizes().y()) / 40;
+  std::vector<PressFit> candidates;
+  std::vector<Vector> frames;
+  Vector frame;
+  const double log_g0 = std::log(p.sensor.contact.conductance_S_per_mm2(0.1));
+  for (double y = box.min().y() + step_mm / 2; y < box.max().y(); y += step_mm)
+    for (double x = box.min().x() + step_mm / 2; x < box.max().x(); x += step_mm)
+      for (const double ds : {-3.0, -1.5, 0.0, 1.5, 3.0})
+        if (evaluator.scaled_frame({x, y}, log_g0 + ds, E, frame)) {
+          candidates.push_back({{x, y}, log_g0 + ds});
+          frames.push_back(frame / std::max(frame.norm(), 1e-300));
+        }
+  if (candidates.empty()) throw SolverError("sensor calibration: no point of the sheet to start an unknown press at");
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    if (!p.place_free[i]) continue;
+    const Vector d = p.dV[i] / p.noise_V;
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const double cosine = frames[k].dot(d);  // the best scale's fit: |d|² − (f̂·d)²
+      if (cosine > best) best = cosine, fits[i] = candidates[k];
+    }
+  }
+}
+
+/// The ninths of the sheet's chart box (a 3 × 3 grid, named "lower left" … "upper right") whose
+/// centre is on the sheet and that hold none of the presses' centres: a degenerate set (all presses
+/// in one corner) leaves the field there to the cubic's extrapolation.
+std::vector<std::string> uncovered_thirds(const Mesh& mesh, const Shape& shape, const std::vector<Vector2>& centres) {
+  const Eigen::AlignedBox2d box = chart_box(mesh, shape);
+  const Vector2 size = box.sizes() / 3;
+  const char* rows[] = {"lower", "middle", "upper"};
+  const char* columns[] = {"left", "middle", "right"};
+  std::vector<std::string> empty;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const Vector2 low = box.min() + Vector2(i * size.x(), j * size.y()), high = low + size;
+      if (!chart_on_sheet(mesh, shape, (low + high) / 2)) continue;
+      const bool hit = std::any_of(centres.begin(), centres.end(), [&](const Vector2& c) {
+        return c.x() >= low.x() && c.x() <= high.x() && c.y() >= low.y() && c.y() <= high.y();
+      });
+      if (!hit) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%s %s ninth (x %.0f to %.0f mm, y %.0f to %.0f mm)",
+                      j == 1 && i == 1 ? "" : rows[j], j == 1 && i == 1 ? "centre" : columns[i], low.x(), high.x(),
+                      low.y(), high.y());
+        empty.emplace_back(line[0] == ' ' ? line + 1 : line);
+      }
+    }
+  return empty;
+}
+
 }  // namespace
 
 void SensorCalibrationOptions::validate() const {
@@ -258,7 +488,19 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
                        " electrodes");
   const FitOptions resolved = resolved_fit_options(fit_options, sensor, fit_mesh);
   const double noise_V = reading_noise_V(sensor.adc);
-  auto* misfit = new PressesMisfit(sensor, fit_mesh, measurements, dV, centres_mm, resolved, options.sheet_terms);
+  Presses presses{sensor, fit_mesh, measurements, dV, {}, resolved, noise_V,
+                  SheetCorrection::identity_over(fit_mesh, options.sheet_terms)};
+  std::vector<PressFit> start(dV.size());
+  for (std::size_t i = 0; i < dV.size(); ++i) {
+    const Vector2& c = centres_mm[i];
+    const bool free = !std::isfinite(c.x()) || !std::isfinite(c.y());
+    presses.place_free.push_back(free);
+    presses.any_free = presses.any_free || free;
+    if (!free && !chart_on_sheet(fit_mesh, sensor.shape, c))
+      throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " +
+                         std::to_string(c.y()) + ") mm is off the sheet");
+    start[i] = {free ? Vector2::Zero() : c, std::log(sensor.contact.conductance_S_per_mm2(0.1))};
+  }
 
   Blocks x;
   x.theta.assign(static_cast<std::size_t>(options.sheet_terms), 0.0);
@@ -269,20 +511,20 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   const std::vector<double> series_prior_mean = x.series;
   SensorCalibration result;
   result.presses = static_cast<int>(dV.size());
-  std::vector<double> residuals(static_cast<std::size_t>(misfit->residual_count()));
+  if (presses.any_free) {
+    Evaluator search(presses);
+    search.set_sheet(x.theta.data(), x.shift_mm.data(), start);
+    search.set_series_resistance(presses.series_ohm(x.series.data()));
+    if (progress) progress("sensor calibration: placing the presses of unknown place");
+    start_free_presses(search, presses, fit_mesh, sensor.drive_voltage_V, start);
+  }
+  auto* cost = new PressesCost(presses, start, thread_count());
+  std::vector<double> residuals(static_cast<std::size_t>(presses.residual_count()));
   const double* values[] = {x.theta.data(), x.log_drive.data(), x.series.data(), x.shift_mm.data()};
-  if (!(*misfit)(values, residuals.data())) throw SolverError("sensor calibration: the nominal sensor's fit failed");
+  if (!cost->Evaluate(values, residuals.data(), nullptr))
+    throw SolverError("sensor calibration: the nominal sensor's fit failed");
   result.rms_misfit_nominal_V = rms_V(residuals, noise_V);
 
-  ceres::NumericDiffOptions difference;
-  difference.relative_step_size = 1e-4;  // a parameter at 0: Ceres then steps by this much absolutely
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<PressesMisfit, ceres::FORWARD>(misfit, ceres::TAKE_OWNERSHIP,
-                                                                                        difference);
-  cost->AddParameterBlock(options.sheet_terms);
-  cost->AddParameterBlock(1);
-  cost->AddParameterBlock(N);
-  cost->AddParameterBlock(N);
-  cost->SetNumResiduals(misfit->residual_count());
   ceres::Problem problem;
   const ceres::ResidualBlockId data =
       problem.AddResidualBlock(cost, nullptr, x.theta.data(), x.log_drive.data(), x.series.data(), x.shift_mm.data());
@@ -323,17 +565,20 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   solver.function_tolerance = 1e-3;
   solver.parameter_tolerance = 1e-5;
   solver.logging_type = ceres::SILENT;
-  Progress news(progress, misfit->residual_count(), noise_V);
+  Progress news(progress, presses.residual_count(), noise_V);
   if (progress) solver.callbacks.push_back(&news);
   ceres::Solver::Summary summary;
   ceres::Solve(solver, &problem, &summary);
   if (!summary.IsSolutionUsable()) throw SolverError("sensor calibration: " + summary.message);
 
-  result.correction = misfit->correction(x.theta.data());
-  result.drive_voltage_V = misfit->drive_V(x.log_drive.data());
-  result.series_resistance_ohm = misfit->series_ohm(x.series.data());
+  result.correction = presses.correction(x.theta.data());
+  result.drive_voltage_V = presses.drive_V(x.log_drive.data());
+  result.series_resistance_ohm = presses.series_ohm(x.series.data());
   result.electrode_shift_mm = x.shift_mm;
-  if (!(*misfit)(values, residuals.data())) throw SolverError("sensor calibration: the calibrated sensor's fit failed");
+  if (!cost->Evaluate(values, residuals.data(), nullptr))
+    throw SolverError("sensor calibration: the calibrated sensor's fit failed");
+  for (std::size_t i = 0; i < dV.size(); ++i)
+    result.centres_mm.push_back(cost->fits()[i].centre_mm), result.place_fitted.push_back(presses.place_free[i]);
   result.rms_misfit_corrected_V = rms_V(residuals, noise_V);
   const double chi2 = (result.rms_misfit_corrected_V / noise_V) * (result.rms_misfit_corrected_V / noise_V);
   result.chi2_per_reading = chi2;
@@ -385,6 +630,9 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   }
 
   // Doubts a user must hear about.
+  for (const std::string& empty : uncovered_thirds(fit_mesh, sensor.shape, result.centres_mm))
+    result.warnings.push_back("no press in the sheet's " + empty +
+                              ": the sheet's field there is the fit's extrapolation; press there too");
   if (chi2 > 9) {
     char line[256];
     std::snprintf(line, sizeof line,
@@ -419,7 +667,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (presses[f].size() != 1) continue;  // a single press's centre is known; two mix
     dV.push_back(frame_difference(measurements, frames[f], reference));
-    centres.push_back(press_chart_mm(sensor.shape, presses[f][0]));
+    centres.push_back(place_known(presses[f][0]) ? press_chart_mm(sensor.shape, presses[f][0])
+                                                 : Vector2::Constant(std::numeric_limits<double>::quiet_NaN()));
   }
   return calibrate_sensor(sensor, fit_mesh, measurements, dV, centres, options, {}, progress);
 }

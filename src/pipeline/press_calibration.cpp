@@ -40,17 +40,28 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
                                          const ReconstructionModel& model, const Reference& reference,
                                          const std::vector<Frame>& frames, const PressSequence& truth,
                                          const std::function<void(const std::string&)>& say) {
-  std::vector<Frame> single;
+  std::vector<Frame> weighed;  // the single presses of known force: the contact law's
   std::vector<double> pressures;
   FitCalibration calibration;
+  std::size_t single = 0, unplaced = 0;
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
+    ++single;
+    unplaced += !place_known(truth[f][0]);
+    if (!force_known(truth[f][0])) continue;
     calibration.indenter_radius_mm += truth[f][0].radius_mm;
-    single.push_back(frames[f]);
+    weighed.push_back(frames[f]);
     pressures.push_back(truth[f][0].pressure_N_per_mm2());
   }
-  if (single.empty()) throw InvalidInput("calibration: no single presses to calibrate on");
-  calibration.indenter_radius_mm /= static_cast<double>(single.size());
+  if (single == 0) throw InvalidInput("calibration: no single presses to calibrate on");
+  if (unplaced > 0 && !options.fit_sheet)
+    throw InvalidInput("calibration: " + std::to_string(unplaced) +
+                       " presses of unknown place; only the sheet's fit places them (leave the sheet's fit on)");
+  if (weighed.size() < 2)
+    throw InvalidInput("calibration: " + std::to_string(weighed.size()) +
+                       " single presses of known force; the contact law (R = alpha P^gamma) needs at least 2, of "
+                       "different forces: put a known weight down, or press on a scale");
+  calibration.indenter_radius_mm /= static_cast<double>(weighed.size());
   calibration.electrode_count = model.measurements.electrode_count;
   calibration.sensor_name = sensor.name;
   PressCalibrationResult result;
@@ -77,7 +88,7 @@ PressCalibrationResult calibrate_fitting(const Sensor& sensor, const PressCalibr
   FrameOptions frame_options;
   frame_options.threshold_fraction = options.threshold_fraction;
   const FittedLawCalibration fitted =
-      calibrate_fitted_contact_law(model, fit, reference, single, pressures, sensor.contact, frame_options);
+      calibrate_fitted_contact_law(model, fit, reference, weighed, pressures, sensor.contact, frame_options);
   calibration.contact_law = fitted.law;
   result.calibration = calibration;
   result.presses = fitted.presses;
@@ -104,6 +115,10 @@ PressCalibrationResult calibrate_linear(const ReconstructionModel& model, double
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (truth[f].size() != 1) continue;  // calibrate on single presses only
     const Press& press = truth[f][0];
+    if (!place_known(press) || !force_known(press))
+      throw InvalidInput("calibration: frame " + std::to_string(f) +
+                         "'s press has no place or no force; the linear methods calibrate on presses of known place "
+                         "and force (contact fitting, --method fit, takes the others)");
     const std::vector<Contact>& contacts = reconstructor.process(frames[f]);
     samples.push_back(pressure_sample(reconstructor, threshold_fraction, press.pressure_N_per_mm2()));
     if (const std::optional<double> integral =

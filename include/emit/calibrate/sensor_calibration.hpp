@@ -66,6 +66,10 @@ struct SensorCalibration {
   /// calibrated one's χ² per reading (about 1 when the model explains the presses to the noise).
   double rms_misfit_nominal_V = 0, rms_misfit_corrected_V = 0, chi2_per_reading = 0;
   int presses = 0;
+  /// Per press, in the order given: its centre (the given one, or the fitted one where its place
+  /// was unknown) and whether it was fitted.
+  std::vector<Vector2> centres_mm;
+  std::vector<bool> place_fitted;
   /// Plain-language doubts: a misfit far beyond the noise (the wrong sensor file, presses not
   /// where the truth says), a parameter at the edge of its plausible range.
   std::vector<std::string> warnings;
@@ -73,7 +77,10 @@ struct SensorCalibration {
 
 /// \param sensor      the nominal sensor (its own series resistances and drive are the start)
 /// \param dV          per press, one value per measurement (frame − no-contact reference)
-/// \param centres_mm  per press, its true centre
+/// \param centres_mm  per press, its true centre; NaN where its place is unknown: that press's
+///                    centre is then fitted with the sheet (each frame is N² readings against a
+///                    handful of unknowns per press), started from the grid point of the nominal
+///                    sheet whose disc's frame is nearest it
 /// \param progress    told a line of news per iteration (may be empty)
 /// \throw InvalidInput for fewer than 8 presses or a centre off the mesh; SolverError if the fit
 ///        fails.
