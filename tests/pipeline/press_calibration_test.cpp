@@ -4,6 +4,7 @@
 #include "emit/pipeline/press_calibration.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -38,6 +39,34 @@ TEST(PressCalibration, FramesAndTruthMustMatch) {
     FAIL() << "no error";
   } catch (const InvalidInput& e) {
     EXPECT_STREQ(e.what(), "calibration: no single presses to calibrate on");
+  }
+}
+
+// Presses of unknown place or force: contact fitting needs at least two of known force for the
+// contact law, and the linear methods need every place and force.
+TEST(PressCalibration, SaysWhatPressesOfUnknownPlaceOrForceLack) {
+  const Sensor sensor = coarse_sensor();
+  const Frame zero = Frame::Zero(16, 16);
+  const double unknown = std::numeric_limits<double>::quiet_NaN();
+  PressSequence presses(3, {Press{unknown, unknown, 5, unknown}});
+  presses[0][0].force_N = 10;  // one weight of known force
+  try {
+    calibrate_from_presses(sensor, {}, {zero, 1}, {zero, zero, zero}, presses);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(),
+                 "calibration: 1 single presses of known force; the contact law (R = alpha P^gamma) needs at least 2, "
+                 "of different forces: put a known weight down, or press on a scale");
+  }
+  PressCalibrationOptions paper;
+  paper.method = Method::paper;
+  try {
+    calibrate_from_presses(sensor, paper, {zero, 1}, {zero, zero, zero}, presses);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(),
+                 "calibration: frame 0's press has no place or no force; the linear methods calibrate on presses of "
+                 "known place and force (contact fitting, --method fit, takes the others)");
   }
 }
 
