@@ -288,10 +288,21 @@ class PressesCost : public ceres::CostFunction {
     };
     std::vector<Direction> directions;  // the cheap ones first
     const std::array<double, 4> steps{1e-4, 1e-5, 1e-3, 1e-3};  // θ, log E, R/100 Ω, shift [mm]
-    for (const int block : {1, 2, 0, 3})
-      if (jacobians[block])
-        for (int k = 0; k < parameter_block_sizes()[static_cast<std::size_t>(block)]; ++k)
-          directions.push_back({block, k, steps[static_cast<std::size_t>(block)]});
+    const bool fresh = sheet_jacobians_ < fresh_sheet_jacobians_;
+    for (const int block : {1, 2, 0, 3}) {
+      if (!jacobians[block]) continue;
+      const auto size = static_cast<std::size_t>(num_residuals()) *
+                        static_cast<std::size_t>(parameter_block_sizes()[static_cast<std::size_t>(block)]);
+      const bool sheet = block == 0 || block == 3;
+      if (sheet && !fresh) {  // the sheet's columns as last computed
+        std::copy(kept_[static_cast<std::size_t>(block)].begin(), kept_[static_cast<std::size_t>(block)].end(),
+                  jacobians[block]);
+        continue;
+      }
+      if (sheet) kept_[static_cast<std::size_t>(block)].resize(size);
+      for (int k = 0; k < parameter_block_sizes()[static_cast<std::size_t>(block)]; ++k)
+        directions.push_back({block, k, steps[static_cast<std::size_t>(block)]});
+    }
     std::mutex taking;
     std::size_t front = 0, back = directions.size();
     bool failed = false;
@@ -334,11 +345,28 @@ class PressesCost : public ceres::CostFunction {
       work(0);
       for (std::thread& t : threads) t.join();
     }
-    return !failed;
+    if (failed) return false;
+    if (fresh) {
+      ++sheet_jacobians_;
+      for (const int block : {0, 3})
+        if (jacobians[block])
+          std::copy(jacobians[block], jacobians[block] + kept_[static_cast<std::size_t>(block)].size(),
+                    kept_[static_cast<std::size_t>(block)].begin());
+    }
+    return true;
   }
+
+  /// The next Jacobian's columns in the sheet and the shifts computed afresh (for the covariance).
+  void refresh_sheet_jacobian() const { fresh_sheet_jacobians_ = sheet_jacobians_ + 1; }
 
  private:
   const Presses& p_;
+  /// Each of the sheet's and the shifts' columns costs a Green's function; after the first
+  /// `fresh_sheet_jacobians_` they are kept (they change little once near the solution) and
+  /// only the cheap ones (R, E) recomputed: Levenberg–Marquardt on the exact residuals still
+  /// converges, a little more slowly.
+  mutable int sheet_jacobians_ = 0, fresh_sheet_jacobians_ = 2;
+  mutable std::array<std::vector<double>, 4> kept_;
   mutable std::vector<PressFit> fits_;
   mutable double best_cost_ = std::numeric_limits<double>::infinity();
   std::vector<std::unique_ptr<Evaluator>> evaluators_;
@@ -585,6 +613,7 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
 
   // Identifiability: the posterior covariance (JᵀJ + prior)⁻¹ in the blocks' units, inflated by
   // the misfit per reading when the model misfits beyond the noise.
+  cost->refresh_sheet_jacobian();
   const Matrix J = data_jacobian(problem, data, free_blocks);
   std::vector<double> prior_std;
   std::vector<std::pair<std::string, double>> named;  // name, unit factor (block unit → reported unit)
