@@ -93,7 +93,7 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
   // Every output opened before any input is read: one that cannot be opened touches none. Each
   // grows as PATH.partial, renamed when the whole recording is in it (the file's comment).
   auto outputs = open_outputs(
-      {{"", job.recording_path}, {"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}},
+      {{"the recording", job.recording_path}, {"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}},
       {OutputRequest{{"--frames", job.frames_path}, {.partial = true}},
        OutputRequest{{"--reference", job.reference_path}, {.partial = true}},
        OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
