@@ -34,6 +34,7 @@ void run_export(ExportArgs args) {
     std::fprintf(say, "contacts: %s (the %s method, against the first %llu frames%s)\n", job.contacts_path.c_str(),
                  args.method.c_str(), static_cast<unsigned long long>(r.reference_frames),
                  r.calibrated ? ", calibrated" : "");
+  if (!job.tracks_path.empty()) std::fprintf(say, "tracks: %s\n", job.tracks_path.c_str());
   if (!job.mcap_path.empty())
     std::fprintf(say, "recorded frames, contacts and pressure images to %s (MCAP, ROS 2 messages)\n",
                  job.mcap_path.c_str());
@@ -61,6 +62,8 @@ void add_export_command(CLI::App& app) {
       ->check(positive_integer())
       ->capture_default_str();
   cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame); - for stdout");
+  cmd->add_option("--tracks", job.tracks_path,
+                  "Touches out as CSV, one row per touch per frame (time_s on the board's clock, id, phase, x_mm, ...)");
   cmd->add_option("--mcap", job.mcap_path,
                   "Frames, contacts and pressure images out as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")

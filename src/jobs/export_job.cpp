@@ -13,6 +13,7 @@
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/tactile_mcap.hpp"
+#include "emit/io/tracks_csv.hpp"
 #include "emit/mesh/sheet_file.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "reconstruct_inputs.hpp"
@@ -20,12 +21,12 @@
 namespace emit {
 
 void ExportJob::validate() const {
-  if (frames_path.empty() && reference_path.empty() && contacts_path.empty() && mcap_path.empty())
-    throw InvalidInput("nothing to export: give --frames, --reference, --contacts or --mcap");
+  if (frames_path.empty() && reference_path.empty() && !reconstructs())
+    throw InvalidInput("nothing to export: give --frames, --reference, --contacts, --tracks or --mcap");
   option_check::at_least("ExportJob", "reference_frames", reference_frames, 1);
   if (!calibration_path.empty() && !reconstructs())
     throw InvalidInput("--calibration " + calibration_path +
-                       ": only --contacts and --mcap reconstruct frames, and neither is given");
+                       ": only --contacts, --tracks and --mcap reconstruct frames, and none is given");
   tracking.validate();
 }
 
@@ -97,8 +98,9 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
       {OutputRequest{{"--frames", job.frames_path}, {.partial = true}},
        OutputRequest{{"--reference", job.reference_path}, {.partial = true}},
        OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
+       OutputRequest{{"--tracks", job.tracks_path}, {.partial = true}},
        OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
-  auto& [frames_file, reference_file, contacts_file, mcap_file] = outputs;
+  auto& [frames_file, reference_file, contacts_file, tracks_file, mcap_file] = outputs;
   const auto start = std::chrono::steady_clock::now();
   FrameOptions frame_options;
   frame_options.contact_radius_mm = job.contact_radius_mm;
@@ -135,6 +137,7 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
     reconstructor->set_reference(average_reference(survey.reference));  // as `--reference R.csv` is read
     report.reference_frames = survey.reference.size();
     tracker.emplace(job.tracking, 64, pipeline->model().surface);
+    if (tracks_file.given()) write_tracks_header(tracks_file.stream());
     start_ns = survey.start_unix_us * 1000;
     if (mcap_file.given()) mcap.emplace(std::move(mcap_file), sensor.name, pipeline->model().mesh, start_ns);
   }
@@ -156,6 +159,8 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
         write_contacts_line(contacts_file.stream(), static_cast<long>(f), contacts,
                             fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1, FrameTimes{frame.board_time_s},
                             &tracker->ended());
+      if (tracks_file.given())
+        write_tracks_rows(tracks_file.stream(), frame.board_time_s, f, contacts, &tracker->ended());
       if (mcap) {
         const double since_start_s = std::max(frame.board_time_s - survey.first_board_s, 0.0);
         mcap->write(f, start_ns + static_cast<std::uint64_t>(std::llround(1e9 * since_start_s)), frame_view(frame.volts),
@@ -163,7 +168,7 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
       }
     }
     progress.step("exporting frame", static_cast<long>(f + 1), static_cast<long>(survey.frames));
-    for (OutputFile* output : {&frames_file, &contacts_file})  // a full disk stops the export here, not at its end
+    for (OutputFile* output : {&frames_file, &contacts_file, &tracks_file})  // a full disk stops the export here, not at its end
       if (output->given()) output->check();
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -27,13 +27,14 @@ int lines_in(const std::string& text) { return static_cast<int>(std::count(text.
 // The twin holds a press at (20, 40) from its 16th frame (of 30: 10 captured as the reference,
 // then 20): exported, every frame is in the frames file, the first 10 in the reference, and the
 // contacts find the press on frames 15..29 only, within 0.5 mm (live_loop_test's bound for the
-// same source; README: fit's p95 0.13 mm), each line with the board's time, later than the last.
+// same source; README: fit's p95 0.13 mm), each line with the board's time, later than the last;
+// the tracks CSV has the touch's 15 rows.
 TEST(Cli, ExportTurnsALiveRecordingIntoFramesContactsAndMcap) {
   const std::string d = test::temp_folder("cli_export");
   auto r = run_emit("live --source sim:fixed:20,40 --frames 20 --fps 0 --record " + d + "/r.emitrec --cache " + d);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_emit("export " + d + "/r.emitrec --frames " + d + "/f.csv --reference " + d + "/ref.csv --contacts " + d +
-               "/c.jsonl --mcap " + d + "/c.mcap --cache " + d);
+               "/c.jsonl --tracks " + d + "/t.csv --mcap " + d + "/c.mcap --cache " + d);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("exported 30 frames ("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(", 0 missed)"), std::string::npos) << r.out;
@@ -57,8 +58,11 @@ TEST(Cli, ExportTurnsALiveRecordingIntoFramesContactsAndMcap) {
     EXPECT_EQ(read.contacts[0].id, 0);  // one touch, held
   }
   EXPECT_EQ(expected, 30);
+  const std::string tracks = test::read_text(d + "/t.csv");
+  EXPECT_EQ(tracks.substr(0, tracks.find(',')), "time_s");
+  EXPECT_EQ(lines_in(tracks), 1 + 15);  // the header, then the touch on each of frames 15..29
   EXPECT_EQ(test::read_text(d + "/c.mcap").substr(1, 4), "MCAP");
-  for (const std::string name : {"f.csv", "ref.csv", "c.jsonl", "c.mcap"})
+  for (const std::string name : {"f.csv", "ref.csv", "c.jsonl", "t.csv", "c.mcap"})
     EXPECT_FALSE(fs::exists(d + "/" + name + ".partial")) << name;
 }
 
@@ -88,10 +92,10 @@ TEST(Cli, ExportRefusesBadInputInOneLine) {
   };
   refused(d + "/missing.emitrec --frames " + d + "/good.csv", "emit: " + d + "/missing.emitrec: cannot open the recording");
   refused(d + "/good.csv --frames " + d + "/x.csv", d + "/good.csv: not an emit recording");
-  refused(d + "/r.emitrec", "emit: nothing to export: give --frames, --reference, --contacts or --mcap");
+  refused(d + "/r.emitrec", "emit: nothing to export: give --frames, --reference, --contacts, --tracks or --mcap");
   refused(d + "/r.emitrec --frames " + d + "/r.emitrec", "is the same file as the recording");
   refused(d + "/r.emitrec --frames " + d + "/good.csv --calibration " + d + "/good.csv",
-          "--calibration " + d + "/good.csv: only --contacts and --mcap reconstruct frames");
+          "--calibration " + d + "/good.csv: only --contacts, --tracks and --mcap reconstruct frames");
   refused(d + "/r.emitrec --frames " + d + "/good.csv --reference-frames 0", "--reference-frames", 2);
   refused("--frames " + d + "/good.csv", "recording is required", 2);
   // Cut 200 bytes into its 11th packet (a crashed run's): the 10 whole frames kept beside.

@@ -132,7 +132,7 @@ TEST(ExportJob, RefusesWhatIsNotARecordingWritingNothing) {
   job.recording_path = record_ramp(dir + "/r.emitrec", sensor, 2);
   job.frames_path.clear();
   EXPECT_EQ(test::error_of([&] { run_export_job(job); }),
-            "nothing to export: give --frames, --reference, --contacts or --mcap");
+            "nothing to export: give --frames, --reference, --contacts, --tracks or --mcap");
   job.reference_path = dir + "/ref.csv";  // 2 frames, fewer than the reference's 10
   EXPECT_EQ(test::error_of([&] { run_export_job(job); }),
             dir + "/r.emitrec: 2 frames, fewer than the reference's 10 (--reference-frames)");

@@ -16,7 +16,7 @@
 ///   whole recording and left out), tracked on the board's clock, one JSON line per frame
 ///   (io/contacts_jsonl.hpp): "frame" is the frame's index in the recording (its line in the
 ///   frames CSV), "board_time_s" the board's time. No "host_time_s": a recording does not hold
-///   when each frame reached the host.
+///   when each frame reached the host. The same contacts as tracks CSV (io/tracks_csv.hpp).
 /// - mcap: the same frames, contacts and pressure images as an MCAP file (io/tactile_mcap.hpp),
 ///   stamped with the recording's start (its header) plus the board's time since its first frame.
 ///
@@ -41,6 +41,7 @@ struct ExportJob {
   std::string reference_path;  ///< the first reference_frames frames as CSV; empty: none
   int reference_frames = 10;   ///< the reference's frames, from the recording's start (as `emit live` captures)
   std::string contacts_path;   ///< contacts as JSON Lines; "-": standard output; empty: none
+  std::string tracks_path;     ///< the tracked contacts as CSV (io/tracks_csv.hpp), time the board's; empty: none
   std::string mcap_path;       ///< frames, contacts and pressure images as MCAP; empty: none
   std::string sensor_path;     ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated (contacts and mcap only)
@@ -49,9 +50,9 @@ struct ExportJob {
   double contact_radius_mm = 0;  ///< a declared indenter (FrameOptions::contact_radius_mm); 0: none
   TrackerOptions tracking;       ///< the contacts' ids, phases and velocities (frame/contact_tracker.hpp)
 
-  bool reconstructs() const { return !contacts_path.empty() || !mcap_path.empty(); }
+  bool reconstructs() const { return !contacts_path.empty() || !tracks_path.empty() || !mcap_path.empty(); }
   /// \throw InvalidInput: no output asked for; reference_frames below 1; --calibration without
-  ///   --contacts or --mcap (nothing would use it); the tracking's options.
+  ///   --contacts, --tracks or --mcap (nothing would use it); the tracking's options.
   void validate() const;
 };
 
