@@ -64,6 +64,16 @@ TEST(Cli, ExportTurnsALiveRecordingIntoFramesContactsAndMcap) {
   EXPECT_EQ(test::read_text(d + "/c.mcap").substr(1, 4), "MCAP");
   for (const std::string name : {"f.csv", "ref.csv", "c.jsonl", "t.csv", "c.mcap"})
     EXPECT_FALSE(fs::exists(d + "/" + name + ".partial")) << name;
+  // README's third line: reconstruct on the exported files finds the same contacts.
+  r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/f.csv --contacts " + d +
+               "/again.jsonl --cache " + d);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream exported(test::read_text(d + "/c.jsonl")), again(test::read_text(d + "/again.jsonl"));
+  for (std::string a, b; std::getline(exported, a) && std::getline(again, b);) {
+    const std::vector<Contact> x = parse_contacts_line(a), y = parse_contacts_line(b);
+    ASSERT_EQ(x.size(), y.size()) << a << "\n" << b;
+    for (std::size_t c = 0; c < x.size(); ++c) EXPECT_EQ(x[c].x_mm, y[c].x_mm) << a << "\n" << b;
+  }
 }
 
 TEST(Cli, ExportRefusesBadInputInOneLine) {
