@@ -108,6 +108,8 @@ TEST(Cli, ExportRefusesBadInputInOneLine) {
           "--calibration " + d + "/good.csv: only --contacts, --tracks and --mcap reconstruct frames");
   refused(d + "/r.emitrec --frames " + d + "/good.csv --reference-frames 0", "--reference-frames", 2);
   refused("--frames " + d + "/good.csv", "recording is required", 2);
+  refused(d + "/r.emitrec --frames " + d + "/good.csv --sensor " + test::source_path("examples/sensors/square120_32.json"),
+          "r.emitrec: recorded with 16 electrodes, but the sensor has 32");
   // Cut 200 bytes into its 11th packet (a crashed run's): the 10 whole frames kept beside.
   fs::copy_file(d + "/r.emitrec", d + "/cut.emitrec");
   fs::resize_file(d + "/cut.emitrec", 32 + 10 * 532 + 200);
