@@ -63,7 +63,8 @@ void add_export_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--contacts", job.contacts_path, "Contacts out (JSON Lines, one object per frame); - for stdout");
   cmd->add_option("--tracks", job.tracks_path,
-                  "Touches out as CSV, one row per touch per frame (time_s on the board's clock, id, phase, x_mm, ...)");
+                  "Touches out as CSV, one row per touch per frame (time_s on the board's clock, id, phase, x_mm, "
+                  "...)");
   cmd->add_option("--mcap", job.mcap_path,
                   "Frames, contacts and pressure images out as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--sensor", job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
@@ -74,9 +75,9 @@ void add_export_command(CLI::App& app) {
                   "fit (model-based contact fitting), paper (Tikhonov, Q = I), noser, or laplacian")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
-  cmd->add_option(
-         "--contact-radius-mm", job.contact_radius_mm,
-         "fit and shapes: the indenter's radius, declared: every contact's area held at pi R^2 (as reconstruct)")
+  cmd->add_option("--contact-radius-mm", job.contact_radius_mm,
+                  "fit and shapes: the indenter's radius, declared: every contact's area held at pi R^2 (as "
+                  "reconstruct)")
       ->check(checked_by(&FrameOptions::contact_radius_mm));
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->add_flag("--no-cache", a->no_cache, "Neither read nor write the operator cache");

@@ -54,10 +54,11 @@ RecordingSurvey survey_recording(const ExportJob& job, const Sensor& sensor) {
   SourceFrame frame;
   std::uint64_t last_sequence = 0;
   try {
-    while (!source.finished()) {  // a whole recording: finished as its last frame is handed out
+    while (!source.finished()) {                         // a whole recording: finished as its last frame is handed out
       source.next(frame, std::chrono::milliseconds(0));  // as fast as possible: never waits
       if (job.reconstructs()) {
-        check_readings_in_range(frame.volts, sensor.adc, job.recording_path + ": frame " + std::to_string(survey.frames));
+        check_readings_in_range(frame.volts, sensor.adc,
+                                job.recording_path + ": frame " + std::to_string(survey.frames));
         health.add(frame.volts);
       }
       if (survey.reference.size() < static_cast<std::size_t>(job.reference_frames))
@@ -93,13 +94,15 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
   job.validate();
   // Every output opened before any input is read: one that cannot be opened touches none. Each
   // grows as PATH.partial, renamed when the whole recording is in it (the file's comment).
-  auto outputs = open_outputs(
-      {{"the recording", job.recording_path}, {"--sensor", job.sensor_path}, {"--calibration", job.calibration_path}},
-      {OutputRequest{{"--frames", job.frames_path}, {.partial = true}},
-       OutputRequest{{"--reference", job.reference_path}, {.partial = true}},
-       OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
-       OutputRequest{{"--tracks", job.tracks_path}, {.partial = true}},
-       OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
+  auto outputs =
+      open_outputs({{"the recording", job.recording_path},
+                    {"--sensor", job.sensor_path},
+                    {"--calibration", job.calibration_path}},
+                   {OutputRequest{{"--frames", job.frames_path}, {.partial = true}},
+                    OutputRequest{{"--reference", job.reference_path}, {.partial = true}},
+                    OutputRequest{{"--contacts", job.contacts_path}, {.partial = true, .standard_output = true}},
+                    OutputRequest{{"--tracks", job.tracks_path}, {.partial = true}},
+                    OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
   auto& [frames_file, reference_file, contacts_file, tracks_file, mcap_file] = outputs;
   const auto start = std::chrono::steady_clock::now();
   FrameOptions frame_options;
@@ -107,7 +110,8 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
   if (job.reconstructs()) check_frame_options(job.method, frame_options);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   if (job.reconstructs()) require_emit_protocol(sensor, job.sensor_path);
-  const std::optional<Calibration> calibration = detail::load_job_calibration(job.calibration_path, job.method, progress);
+  const std::optional<Calibration> calibration =
+      detail::load_job_calibration(job.calibration_path, job.method, progress);
 
   // The recording read through once, before anything is built or written.
   const RecordingSurvey survey = survey_recording(job, sensor);
@@ -163,12 +167,14 @@ ExportReport run_export_job(const ExportJob& job, const Progress& progress) {
         write_tracks_rows(tracks_file.stream(), frame.board_time_s, f, contacts, &tracker->ended());
       if (mcap) {
         const double since_start_s = std::max(frame.board_time_s - survey.first_board_s, 0.0);
-        mcap->write(f, start_ns + static_cast<std::uint64_t>(std::llround(1e9 * since_start_s)), frame_view(frame.volts),
-                    contacts, reconstructor->pressure(), frame.board_time_s, &tracker->ended());
+        mcap->write(f, start_ns + static_cast<std::uint64_t>(std::llround(1e9 * since_start_s)),
+                    frame_view(frame.volts), contacts, reconstructor->pressure(), frame.board_time_s,
+                    &tracker->ended());
       }
     }
     progress.step("exporting frame", static_cast<long>(f + 1), static_cast<long>(survey.frames));
-    for (OutputFile* output : {&frames_file, &contacts_file, &tracks_file})  // a full disk stops the export here, not at its end
+    for (OutputFile* output :
+         {&frames_file, &contacts_file, &tracks_file})  // a full disk stops the export here, not at its end
       if (output->given()) output->check();
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -88,7 +88,8 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   check_frame_options(job.method, declared);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
-  const std::optional<Calibration> calibration = detail::load_job_calibration(job.calibration_path, job.method, progress);
+  const std::optional<Calibration> calibration =
+      detail::load_job_calibration(job.calibration_path, job.method, progress);
   prepare_output_folder({"--images", job.images_dir});
 
   // The frames before anything is built or written: a bad value stops the run with nothing lost.

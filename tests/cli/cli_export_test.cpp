@@ -100,7 +100,8 @@ TEST(Cli, ExportRefusesBadInputInOneLine) {
     EXPECT_NE(r.err.find(message), std::string::npos) << arguments << "\n" << r.err;
     EXPECT_EQ(test::read_text(d + "/good.csv"), "good\n") << arguments;
   };
-  refused(d + "/missing.emitrec --frames " + d + "/good.csv", "emit: " + d + "/missing.emitrec: cannot open the recording");
+  refused(d + "/missing.emitrec --frames " + d + "/good.csv",
+          "emit: " + d + "/missing.emitrec: cannot open the recording");
   refused(d + "/good.csv --frames " + d + "/x.csv", d + "/good.csv: not an emit recording");
   refused(d + "/r.emitrec", "emit: nothing to export: give --frames, --reference, --contacts, --tracks or --mcap");
   refused(d + "/r.emitrec --frames " + d + "/r.emitrec", "is the same file as the recording");
@@ -108,13 +109,15 @@ TEST(Cli, ExportRefusesBadInputInOneLine) {
           "--calibration " + d + "/good.csv: only --contacts, --tracks and --mcap reconstruct frames");
   refused(d + "/r.emitrec --frames " + d + "/good.csv --reference-frames 0", "--reference-frames", 2);
   refused("--frames " + d + "/good.csv", "recording is required", 2);
-  refused(d + "/r.emitrec --frames " + d + "/good.csv --sensor " + test::source_path("examples/sensors/square120_32.json"),
+  refused(d + "/r.emitrec --frames " + d + "/good.csv --sensor " +
+              test::source_path("examples/sensors/square120_32.json"),
           "r.emitrec: recorded with 16 electrodes, but the sensor has 32");
   // Cut 200 bytes into its 11th packet (a crashed run's): the 10 whole frames kept beside.
   fs::copy_file(d + "/r.emitrec", d + "/cut.emitrec");
   fs::resize_file(d + "/cut.emitrec", 32 + 10 * 532 + 200);
   refused(d + "/cut.emitrec --frames " + d + "/good.csv",
-          "cut.emitrec: truncated: frame 10 (byte 5352) has 200 of its 532 bytes; the 10 frames before it exported to " +
+          "cut.emitrec: truncated: frame 10 (byte 5352) has 200 of its 532 bytes; the 10 frames before it exported "
+          "to " +
               d + "/good.csv.partial");
   EXPECT_EQ(read_frames_csv(d + "/good.csv.partial", 16).size(), 10u);
   fs::remove(d + "/good.csv.partial");
@@ -126,7 +129,8 @@ TEST(Cli, ExportRefusesBadInputInOneLine) {
     bad.put('\x7f');
   }
   refused(d + "/bad.emitrec --frames " + d + "/good.csv",
-          "bad.emitrec: frame 5 (byte 2692) is not a valid packet (sync, header or CRC); the 5 frames before it exported");
+          "bad.emitrec: frame 5 (byte 2692) is not a valid packet (sync, header or CRC); the 5 frames before it "
+          "exported");
   EXPECT_EQ(read_frames_csv(d + "/good.csv.partial", 16).size(), 5u);
   EXPECT_FALSE(fs::exists(d + "/x.csv"));
   EXPECT_FALSE(fs::exists(d + "/x.csv.partial"));

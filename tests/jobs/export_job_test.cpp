@@ -83,7 +83,8 @@ TEST(ExportJob, FramesComeBackAsTheRecordingHoldsThem) {
   EXPECT_NEAR(report.board_seconds, 7 * 0.020, 1e-9);  // 8 frames 20 ms apart, µs stamps
   EXPECT_EQ(report.frames_missed, 0u);
   const std::vector<Frame> recorded = replayed(job.recording_path, sensor);
-  const std::vector<Frame> frames = read_frames_csv(job.frames_path, 16), reference = read_frames_csv(dir + "/ref.csv", 16);
+  const std::vector<Frame> frames = read_frames_csv(job.frames_path, 16),
+                           reference = read_frames_csv(dir + "/ref.csv", 16);
   ASSERT_EQ(frames.size(), recorded.size());
   ASSERT_EQ(reference.size(), 3u);
   constexpr double printed_V = 5e-8;  // half of %.7f's last digit
@@ -184,15 +185,14 @@ TEST(ExportJob, ContactsAreTheReconstructJobsOnTheExportedFilesWithBoardTimes) {
     const ContactsLine& line = exported[f];
     EXPECT_EQ(line.frame, static_cast<long>(f));
     EXPECT_NEAR(line.times.board_s, 3.0 + 0.02 * static_cast<double>(f), 1e-9);  // the packets' µs stamps
-    EXPECT_TRUE(std::isnan(line.times.host_unix_s));  // a recording does not hold it
+    EXPECT_TRUE(std::isnan(line.times.host_unix_s));                             // a recording does not hold it
     if (f < 10) {
       EXPECT_TRUE(line.contacts.empty()) << "untouched frame " << f;
       continue;
     }
     const Press& press = presses[(f - 10) / 2];
     ASSERT_EQ(line.contacts.size(), 1u) << "frame " << f;
-    EXPECT_LT(std::hypot(line.contacts[0].x_mm - press.x_mm, line.contacts[0].y_mm - press.y_mm), 0.5)
-        << "frame " << f;
+    EXPECT_LT(std::hypot(line.contacts[0].x_mm - press.x_mm, line.contacts[0].y_mm - press.y_mm), 0.5) << "frame " << f;
   }
 
   ReconstructJob again;

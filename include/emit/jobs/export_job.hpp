@@ -36,14 +36,14 @@
 namespace emit {
 
 struct ExportJob {
-  std::string recording_path;  ///< the recording (required)
-  std::string frames_path;     ///< every frame as CSV; empty: none
-  std::string reference_path;  ///< the first reference_frames frames as CSV; empty: none
-  int reference_frames = 10;   ///< the reference's frames, from the recording's start (as `emit live` captures)
-  std::string contacts_path;   ///< contacts as JSON Lines; "-": standard output; empty: none
-  std::string tracks_path;     ///< the tracked contacts as CSV (io/tracks_csv.hpp), time the board's; empty: none
-  std::string mcap_path;       ///< frames, contacts and pressure images as MCAP; empty: none
-  std::string sensor_path;     ///< empty: the built-in default sensor
+  std::string recording_path;    ///< the recording (required)
+  std::string frames_path;       ///< every frame as CSV; empty: none
+  std::string reference_path;    ///< the first reference_frames frames as CSV; empty: none
+  int reference_frames = 10;     ///< the reference's frames, from the recording's start (as `emit live` captures)
+  std::string contacts_path;     ///< contacts as JSON Lines; "-": standard output; empty: none
+  std::string tracks_path;       ///< the tracked contacts as CSV (io/tracks_csv.hpp), time the board's; empty: none
+  std::string mcap_path;         ///< frames, contacts and pressure images as MCAP; empty: none
+  std::string sensor_path;       ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated (contacts and mcap only)
   std::string cache_dir;         ///< the operator cache; empty: none
   Method method = Method::fit;
@@ -60,7 +60,8 @@ struct ExportReport {
   std::uint64_t frames = 0;            ///< exported (every frame of the recording)
   std::uint64_t reference_frames = 0;  ///< in the reference file, and the contacts' reference
   double board_seconds = 0;            ///< from the first frame to the last, on the board's clock
-  std::uint64_t frames_missed = 0;     ///< gaps in the recording's sequence numbers (frames the board sent but the run lost)
+  std::uint64_t frames_missed =
+      0;  ///< gaps in the recording's sequence numbers (frames the board sent but the run lost)
   bool calibrated = false;
   long triangles = 0;                ///< the reconstruction mesh's (0 without contacts or mcap)
   std::vector<int> dead_electrodes;  ///< left out of the reconstruction (each also told to progress.warning)
