@@ -130,6 +130,13 @@ TEST(ExportJob, RefusesWhatIsNotARecordingWritingNothing) {
   job.recording_path = dir + "/frames.csv";
   EXPECT_NE(test::error_of([&] { run_export_job(job); }).find(dir + "/frames.csv: not an emit recording"),
             std::string::npos);
+  job.recording_path = record_ramp(dir + "/empty.emitrec", sensor, 0);  // a run stopped before its first frame
+  EXPECT_EQ(test::error_of([&] { run_export_job(job); }),
+            dir + "/empty.emitrec: no frames to export (an empty recording)");
+  fs::resize_file(job.recording_path, 32 + 300);  // only a cut packet
+  EXPECT_EQ(test::error_of([&] { run_export_job(job); }),
+            dir + "/empty.emitrec: no frames to export (" + dir +
+                "/empty.emitrec: truncated: frame 0 (byte 32) has 300 of its 532 bytes)");
   job.recording_path = record_ramp(dir + "/r.emitrec", sensor, 2);
   job.frames_path.clear();
   EXPECT_EQ(test::error_of([&] { run_export_job(job); }),
