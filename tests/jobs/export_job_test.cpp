@@ -96,6 +96,17 @@ TEST(ExportJob, FramesComeBackAsTheRecordingHoldsThem) {
   }
   EXPECT_GT(recorded[7].maxCoeff(), 3.0);  // the ramp reaches the top of the 3.3 V range
   EXPECT_FALSE(fs::exists(dir + "/f.csv.partial"));
+
+  // Frames the run lost (numbers 3 and 4 missing) are counted, as `emit live` counts them; a board
+  // restart (a number behind the last) is no gap.
+  {
+    Recorder recorder(dir + "/gaps.emitrec", sensor);
+    for (const std::uint32_t k : {0u, 1u, 2u, 5u, 6u, 0u, 1u}) recorder.record(packet_of(sensor, recorded[0], k));
+    recorder.close();
+  }
+  job.recording_path = dir + "/gaps.emitrec";
+  job.reference_path.clear();
+  EXPECT_EQ(run_export_job(job).frames_missed, 2u);
 }
 
 // A crashed run's recording, cut 100 bytes into its 9th packet: its 8 whole frames exported to
