@@ -41,6 +41,7 @@ void add_eval_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_live_command(CLI::App& app);
+void add_export_command(CLI::App& app);
 
 /// --track-gate-mm, --track-coast-frames and --filter: the contacts' tracking (frame/contact_tracker.hpp),
 /// for `emit live` and `emit reconstruct`.

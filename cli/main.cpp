@@ -40,6 +40,7 @@ int run(int argc, char** argv) {
   emit::cli::add_eval_command(app);
   emit::cli::add_bench_command(app);
   emit::cli::add_live_command(app);
+  emit::cli::add_export_command(app);
   emit::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);

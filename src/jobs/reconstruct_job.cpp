@@ -4,14 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <variant>
 
 #include "emit/acquire/electrode_health.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/frame/batch.hpp"
-#include "emit/io/calibration_json.hpp"
 #include "emit/io/contacts_jsonl.hpp"
 #include "emit/io/frames_csv.hpp"
 #include "emit/io/ros2_messages.hpp"
@@ -20,6 +18,7 @@
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"
 #include "emit/sensor/sensor_json.hpp"
+#include "reconstruct_inputs.hpp"
 #include "reference_frames.hpp"
 
 namespace emit {
@@ -89,15 +88,8 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   check_frame_options(job.method, declared);
   const Sensor sensor = load_sheet_sensor(job.sensor_path);
   require_emit_protocol(sensor, job.sensor_path);
-  std::optional<Calibration> calibration;
-  if (!job.calibration_path.empty()) {
-    calibration = load_calibration(job.calibration_path);
-    check_calibration_for_method(*calibration, job.method, job.calibration_path);
-    if (const auto* linear = std::get_if<LinearCalibration>(&*calibration); linear && !linear->force_law)
-      progress.warn(job.calibration_path +
-                    ": no force_law (written before emit calibrated forces): each contact's force and area are eq. "
-                    "8's over its 50 % region, the image's, several times the press's; run emit calibrate again");
-  }
+  const std::optional<Calibration> calibration =
+      detail::load_job_calibration(job.calibration_path, job.method, progress);
   prepare_output_folder({"--images", job.images_dir});
 
   // The frames before anything is built or written: a bad value stops the run with nothing lost.
@@ -106,11 +98,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   const FramesSurvey survey = survey_frames(job.frames_path, sensor, N);
   ReconstructReport report;
   PipelineOptions options{job.method, job.lambda2, job.cache_dir, {}};
-  for (const DeadElectrode& d : survey.dead) {
-    progress.warn("electrode " + std::to_string(d.electrode) + " " + d.reason + ": leaving out its " +
-                  std::to_string(2 * (N - 1)) + " measurements");
-    options.excluded.push_back(d.electrode);
-  }
+  options.excluded = detail::leave_out_dead(survey.dead, N, progress);
   report.dead_electrodes = options.excluded;
 
   const auto start = std::chrono::steady_clock::now();

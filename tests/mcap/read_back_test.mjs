@@ -224,6 +224,33 @@ const pressed = liveContacts.filter((m) => Number(m.frame) >= 15);
 check(pressed.length === 15 && pressed.every((m) => m.contacts.length >= 1 &&
       Math.hypot(m.contacts[0].position.x - 0.03, m.contacts[0].position.y - 0.03) < 8.05e-3), "live press found at (30, 30) mm");
 
+// Export: a live run's recording (10 reference frames, then 20) exported as MCAP: every frame of the
+// recording on each topic, numbered by its index in it, the board's times going forward, stamped
+// with the recording's start plus the board's time (so within this test's run), the press found.
+run("live", "--source", "sim:fixed:30,30,10", "--fps", "0", "--frames", "20", "--method", "paper", "--record",
+    at("live.emitrec"), ...cache);
+run("export", at("live.emitrec"), "--method", "paper", "--mcap", at("export.mcap"), "--contacts", at("export.jsonl"),
+    ...cache);
+const exported = readRecords(new Uint8Array(readFileSync(at("export.mcap"))));
+check(exported.complete, "the exported recording reads to its end");
+const exportTopics = decode(exported.records).topics;
+const exportContacts = exportTopics["/emit/contacts"];
+check(exportContacts.length === 30 && exportTopics["/emit/frames"].length === 30 &&
+      exportTopics["/emit/pressure"].length === 30, `30 exported frames on each topic (${exportContacts.length})`);
+check(exportContacts.every((m, i) => Number(m.frame) === i), "exported frames numbered 0..29 (the recording's)");
+check(exportContacts.every((m, i) => m.logTime === stampNs(m) && (i === 0 ||
+      (m.board_time > exportContacts[i - 1].board_time && stampNs(m) >= stampNs(exportContacts[i - 1])))),
+      "exported board times and stamps go forward");
+check(exportContacts.every((m) => Math.abs(Number(stampNs(m) / 1000000n) - Date.now()) < 600e3),
+      "exported stamps: the recording's start and the board's time, within this run");
+const exportLines = readFileSync(at("export.jsonl"), "utf8").trim().split("\n").map((line) => JSON.parse(line));
+check(exportLines.length === 30 && exportLines.every((line, i) => close(line.board_time_s, exportContacts[i].board_time, 1e-5)),
+      "the exported contacts' board times are the MCAP's");
+const exportPressed = exportContacts.filter((m) => Number(m.frame) >= 15);
+check(exportPressed.length === 15 && exportPressed.every((m) => m.contacts.length >= 1 &&
+      Math.hypot(m.contacts[0].position.x - 0.03, m.contacts[0].position.y - 0.03) < 8.05e-3),
+      "exported press found at (30, 30) mm");
+
 console.log(`mcap: ${whole.records.length} records, ${full.length} messages read back and compared; ${cuts} cuts ` +
             `reported incomplete; live ${liveContacts.length} frames; ${failures} failures`);
 process.exit(failures === 0 ? 0 : 1);
