@@ -194,6 +194,11 @@ void add_eval_command(CLI::App& app) {
                                  "60 mm sheet unless --sheet says; --methods, --lambda2 and the sweep do not apply")
                      ->expected(0, 1)
                      ->type_name("[SEED]");
+  cmd->add_option("--unplaced", a->realistic_options.unplaced_known_forces,
+                  "With --realistic: calibrate as in the field, every calibration press's place unknown and only "
+                  "the first K of known force (the targets are then 0.5 mm mean, 1.0 mm p95, 0.02 N/mm2)")
+      ->type_name("K")
+      ->needs(a->realistic);
   cmd->add_flag("--outlines", a->outlines,
                 "Pressed regions of flat punches of eight outlines (bars, an ellipse, a ring, a palm, an L, two "
                 "bars, a stylus) per method, each calibrated on 40 disc presses: Dice, force, centroid, "

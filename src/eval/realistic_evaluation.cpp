@@ -2,6 +2,7 @@
 
 #include <array>
 #include <chrono>
+#include <limits>
 #include <cstdio>
 #include <optional>
 #include <variant>
@@ -41,6 +42,9 @@ void RealisticEvalOptions::validate() const {
   at_least(counts.presses_per_indenter, 1, "presses_per_indenter");
   at_least(counts.multi_press_frames, 1, "multi_press_frames");
   at_least(counts.calibration_iterations, 0, "calibration_iterations");
+  if (unplaced_known_forces != 0 && (unplaced_known_forces < 2 || unplaced_known_forces > counts.calibration_presses))
+    throw InvalidInput("realistic evaluation: unplaced_known_forces must be 0 or 2 to calibration_presses (" +
+                       std::to_string(counts.calibration_presses) + "), got " + std::to_string(unplaced_known_forces));
   sheet.validate();
 }
 
@@ -205,6 +209,7 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
   RealisticEvaluation result;
   result.sheet_description = sheet.description;
   result.counts = options.counts;
+  result.unplaced_known_forces = options.unplaced_known_forces;
   result.radius_mm = eval_case.radius_mm;
   result.separation_mm = eval_case.radius_mm / round_radius_mm * fingers_separation_mm;
   const RealisticRuns runs = simulate_round(eval_case, sheet, options, result.indenters, progress);
@@ -214,9 +219,16 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
   PressCalibrationOptions calibration_options;  // emit calibrate's defaults
   if (options.counts.calibration_iterations > 0)
     calibration_options.sensor.max_iterations = options.counts.calibration_iterations;
-  const PressCalibrationResult calibration =
-      calibrate_from_presses(eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames,
-                             runs.calibration, progress.stage);
+  PressSequence given = runs.calibration;  // what the user knows of the calibration presses
+  if (options.unplaced_known_forces > 0)
+    for (std::size_t f = 0; f < given.size(); ++f)
+      for (Press& press : given[f]) {
+        press.x_mm = press.y_mm = std::numeric_limits<double>::quiet_NaN();
+        if (f >= static_cast<std::size_t>(options.unplaced_known_forces))
+          press.force_N = std::numeric_limits<double>::quiet_NaN();
+      }
+  const PressCalibrationResult calibration = calibrate_from_presses(
+      eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames, given, progress.stage);
   result.calibration_s = seconds_since(calibration_start);
   if (calibration.sheet) result.calibration_warnings = calibration.sheet->warnings;
 

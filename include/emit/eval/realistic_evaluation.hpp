@@ -54,6 +54,10 @@ struct RealisticEvalOptions {
   /// several fingers are drawn from seed + 3 on, with one noise (seed + 3).
   std::uint64_t seed = 11;
   RealisticEvalCounts counts;
+  /// > 0: calibrate as in the field (`emit eval --realistic --unplaced K`): every calibration
+  /// press's place forgotten and only the first K presses' forces kept (a few known weights put
+  /// down anywhere); the targets are then UnplacedTargets'. 0: every place and force known.
+  int unplaced_known_forces = 0;
   void validate() const;  ///< \throw InvalidInput naming the count or the sheet's option
 };
 
@@ -69,6 +73,13 @@ struct RealisticTargets {
   static constexpr double calibration_s = 60;
 };
 
+/// The field calibration's targets (issue "calibrate a sheet where it is used"): presses at unknown
+/// places, a few of known force.
+struct UnplacedTargets {
+  static constexpr double position_mean_mm = 0.5, position_p95_mm = 1.0;
+  static constexpr double pressure_error_N_per_mm2 = 0.02;
+};
+
 /// One other indenter, `presses_per_indenter` presses of it.
 struct IndenterScore {
   double radius_mm = 0;
@@ -80,6 +91,7 @@ struct RealisticEvaluation {
   std::string sheet_description;  ///< what the sheet drew (RealisticSheet::description)
   long triangles = 0;             ///< the reconstruction mesh's
   RealisticEvalCounts counts;
+  int unplaced_known_forces = 0;         ///< RealisticEvalOptions's: > 0, calibrated as in the field
   double radius_mm = 5;                  ///< the calibration's and the test presses' indenter (flat)
   double match_mm = 2;                   ///< a press of several is found when a contact of its own is this close
   double separation_mm = 12;             ///< the least distance between two presses of a frame of several
