@@ -49,6 +49,10 @@ TEST(RealisticEvaluation, BadOptionsAreNamed) {
   options.counts.calibration_iterations = -1;
   EXPECT_EQ(message_of(options), "realistic evaluation: calibration_iterations must be 0 or more, got -1");
   options = {};
+  options.unplaced_known_forces = 1;  // the contact law needs two forces
+  EXPECT_EQ(message_of(options),
+            "realistic evaluation: unplaced_known_forces must be 0 or 2 to calibration_presses (40), got 1");
+  options = {};
   options.sheet.field = 1.5;
   EXPECT_NE(message_of(options), "");  // the realistic sheet's own check
 }
