@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "stop_on_signals.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_file.hpp"
 #include "emit/core/threads.hpp"
@@ -43,6 +44,8 @@ int run(int argc, char** argv) {
   emit::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);
+  } catch (const emit::cli::ExitCode& e) {
+    return e.code;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
