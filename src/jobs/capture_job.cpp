@@ -227,7 +227,9 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
     const auto strongest = std::max_element(contacts.begin(), contacts.end(),
                                             [](const Contact& a, const Contact& b) { return a.force_N < b.force_N; });
     std::string where = "not placed (no contact fitted)";
+    report.placed_mm.emplace_back(nan, nan);
     if (strongest != contacts.end()) {
+      report.placed_mm.back() = {strongest->x_mm, strongest->y_mm};
       const Vector2 chart = press_chart_mm(sensor.shape, Press{strongest->x_mm, strongest->y_mm, 1, 1,
                                                                PressProfile::flat, strongest->z_mm});
       const bool fresh = coverage.mark(chart);
@@ -254,6 +256,7 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
   // 4. The calibration.
   line("captured " + std::to_string(report.finger_presses) + " finger presses and " + std::to_string(report.weights) +
        " weights in " + report.capture_dir + " (to calibrate again offline: " + report.offline_command + ")");
+  if (!job.run_calibration) return report;
   line("4. Calibrating");
   CalibrateJob calibrate = job.calibrate;
   calibrate.reference_path = report.reference_path;

@@ -41,6 +41,8 @@ struct CaptureJob {
   std::vector<double> weights_N = {2.0, 5.0};  ///< step 3, in order (twin/calibration_person.hpp's defaults)
   double weight_radius_mm = 5;                 ///< each weight's flat foot
   PressSegmenterOptions segmenter;
+  /// After the capture, calibrate (step 4); false: the capture alone (its files, for later).
+  bool run_calibration = true;
   /// With no frame for this long, the source is taken as gone [s].
   double source_timeout_s = 10;
   void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
@@ -58,6 +60,8 @@ struct CaptureReport {
   double measured_noise_V = 0;  ///< a reading's, from step 1's frames
   double noise_V = 0;           ///< the segmenter's: the larger of that and the ADC model's
   int finger_presses = 0, weights = 0;
+  /// Each finger press's place as the nominal fit saw it (the strongest contact; NaN: none fitted)
+  std::vector<Vector2> placed_mm;
   int cells = 0, cells_covered = 0;     ///< the coverage map's cells on the sheet, and covered
   std::string coverage_map;             ///< rows top (high y) first: '#' covered, '.' not, ' ' off the sheet
   bool stopped = false;                 ///< the stop flag ended it (Ctrl-C)
