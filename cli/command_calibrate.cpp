@@ -1,8 +1,8 @@
 // emit calibrate: a method's calibration from presses of known place and force (eq. 8's a1, a2,
 // a3 for the linear methods; the sheet and the contact law as contact fitting sees them), and
 // eq. 2's alpha, gamma from resistance-pressure pairs.
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 #include <optional>
 
 #include "commands.hpp"
@@ -65,8 +65,9 @@ void print_presses(const CalibrateJob& job, const PressCalibrationResult& r) {
 /// terminal; Ctrl-C keeps what was captured (exit 130), a source that ends early is an error (exit 1).
 void run_capture(CalibrateArgs& args) {
   if (!args.job.reference_path.empty() || !args.job.frames_path.empty() || !args.job.truth_path.empty())
-    throw InvalidInput("--capture records the reference, frames and presses itself: give none of --reference, "
-                       "--frames, --truth");
+    throw InvalidInput(
+        "--capture records the reference, frames and presses itself: give none of --reference, "
+        "--frames, --truth");
   CaptureJob& capture = args.capture;
   capture.calibrate = args.job;
   const bool terminal = isatty(fileno(stderr)) != 0;

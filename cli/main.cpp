@@ -7,11 +7,11 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
-#include "stop_on_signals.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/output_file.hpp"
 #include "emit/core/threads.hpp"
 #include "emit/core/version.hpp"
+#include "stop_on_signals.hpp"
 
 namespace {
 

@@ -220,7 +220,8 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
   line(format("2. Press anywhere, one finger at a time; cover the sheet (%.0f presses, or every one of the %.0f cells)",
               job.presses, report.cells));
   while (report.finger_presses < job.presses && report.cells_covered < report.cells) {
-    if (!capture_press(Press{nan, nan, job.finger_radius_mm, nan}, "press " + std::to_string(report.finger_presses + 1)))
+    if (!capture_press(Press{nan, nan, job.finger_radius_mm, nan},
+                       "press " + std::to_string(report.finger_presses + 1)))
       return finish_early("at press " + std::to_string(report.finger_presses + 1));
     ++report.finger_presses;
     const std::vector<Contact>& contacts = placer.process(frames.back());
@@ -238,8 +239,8 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
       if (fresh) report.coverage_map = coverage.text();
       if (fresh) line(report.coverage_map.substr(0, report.coverage_map.size() - 1));
     }
-    line("press " + std::to_string(report.finger_presses) + " of " + std::to_string(job.presses) + ": " + where +
-         "; " + std::to_string(report.cells_covered) + " of " + std::to_string(report.cells) + " cells covered");
+    line("press " + std::to_string(report.finger_presses) + " of " + std::to_string(job.presses) + ": " + where + "; " +
+         std::to_string(report.cells_covered) + " of " + std::to_string(report.cells) + " cells covered");
   }
   report.coverage_map = coverage.text();
 

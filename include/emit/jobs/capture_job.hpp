@@ -33,11 +33,11 @@ struct CaptureJob {
   /// The calibration to run after: sensor_path, out_path and options are used; its reference,
   /// frames and truth paths are the capture's files.
   CalibrateJob calibrate;
-  std::string capture_dir;  ///< empty: beside calibrate.out_path, "<out without .json>_capture"
-  int quiet_frames = 25;    ///< step 1's frames (0.5 s at 50 frames/s)
-  int presses = 60;         ///< step 2 ends after this many finger presses …
-  int coverage_cells = 6;   ///< … or when every cell of this many per side (on the sheet) has one
-  double finger_radius_mm = 5;  ///< written for a finger press (its size is not measured)
+  std::string capture_dir;                     ///< empty: beside calibrate.out_path, "<out without .json>_capture"
+  int quiet_frames = 25;                       ///< step 1's frames (0.5 s at 50 frames/s)
+  int presses = 60;                            ///< step 2 ends after this many finger presses …
+  int coverage_cells = 6;                      ///< … or when every cell of this many per side (on the sheet) has one
+  double finger_radius_mm = 5;                 ///< written for a finger press (its size is not measured)
   std::vector<double> weights_N = {2.0, 5.0};  ///< step 3, in order (twin/calibration_person.hpp's defaults)
   double weight_radius_mm = 5;                 ///< each weight's flat foot
   PressSegmenterOptions segmenter;
@@ -62,11 +62,11 @@ struct CaptureReport {
   int finger_presses = 0, weights = 0;
   /// Each finger press's place as the nominal fit saw it (the strongest contact; NaN: none fitted)
   std::vector<Vector2> placed_mm;
-  int cells = 0, cells_covered = 0;     ///< the coverage map's cells on the sheet, and covered
-  std::string coverage_map;             ///< rows top (high y) first: '#' covered, '.' not, ' ' off the sheet
-  bool stopped = false;                 ///< the stop flag ended it (Ctrl-C)
-  std::string ended;                    ///< not empty: the source ended or failed early, why
-  std::string offline_command;          ///< how to run the calibration again from the files
+  int cells = 0, cells_covered = 0;            ///< the coverage map's cells on the sheet, and covered
+  std::string coverage_map;                    ///< rows top (high y) first: '#' covered, '.' not, ' ' off the sheet
+  bool stopped = false;                        ///< the stop flag ended it (Ctrl-C)
+  std::string ended;                           ///< not empty: the source ended or failed early, why
+  std::string offline_command;                 ///< how to run the calibration again from the files
   std::optional<CalibrateReport> calibration;  ///< when the capture completed
 };
 
