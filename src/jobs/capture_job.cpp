@@ -141,8 +141,12 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
   SourceFrame frame;
   std::uint64_t frames_read = 0;
   const auto next_frame = [&]() -> bool {
-    auto last = std::chrono::steady_clock::now();
+    const auto last = std::chrono::steady_clock::now();
     while (!stop) {
+      if (source->finished()) {
+        report.ended = "the source ended after " + std::to_string(frames_read) + " frames";
+        return false;
+      }
       try {
         if (source->next(frame, std::chrono::milliseconds(100))) {
           ++frames_read;
@@ -150,10 +154,6 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
         }
       } catch (const Error& e) {
         report.ended = e.what();
-        return false;
-      }
-      if (source->finished()) {
-        report.ended = "the source ended after " + std::to_string(frames_read) + " frames";
         return false;
       }
       if (std::chrono::steady_clock::now() - last > std::chrono::duration<double>(job.source_timeout_s)) {
@@ -168,6 +168,10 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
     const std::string why = report.stopped ? "stopped" : report.ended;
     if (report.noise_V == 0) {
       line(why + " " + during + ": nothing captured yet");
+      return report;
+    }
+    if (report.finger_presses + report.weights == 0) {
+      line(why + " " + during + ": kept the reference, " + report.reference_path + "; no press yet");
       return report;
     }
     line(why + " " + during + ": kept the reference and " + std::to_string(report.finger_presses) +

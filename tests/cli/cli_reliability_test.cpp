@@ -394,6 +394,19 @@ TEST(CliReliability, CaptureStoppedByCtrlCKeepsWhatItCaptured) {
   const std::string text = test::read_text(presses);
   EXPECT_EQ(text.rfind("frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,,,5.0000,,\n", 0), 0u) << text;
   EXPECT_FALSE(fs::exists(dir + "/calibration.json"));
+  // A recording that ends before the person is done: what was kept, then the end as an error.
+  ASSERT_EQ(run_emit("live --source sim:calibration:1 --fps 0 --frames 110 --contacts /dev/null --record " + dir +
+                     "/short.emitrec")
+                .exit_code,
+            0);
+  const auto ended = run_emit("calibrate --capture file:" + dir + "/short.emitrec --fps 0 --out " + dir + "/e.json");
+  EXPECT_EQ(ended.exit_code, 1);
+  EXPECT_NE(ended.err.find(": kept the reference and 1 finger presses, 0 weights in " + dir + "/e_capture"),
+            std::string::npos)
+      << ended.err;
+  EXPECT_NE(ended.err.find("emit: --capture file:" + dir + "/short.emitrec: the source ended after "),
+            std::string::npos)
+      << ended.err;
   const auto r = run_emit("calibrate --capture bogus: --out " + dir + "/c.json");
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("emit: "), std::string::npos) << r.err;
