@@ -128,7 +128,7 @@ double measured_reading_noise_V(const std::vector<Frame>& quiet_frames) {
     for (Index l = 0; l < N; ++l)
       for (Index m = 0; m < N; ++m)
         if (l != m) sum += (f(l, m) - mean(l, m)) * (f(l, m) - mean(l, m));
-  const double readings = static_cast<double>(N * (N - 1));
+  const auto readings = static_cast<double>(N * (N - 1));
   return std::sqrt(sum / (readings * static_cast<double>(quiet_frames.size() - 1)));
 }
 

@@ -48,18 +48,17 @@ class CoverageMap {
  public:
   CoverageMap(const Sensor& sensor, int cells) : cells_(cells), outline_(sheet_outline(sensor)) {
     for (int k = 0; k < 512; ++k) box_.extend(outline_.point_at(outline_.length_mm() * k / 512));
-    on_sheet_.resize(static_cast<std::size_t>(cells * cells));
+    on_sheet_.resize(index(0, cells));
     covered_.assign(on_sheet_.size(), false);
     for (int j = 0; j < cells; ++j)
-      for (int i = 0; i < cells; ++i)
-        on_sheet_[static_cast<std::size_t>(j * cells + i)] = outline_.contains(cell_centre(i, j));
+      for (int i = 0; i < cells; ++i) on_sheet_[index(i, j)] = outline_.contains(cell_centre(i, j));
   }
   /// Marks the cell of chart point p; whether it was newly covered.
   bool mark(const Vector2& p) {
     const Vector2 at = (p - box_.min()).cwiseQuotient(box_.sizes()) * cells_;
     const int i = std::clamp(static_cast<int>(std::floor(at.x())), 0, cells_ - 1);
     const int j = std::clamp(static_cast<int>(std::floor(at.y())), 0, cells_ - 1);
-    const auto k = static_cast<std::size_t>(j * cells_ + i);
+    const auto k = index(i, j);
     if (!on_sheet_[k] || covered_[k]) return false;
     covered_[k] = true;
     return true;
@@ -72,7 +71,7 @@ class CoverageMap {
     for (int j = cells_ - 1; j >= 0; --j) {
       map += "    ";
       for (int i = 0; i < cells_; ++i) {
-        const auto k = static_cast<std::size_t>(j * cells_ + i);
+        const auto k = index(i, j);
         map += on_sheet_[k] ? (covered_[k] ? "# " : ". ") : "  ";
       }
       map += '\n';
@@ -81,6 +80,9 @@ class CoverageMap {
   }
 
  private:
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(cells_) + static_cast<std::size_t>(i);
+  }
   Vector2 cell_centre(int i, int j) const {
     return box_.min() + Vector2((i + 0.5) * box_.sizes().x() / cells_, (j + 0.5) * box_.sizes().y() / cells_);
   }

@@ -44,13 +44,14 @@ CalibrationPerson::CalibrationPerson(const Sensor& sensor, const CalibrationPers
   const auto place = [&](int cell, int k, double radius_mm) -> Vector2 {
     const Vector2 inset = Vector2::Constant(std::min(radius_mm + options.margin_mm, 0.49 * box.sizes().minCoeff()));
     const Vector2 size = (box.sizes() - 2 * inset) / k;
-    const Vector2 corner = box.min() + inset + Vector2((cell % k) * size.x(), (cell / k) * size.y());
+    const int column = cell % k, row = cell / k;  // the cell's place in the grid
+    const Vector2 corner = box.min() + inset + Vector2(column * size.x(), row * size.y());
     for (int attempt = 0; attempt < 50; ++attempt) {
-      const Vector2 p = corner + Vector2(uniform(0, size.x()), uniform(0, size.y()));
+      Vector2 p = corner + Vector2(uniform(0, size.x()), uniform(0, size.y()));
       if (room(p, radius_mm)) return p;
     }
     for (int attempt = 0; attempt < 100000; ++attempt) {
-      const Vector2 p(uniform(box.min().x(), box.max().x()), uniform(box.min().y(), box.max().y()));
+      Vector2 p(uniform(box.min().x(), box.max().x()), uniform(box.min().y(), box.max().y()));
       if (room(p, radius_mm)) return p;
     }
     throw InvalidInput("calibration script: no room on the sheet for a press of radius " + std::to_string(radius_mm) +
