@@ -18,6 +18,7 @@
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/sensor/adc.hpp"
 #include "emit/sensor/surface.hpp"
+#include "emit/twin/sim_script.hpp"
 
 namespace emit {
 
@@ -42,12 +43,16 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
   return text;
 }
 
-/// The sheet in coverage_cells × coverage_cells cells over its outline's box: which are on the
-/// sheet (their centre inside it) and which a press has been placed in.
+/// The sheet in coverage_cells × coverage_cells cells over its outline's box (less a finger's
+/// radius): which are on the sheet (their centre inside it) and which a press has been placed in.
 class CoverageMap {
  public:
-  CoverageMap(const Sensor& sensor, int cells) : cells_(cells), outline_(sheet_outline(sensor)) {
+  /// The cells cover the box where a finger's centre can be: the sheet's, less `inset_mm` (the
+  /// finger's radius) on every side.
+  CoverageMap(const Sensor& sensor, int cells, double inset_mm) : cells_(cells), outline_(sheet_outline(sensor)) {
     for (int k = 0; k < 512; ++k) box_.extend(outline_.point_at(outline_.length_mm() * k / 512));
+    const Vector2 inset = Vector2::Constant(std::min(inset_mm, 0.25 * box_.sizes().minCoeff()));
+    box_ = Eigen::AlignedBox2d(box_.min() + inset, box_.max() - inset);
     on_sheet_.resize(index(0, cells));
     covered_.assign(on_sheet_.size(), false);
     for (int j = 0; j < cells; ++j)
@@ -136,7 +141,7 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
   const Pipeline pipeline(sensor, PipelineOptions{Method::fit, 0, job.calibrate.options.cache_dir, {}}, {},
                           progress.stage);
   Reconstructor placer = pipeline.reconstructor();
-  CoverageMap coverage(sensor, job.coverage_cells);
+  CoverageMap coverage(sensor, job.coverage_cells, job.finger_radius_mm);
   report.cells = coverage.cells();
 
   // The next frame, or false when stopped or the source is gone (report.ended says why).
@@ -222,10 +227,18 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
 
-  // 2. Fingers, anywhere.
+  // 2. Fingers, anywhere. The twin's scripted person (sim:calibration) does not hear the prompts:
+  // it presses its own count of fingers, then the weights, so step 2 takes exactly its count.
+  int finger_presses = job.presses;
+  bool until_covered = true;
+  if (job.source_spec.rfind("sim:calibration", 0) == 0) {
+    finger_presses = parse_sim_script(job.source_spec).person.presses;
+    until_covered = false;
+    line("the scripted person presses " + std::to_string(finger_presses) + " fingers, then puts the weights down");
+  }
   line(format("2. Press anywhere, one finger at a time; cover the sheet (%.0f presses, or every one of the %.0f cells)",
-              job.presses, report.cells));
-  while (report.finger_presses < job.presses && report.cells_covered < report.cells) {
+              finger_presses, report.cells));
+  while (report.finger_presses < finger_presses && (!until_covered || report.cells_covered < report.cells)) {
     if (!capture_press(Press{nan, nan, job.finger_radius_mm, nan},
                        "press " + std::to_string(report.finger_presses + 1)))
       return finish_early("at press " + std::to_string(report.finger_presses + 1));
@@ -245,8 +258,8 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
       if (fresh) report.coverage_map = coverage.text();
       if (fresh) line(report.coverage_map.substr(0, report.coverage_map.size() - 1));
     }
-    line("press " + std::to_string(report.finger_presses) + " of " + std::to_string(job.presses) + ": " + where + "; " +
-         std::to_string(report.cells_covered) + " of " + std::to_string(report.cells) + " cells covered");
+    line("press " + std::to_string(report.finger_presses) + " of " + std::to_string(finger_presses) + ": " + where +
+         "; " + std::to_string(report.cells_covered) + " of " + std::to_string(report.cells) + " cells covered");
   }
   report.coverage_map = coverage.text();
 

@@ -7,7 +7,8 @@
 ///  2. "Press anywhere, one finger at a time": each stable press found in the stream
 ///     (frame/press_segmenter.hpp) is counted and placed roughly by the nominal contact fit (as
 ///     `emit reconstruct` does, uncalibrated) on a coverage map of the sheet, until `presses` or every
-///     cell is covered;
+///     cell is covered (from the twin's scripted person, sim:calibration[:N], which does not hear the
+///     prompts: its own N, and the weights it puts down are the default 2 and 5 N);
 ///  3. "Put the 2.00 N weight down anywhere, then lift it", for each known weight: the next stable
 ///     press is that weight (known force, unknown place);
 ///  4. the calibration (jobs/calibrate_job.hpp) from what it captured.
