@@ -1,11 +1,15 @@
 // emit calibrate: a method's calibration from presses of known place and force (eq. 8's a1, a2,
 // a3 for the linear methods; the sheet and the contact law as contact fitting sees them), and
 // eq. 2's alpha, gamma from resistance-pressure pairs.
+#include <unistd.h>
 #include <cstdio>
 #include <optional>
 
 #include "commands.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/jobs/calibrate_job.hpp"
+#include "emit/jobs/capture_job.hpp"
+#include "stop_on_signals.hpp"
 
 namespace emit::cli {
 
@@ -14,6 +18,7 @@ namespace {
 struct CalibrateArgs {
   CalibrateJob job;
   std::string method = "fit";
+  CaptureJob capture;  ///< with --capture
 };
 
 /// The sensor's self-calibration: each parameter with its 1σ, which the presses determine and
@@ -62,10 +67,40 @@ void print_presses(const CalibrateJob& job, const PressCalibrationResult& r) {
               r.rms_N_per_mm2, r.max_abs_N_per_mm2, 100 * r.max_abs_N_per_mm2 / 0.5, job.out_path.c_str());
 }
 
+/// --capture: the person is told each step on stderr, the status on one line rewritten in place on a
+/// terminal; Ctrl-C keeps what was captured (exit 130), a source that ends early is an error (exit 1).
+void run_capture(CalibrateArgs& args) {
+  if (!args.job.reference_path.empty() || !args.job.frames_path.empty() || !args.job.truth_path.empty())
+    throw InvalidInput(
+        "--capture records the reference, frames and presses itself: give none of --reference, "
+        "--frames, --truth");
+  CaptureJob& capture = args.capture;
+  capture.calibrate = args.job;
+  const bool terminal = isatty(fileno(stderr)) != 0;
+  bool status_shown = false;
+  CaptureSay say;
+  say.line = [&](const std::string& text) {
+    std::fprintf(stderr, "%s%s\n", status_shown ? "\r\033[K" : "", text.c_str());
+    status_shown = false;
+  };
+  say.status = [&](const std::string& text) {
+    if (!terminal) return;  // a log gets the lines alone
+    std::fprintf(stderr, "\r\033[K%s", text.c_str());
+    std::fflush(stderr);
+    status_shown = true;
+  };
+  const StopOnSignals signals;
+  const CaptureReport report = run_capture_job(capture, StopOnSignals::flag(), say, stderr_progress());
+  if (report.stopped) throw ExitCode{130};
+  if (!report.ended.empty()) throw IoError("--capture " + capture.source_spec + ": " + report.ended);
+  if (report.calibration && report.calibration->presses) print_presses(args.job, *report.calibration->presses);
+}
+
 void run_calibrate(CalibrateArgs args) {
   CalibrateJob& job = args.job;
   job.options.method = parse_method(args.method);
   job.options.cache_dir = cache_dir_option(job.options.cache_dir, false);
+  if (!args.capture.source_spec.empty()) return run_capture(args);
   const CalibrateReport report = run_calibrate_job(job, stderr_progress());
   if (report.contact_law)
     std::printf("fitted R = alpha P^gamma on %zu pairs: alpha = %.6g, gamma = %.6g (rms relative residual %.3g)\n",
@@ -114,6 +149,27 @@ void add_calibrate_command(CLI::App& app) {
                 "With --method fit: keep the sensor file's series resistances (do not fit them)");
   cmd->add_flag("!--no-drive", job.options.sensor.fit_drive_voltage,
                 "With --method fit: keep the sensor file's drive voltage (do not fit it)");
+  CaptureJob& capture = a->capture;
+  cmd->add_option("--capture", capture.source_spec,
+                  "Capture the calibration by hand from a live source (serial:PORT, file:REC, sim:calibration): lift "
+                  "everything, press anywhere one finger at a time, put each known weight down; Ctrl-C keeps what was "
+                  "captured");
+  cmd->add_option("--capture-dir", capture.capture_dir,
+                  "--capture: where reference.csv, frames.csv and presses.csv go (default: <out>_capture)");
+  cmd->add_option("--presses", capture.presses, "--capture: finger presses (or until the sheet is covered)")
+      ->check(positive_number())
+      ->capture_default_str();
+  cmd->add_option("--weights-N", capture.weights_N, "--capture: the known weights, put down one after another")
+      ->delimiter(',')
+      ->check(positive_number())
+      ->capture_default_str();
+  cmd->add_option("--weight-radius-mm", capture.weight_radius_mm, "--capture: each weight's flat foot's radius")
+      ->check(positive_number())
+      ->capture_default_str();
+  cmd->add_option("--fps", capture.source.frames_per_s, "--capture from sim: the simulator's frame rate (0: unpaced)")
+      ->check(non_negative_number())
+      ->capture_default_str();
+  cmd->add_option("--seed", capture.source.seed, "--capture from sim: the simulated person's and noise's seed");
   cmd->add_option("--cache", job.options.cache_dir,
                   "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");
   cmd->callback([a] { run_calibrate(*a); });

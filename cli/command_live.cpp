@@ -7,34 +7,11 @@
 #include <string>
 
 #include "commands.hpp"
+#include "stop_on_signals.hpp"
 
 namespace emit::cli {
 
 namespace {
-
-std::atomic<bool> stop_requested{false};  // set by SIGINT/TERM/HUP: the loop finishes its frame and returns
-extern "C" void request_stop(int) { stop_requested = true; }
-
-/// SIGINT, SIGTERM and SIGHUP stop the loop gracefully while this lives (the recordings are
-/// closed and renamed into place); the old handlers come back after.
-class StopOnSignals {
- public:
-  StopOnSignals() {
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    for (std::size_t k = 0; k < signals_.size(); ++k) sigaction(signals_[k], &action, &old_[k]);
-  }
-  StopOnSignals(const StopOnSignals&) = delete;  // one owner restores the old handlers, once
-  StopOnSignals& operator=(const StopOnSignals&) = delete;
-  ~StopOnSignals() {
-    for (std::size_t k = 0; k < signals_.size(); ++k) sigaction(signals_[k], &old_[k], nullptr);
-  }
-
- private:
-  static constexpr std::array<int, 3> signals_{SIGINT, SIGTERM, SIGHUP};
-  std::array<struct sigaction, 3> old_{};
-};
 
 struct LiveArgs {
   LiveJob job;
@@ -83,11 +60,10 @@ void run_live(const LiveJob& job) {
   std::fprintf(say, "reconstructing with the %s method; %s\n", method_name(job.method), stopping.c_str());
   std::fflush(say);
 
-  stop_requested = false;
   const StopOnSignals signals;
   LiveStats stats;
   try {
-    stats = session.run(stop_requested);
+    stats = session.run(StopOnSignals::flag());
   } catch (const std::exception&) {
     // What the run did before it failed, and where what it wrote is; main() then prints the
     // failure itself, last, and exits 1.

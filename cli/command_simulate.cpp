@@ -23,6 +23,7 @@ struct SimulateArgs {
   std::string realistic_seed;
   RealisticSheetOptions realistic_options;
   std::vector<double> realistic_drive_V;
+  CLI::Option* force = nullptr;  ///< --force-N, given or not (calibration's own range when not)
 };
 
 void run_simulate(SimulateArgs a) {
@@ -47,6 +48,11 @@ void run_simulate(SimulateArgs a) {
     script.kind = parse_script_kind(a.script);
     const auto force = pair_or_single(a.force_N, "--force-N");
     script.style.min_force_N = force[0], script.style.max_force_N = force[1];
+    if (script.kind == PressScript::Kind::calibration) {  // a person calibrating (twin/calibration_person.hpp)
+      if (a.force->count() > 0) script.person.min_force_N = force[0], script.person.max_force_N = force[1];
+      script.person.radius_mm = script.style.radius_mm;
+      script.person.seed = job.twin.noise_seed;
+    }
     script.style.margin_mm = a.margin_mm >= 0 ? a.margin_mm : script.style.radius_mm;
     script.style.seed = job.twin.noise_seed;
     script.style.profile = profile;
@@ -88,7 +94,8 @@ void add_simulate_command(CLI::App& app) {
                   "to x,y) (repeat for simultaneous presses)");
   cmd->add_option("--script", a->script,
                   "Press script: none (no-contact references), grid, random, two-finger, three-finger, four-finger, "
-                  "moving or crossing (two fingers passing each other, their forces crossing)");
+                  "moving, crossing (two fingers passing each other, their forces crossing) or calibration (a person "
+                  "calibrating: 1 s lifted, --presses finger presses covering the sheet, then --weights-N)");
   cmd->add_option("--out", job.out_path, "Frames CSV to write")->required();
   cmd->add_option("--truth", job.truth_path, "Presses CSV to write (default: <out>_presses.csv)");
   cmd->add_option("--frames", script.frames, "Frames for the none, random, two-finger, moving and crossing scripts")
@@ -96,7 +103,15 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--spacing-mm", script.spacing_mm, "Grid pitch")->check(positive_number());
   cmd->add_option("--jitter-mm", script.jitter_mm, "Grid jitter (uniform, +/-)")->check(non_negative_number());
   cmd->add_option("--radius-mm", script.style.radius_mm, "Indenter radius for scripts")->check(positive_number());
-  cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly")->delimiter(',');
+  a->force = cmd->add_option("--force-N", a->force_N, "Force, or a range MIN,MAX drawn uniformly (calibration: 2,39)")
+                 ->delimiter(',');
+  cmd->add_option("--presses", script.person.presses, "calibration: finger presses (default 60)")
+      ->check(non_negative_integer());
+  cmd->add_option("--weights-N", script.person.weights_N, "calibration: the known weights put down after (default 2,5)")
+      ->delimiter(',')
+      ->check(positive_number());
+  cmd->add_option("--fps", script.frames_per_s, "calibration: frames per second of the person's time (default 50)")
+      ->check(positive_number());
   cmd->add_option("--separation-mm", a->separation_mm,
                   "Two-finger separation range MIN,MAX (crossing: at the closest approach); three- and four-finger: "
                   "MIN, "

@@ -11,6 +11,7 @@
 #include "emit/core/output_file.hpp"
 #include "emit/core/threads.hpp"
 #include "emit/core/version.hpp"
+#include "stop_on_signals.hpp"
 
 namespace {
 
@@ -44,6 +45,8 @@ int run(int argc, char** argv) {
   emit::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);
+  } catch (const emit::cli::ExitCode& e) {
+    return e.code;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

@@ -1,10 +1,12 @@
 #include "emit/io/presses_csv.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,51 @@ std::vector<std::vector<Vector2>> parse_outline_text(const std::string& text, co
   }
   return outline;
 }
+/// The fields a row leaves empty: x_mm and y_mm together (a place not measured), force_N (a force
+/// not measured; its pressure then empty too). Each empty numeric field of `line` is replaced by 0
+/// so that the row parses as a full one; the caller sets what was empty to NaN after.
+/// \throw InvalidInput naming `where` for one of x_mm, y_mm empty alone, or another field empty.
+struct EmptyFields {
+  bool place = false, force = false;
+};
+
+EmptyFields fill_empty_fields(std::string& line, bool with_z, const std::string& where) {
+  // The numeric fields' indices: frame, x, y, [z,] radius, force, pressure.
+  const int x = 1, y = 2, z = with_z ? 3 : -1, radius = with_z ? 4 : 3, force = radius + 1, pressure = force + 1;
+  std::vector<bool> empty;
+  std::string filled;
+  std::size_t at = 0;
+  for (int k = 0; k <= pressure; ++k) {
+    const std::size_t end = line.find(',', at);
+    const std::string field = line.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    const bool blank = field.find_first_not_of(" \t") == std::string::npos;
+    empty.push_back(blank);
+    filled += (k > 0 ? "," : "") + (blank ? std::string("0") : field);
+    if (end == std::string::npos) {
+      at = std::string::npos;
+      break;
+    }
+    at = end + 1;
+  }
+  if (std::none_of(empty.begin(), empty.end(), [](bool e) { return e; })) return {};
+  const auto is_empty = [&](int k) {
+    return k >= 0 && static_cast<std::size_t>(k) < empty.size() && empty[static_cast<std::size_t>(k)];
+  };
+  EmptyFields fields{is_empty(x) && is_empty(y), is_empty(force)};
+  if (is_empty(x) != is_empty(y))
+    throw InvalidInput(where + ": x_mm and y_mm are empty together (a place not measured) or both given, got " +
+                       quote_input(line));
+  for (int k = 0; k < static_cast<int>(empty.size()); ++k)
+    if (is_empty(k) && k != x && k != y && k != force && !(k == z && fields.place) && !(k == pressure && fields.force))
+      throw InvalidInput(where +
+                         ": only x_mm,y_mm (a place not measured) and force_N (a force not measured) may be "
+                         "empty, got " +
+                         quote_input(line));
+  if (at != std::string::npos) filled += "," + line.substr(at);
+  line = filled;
+  return fields;
+}
+
 }  // namespace
 
 void write_presses_csv(const std::string& path, const PressSequence& sequence) {
@@ -73,20 +120,30 @@ void write_presses_csv(std::ostream& out, const PressSequence& sequence) {
   for (const auto& frame : sequence)
     for (const Press& p : frame) {
       profiles = profiles || p.profile != PressProfile::flat;
-      heights = heights || p.z_mm != 0;
+      heights = heights || (place_known(p) && p.z_mm != 0);
       outlines = outlines || !p.outline_mm.empty();
     }
   profiles = profiles || outlines;
   out << (heights ? header_with_z : header) << (profiles ? ",profile" : "") << (outlines ? ",outline" : "") << '\n';
   char row[256];
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t f = 0; f < sequence.size(); ++f)
     for (const Press& p : sequence[f]) {
-      if (heights)
-        std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.z_mm, p.radius_mm,
-                      p.force_N, p.pressure_N_per_mm2());
-      else
-        std::snprintf(row, sizeof row, "%zu,%.4f,%.4f,%.4f,%.6f,%.6f", f, p.x_mm, p.y_mm, p.radius_mm, p.force_N,
-                      p.pressure_N_per_mm2());
+      // A place or a force not measured (NaN: sensor/press.hpp) is an empty field, and so is the
+      // pressure of a force not measured.
+      int used = std::snprintf(row, sizeof row, "%zu", f);
+      const auto field = [&](const char* format, double value) {
+        used += std::snprintf(row + used, sizeof row - static_cast<std::size_t>(used), ",");
+        if (std::isfinite(value))
+          used += std::snprintf(row + used, sizeof row - static_cast<std::size_t>(used), format, value);
+      };
+      const bool place = place_known(p), force = force_known(p);
+      field("%.4f", place ? p.x_mm : nan);
+      field("%.4f", place ? p.y_mm : nan);
+      if (heights) field("%.4f", place ? p.z_mm : nan);
+      field("%.4f", p.radius_mm);
+      field("%.6f", force ? p.force_N : nan);
+      field("%.6f", force ? p.pressure_N_per_mm2() : nan);
       out << row;
       if (profiles) out << ',' << profile_name(p.profile);
       if (outlines) out << ',' << outline_text(p.outline_mm);
@@ -94,7 +151,7 @@ void write_presses_csv(std::ostream& out, const PressSequence& sequence) {
     }
 }
 
-PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) {
+PressSequence read_presses_csv(const std::string& path, std::size_t max_frames, UnknownPresses unknowns) {
   LineReader lines(path, "presses file");
   std::string line;
   const bool read = lines.next(line);
@@ -109,6 +166,12 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
   PressSequence sequence;
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    const std::string original = line;  // quoted in errors; `line` has its empty fields filled
+    const EmptyFields empty = fill_empty_fields(line, with_z, lines.where());
+    if (empty.place && unknowns == UnknownPresses::refused)
+      throw InvalidInput(lines.where() + ": place unknown: only emit calibrate takes presses without a place");
+    if (empty.force && unknowns == UnknownPresses::refused)
+      throw InvalidInput(lines.where() + ": force unknown: only emit calibrate takes presses without a force");
     long frame = -1;
     Press p;
     double pressure = 0;
@@ -143,11 +206,13 @@ PressSequence read_presses_csv(const std::string& path, std::size_t max_frames) 
     }
     const bool whole_line =
         consumed > 0 && line.find_first_not_of(" \t", static_cast<std::size_t>(consumed)) == std::string::npos;
-    if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(line));
+    if (fields < 5 || !whole_line || frame < 0) throw InvalidInput(lines.where() + expected + quote_input(original));
     if (!std::isfinite(p.x_mm) || !std::isfinite(p.y_mm) || !std::isfinite(p.z_mm) || !(p.radius_mm > 0) ||
         !std::isfinite(p.radius_mm) || !(p.force_N >= 0) || !std::isfinite(p.force_N))
       throw InvalidInput(lines.where() + ": a press needs a finite place, a radius > 0 and a force >= 0, got " +
-                         quote_input(line));
+                         quote_input(original));
+    if (empty.place) p.x_mm = p.y_mm = p.z_mm = std::numeric_limits<double>::quiet_NaN();
+    if (empty.force) p.force_N = std::numeric_limits<double>::quiet_NaN();
     if (!p.outline_mm.empty()) {
       validate_outline(p.outline_mm, lines.where());
       if (p.profile != PressProfile::flat) throw InvalidInput(lines.where() + ": an outline press must be flat");

@@ -54,7 +54,8 @@ PressCalibrationResult calibrate_presses(const CalibrateJob& job, OutputFile& ou
   const std::vector<Frame> frames = read_frames_csv(job.frames_path, N);
   for (std::size_t f = 0; f < frames.size(); ++f)
     check_readings_in_range(frames[f], sensor.adc, job.frames_path + ": frame " + std::to_string(f));
-  const PressSequence truth = read_presses_csv(job.truth_path, frames.size());
+  // Presses of unknown place or force (empty fields) are calibration's alone (io/presses_csv.hpp).
+  const PressSequence truth = read_presses_csv(job.truth_path, frames.size(), UnknownPresses::allowed);
   if (truth.size() != frames.size())
     throw InvalidInput(job.truth_path + ": " + std::to_string(truth.size()) + " frames of presses for " +
                        std::to_string(frames.size()) + " frames in " + job.frames_path);

@@ -82,6 +82,11 @@ Vector2 press_chart_mm(const Shape& shape, const Press& press) {
 void validate_press(const Sensor& sensor, const Press& press, const std::string& where) {
   char position[96];
   std::snprintf(position, sizeof position, "(%g, %g) mm", press.x_mm, press.y_mm);
+  // A place or force not measured (both coordinates NaN; the force NaN) is calibration's alone.
+  if (std::isnan(press.x_mm) && std::isnan(press.y_mm))
+    throw InvalidInput(where + ": place unknown: only emit calibrate takes presses without a place");
+  if (std::isnan(press.force_N))
+    throw InvalidInput(where + ": force unknown: only emit calibrate takes presses without a force");
   if (!std::isfinite(press.x_mm) || !std::isfinite(press.y_mm) || !std::isfinite(press.z_mm) ||
       !std::isfinite(press.radius_mm) || !std::isfinite(press.force_N))
     throw InvalidInput(where + ": values must be finite numbers");

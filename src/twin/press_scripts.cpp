@@ -220,11 +220,16 @@ PressScript::Kind parse_script_kind(const std::string& name) {
   if (name == "four-finger") return PressScript::Kind::four_finger;
   if (name == "moving") return PressScript::Kind::moving;
   if (name == "crossing") return PressScript::Kind::crossing;
+  if (name == "calibration") return PressScript::Kind::calibration;
   throw InvalidInput("--script: unknown script " + quote_input(name) +
-                     " (none, grid, random, two-finger, three-finger, four-finger, moving, crossing)");
+                     " (none, grid, random, two-finger, three-finger, four-finger, moving, crossing, calibration)");
 }
 
 double script_frame_count(const Sensor& sensor, const PressScript& script) {
+  if (script.kind == PressScript::Kind::calibration) {
+    if (!(script.frames_per_s > 0) || !std::isfinite(script.frames_per_s)) return 0;  // run_script says so
+    return std::ceil(CalibrationPerson(sensor, script.person).duration_s() * script.frames_per_s);
+  }
   if (script.kind != PressScript::Kind::grid) return script.frames;
   if (!(script.spacing_mm > 0)) return 0;  // grid_script says what is wrong
   return grid_node_count(grid_half_counts(bounding_box(sheet_outline(sensor)), script.spacing_mm));
@@ -245,6 +250,7 @@ PressSequence run_script(const Sensor& sensor, const PressScript& script) {
       return moving_script(sensor, script.frames, script.from_mm, script.to_mm, script.style);
     case PressScript::Kind::crossing:
       return crossing_script(sensor, script.frames, script.min_separation_mm, script.max_separation_mm, script.style);
+    case PressScript::Kind::calibration: return CalibrationPerson(sensor, script.person).frames(script.frames_per_s);
   }
   return {};
 }

@@ -66,6 +66,16 @@ SimScript parse_sim_script(const std::string& spec) {
     script.kind = SimScript::Kind::random;
     return script;
   }
+  if (const std::string calibration = "sim:calibration"; spec.rfind(calibration, 0) == 0) {
+    script.kind = SimScript::Kind::calibration;
+    if (spec == calibration) return script;
+    const std::string count = spec.substr(calibration.size());
+    const double presses = count.size() > 1 && count[0] == ':' ? parse_number(count.substr(1), spec) : -1;
+    if (!(presses >= 0 && presses <= 100000 && presses == std::floor(presses)))
+      throw InvalidInput("source \"" + spec + "\": expected sim:calibration or sim:calibration:PRESSES (a count)");
+    script.person.presses = static_cast<int>(presses);
+    return script;
+  }
   if (spec == "sim:fixed") {  // held at the sheet's middle (SimSource's constructor finds it)
     script.kind = SimScript::Kind::fixed;
     script.fixed_at_middle = true;
@@ -74,7 +84,8 @@ SimScript parse_sim_script(const std::string& spec) {
   const std::string fixed = "sim:fixed:";
   if (spec.rfind(fixed, 0) != 0)
     throw InvalidInput("source \"" + spec +
-                       "\": expected sim, sim:random, sim:fixed, sim:fixed:X,Y[,F] or sim:fixed:OUTLINE");
+                       "\": expected sim, sim:random, sim:calibration[:PRESSES], sim:fixed, sim:fixed:X,Y[,F] or "
+                       "sim:fixed:OUTLINE");
   if (const std::string outline = spec.substr(fixed.size()); outline.find(':') != std::string::npos) {
     // A flat punch of another outline (bar:…, ellipse:…, ring:…, polygon:…), as `simulate --press`.
     script.kind = SimScript::Kind::fixed;
@@ -135,6 +146,11 @@ ScriptedPresses::ScriptedPresses(const Sensor& sensor, const Mesh& mesh, SimScri
     while (loop_scale_ > 0.05 && !fits(loop_scale_)) loop_scale_ *= 0.9;
     if (!fits(loop_scale_)) loop_scale_ = 0;  // a press held at the middle, moving no more
   }
+  if (script_.kind == SimScript::Kind::calibration) {
+    CalibrationPersonOptions person = script_.person;
+    person.seed = options.seed;
+    person_.emplace(sensor_, person);
+  }
   if (script_.fixed_at_middle) {
     script_.fixed = press_at(center_mm_, script_.fixed.force_N);
   } else if (script_.kind == SimScript::Kind::fixed) {
@@ -163,6 +179,10 @@ std::vector<Press> ScriptedPresses::presses_of(std::uint64_t sequence) const {
   if (t < 0) return {};
   switch (script_.kind) {
     case SimScript::Kind::fixed: return {script_.fixed};
+    case SimScript::Kind::calibration: {
+      const Press* press = person_->press_at(t);
+      return press ? std::vector<Press>{*press} : std::vector<Press>{};
+    }
     case SimScript::Kind::loop: {
       const double phase = std::fmod(t, loop_pressed_s + loop_lifted_s);
       if (phase >= loop_pressed_s) return {};
@@ -194,6 +214,18 @@ std::string ScriptedPresses::description() const {
   switch (script_.kind) {
     case SimScript::Kind::loop: return "a finger moving in a figure-eight";
     case SimScript::Kind::random: return "presses at random places";
+    case SimScript::Kind::calibration: {
+      std::string text = "a person calibrating: lifted for the first " +
+                         std::to_string(script_.person.quiet_s).substr(0, 4) + " s, " +
+                         std::to_string(person_->presses().size()) + " presses in all, the last " +
+                         std::to_string(script_.person.weights_N.size()) + " known weights (";
+      char weight[32];
+      for (std::size_t i = 0; i < script_.person.weights_N.size(); ++i) {
+        std::snprintf(weight, sizeof weight, "%s%g N", i > 0 ? ", " : "", script_.person.weights_N[i]);
+        text += weight;
+      }
+      return text + ")";
+    }
     case SimScript::Kind::fixed: {
       char text[128];
       std::snprintf(text, sizeof text, "a press held at (%g, %g) mm, %g N%s", script_.fixed.x_mm, script_.fixed.y_mm,

@@ -371,4 +371,45 @@ TEST(CliReliability, AContactsFifosReaderMayLeaveAndAnotherTakeOver) {
 }
 
 }  // namespace
+
+// `emit calibrate --capture` (issue 33): Ctrl-C during the finger presses keeps what was captured,
+// complete (the reference and the presses found so far), says how to calibrate from it offline,
+// and exits 130 as a shell's Ctrl-C does. A source spec that is wrong is refused before anything.
+TEST(CliReliability, CaptureStoppedByCtrlCKeepsWhatItCaptured) {
+  const std::string dir = test::temp_folder("cli_capture_sigint");
+  const pid_t child = spawn_emit({"calibrate", "--sensor", test::source_path("examples/sensors/square30.json"),
+                                  "--capture", "sim:calibration", "--fps", "50", "--out", dir + "/calibration.json"},
+                                 -1, dir + "/stderr");
+  ASSERT_GT(child, 0);
+  const std::string presses = dir + "/calibration_capture/presses.csv";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(presses) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(presses)) << test::read_text(dir + "/stderr");
+  ::kill(child, SIGINT);
+  EXPECT_EQ(wait_for(child), 130);
+  const std::string err = test::read_text(dir + "/stderr");
+  EXPECT_NE(err.find("stopped at press "), std::string::npos) << err;
+  EXPECT_NE(err.find("; calibrate from them with: emit calibrate --sensor "), std::string::npos) << err;
+  const std::string text = test::read_text(presses);
+  EXPECT_EQ(text.rfind("frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,,,5.0000,,\n", 0), 0u) << text;
+  EXPECT_FALSE(fs::exists(dir + "/calibration.json"));
+  // A recording that ends before the person is done: what was kept, then the end as an error.
+  ASSERT_EQ(run_emit("live --source sim:calibration:1 --fps 0 --frames 110 --contacts /dev/null --record " + dir +
+                     "/short.emitrec")
+                .exit_code,
+            0);
+  const auto ended = run_emit("calibrate --capture file:" + dir + "/short.emitrec --fps 0 --out " + dir + "/e.json");
+  EXPECT_EQ(ended.exit_code, 1);
+  EXPECT_NE(ended.err.find(": kept the reference and 1 finger presses, 0 weights in " + dir + "/e_capture"),
+            std::string::npos)
+      << ended.err;
+  EXPECT_NE(ended.err.find("emit: --capture file:" + dir + "/short.emitrec: the source ended after "),
+            std::string::npos)
+      << ended.err;
+  const auto r = run_emit("calibrate --capture bogus: --out " + dir + "/c.json");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("emit: "), std::string::npos) << r.err;
+}
+
 }  // namespace emit

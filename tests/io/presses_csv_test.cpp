@@ -3,12 +3,14 @@
 #include "emit/io/presses_csv.hpp"
 
 #include <fstream>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "emit/core/errors.hpp"
 #include "emit/sensor/press_outline.hpp"
+#include "emit/sensor/sensor_json.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -160,4 +162,50 @@ TEST(PressesCsv, HeightColumnWhenSomePressIsOffThePlane) {
 }
 
 }  // namespace
+
+// Calibration without a robot (issue 33): a press whose place was not measured leaves x_mm and
+// y_mm empty, one whose force was not measured force_N and its pressure; they read back as NaN
+// where the reader takes them (calibration) and are refused by name, file and line elsewhere.
+TEST(PressesCsv, EmptyPlaceAndForceRoundTripForCalibrationAndAreRefusedElsewhere) {
+  const std::string dir = test::temp_folder("presses_csv_unknown");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const PressSequence sequence = {{{nan, nan, 5, nan}}, {}, {{nan, nan, 5, 2}}, {{10.5, 20.25, 5, 12.5}}};
+  write_presses_csv(dir + "/p.csv", sequence);
+  const std::string text = test::read_text(dir + "/p.csv");
+  EXPECT_EQ(text,
+            "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,,,5.0000,,\n2,,,5.0000,2.000000,0.025465\n"
+            "3,10.5000,20.2500,5.0000,12.500000,0.159155\n");
+  const PressSequence read = read_presses_csv(dir + "/p.csv", default_max_press_frames, UnknownPresses::allowed);
+  ASSERT_EQ(read.size(), 4u);
+  ASSERT_EQ(read[0].size(), 1u);
+  EXPECT_FALSE(place_known(read[0][0]));
+  EXPECT_FALSE(force_known(read[0][0]));
+  EXPECT_EQ(read[0][0].radius_mm, 5.0);
+  EXPECT_FALSE(place_known(read[2][0]));
+  EXPECT_EQ(read[2][0].force_N, 2.0);  // a weight of known force put down anywhere
+  EXPECT_EQ(read[3][0].x_mm, 10.5);
+  // Written again, the same text: the round trip is exact.
+  write_presses_csv(dir + "/again.csv", read);
+  EXPECT_EQ(test::read_text(dir + "/again.csv"), text);
+  // Everything but calibration needs the place and the force.
+  EXPECT_EQ(error_of(dir + "/p.csv"),
+            dir + "/p.csv:2: place unknown: only emit calibrate takes presses without a place");
+  std::ofstream(dir + "/force.csv") << "frame,x_mm,y_mm,radius_mm,force_N,pressure_N_per_mm2\n0,1,2,5,,\n";
+  EXPECT_EQ(error_of(dir + "/force.csv"),
+            dir + "/force.csv:2: force unknown: only emit calibrate takes presses without a force");
+  // x and y are empty together or not at all; no other field may be empty.
+  std::ofstream(dir + "/half.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,1,,5,2\n";
+  EXPECT_EQ(test::error_of([&] { read_presses_csv(dir + "/half.csv", 10, UnknownPresses::allowed); }),
+            dir +
+                "/half.csv:2: x_mm and y_mm are empty together (a place not measured) or both given, got \"0,1,,5,2\"");
+  std::ofstream(dir + "/radius.csv") << "frame,x_mm,y_mm,radius_mm,force_N\n0,,,,2\n";
+  EXPECT_EQ(test::error_of([&] { read_presses_csv(dir + "/radius.csv", 10, UnknownPresses::allowed); }),
+            dir +
+                "/radius.csv:2: only x_mm,y_mm (a place not measured) and force_N (a force not measured) may be "
+                "empty, got \"0,,,,2\"");
+  // The twin refuses such a press by name (simulate, the sim source: sensor/press.hpp).
+  EXPECT_EQ(test::error_of([&] { validate_press(default_sensor(), read[0][0], "frame 0, press 0"); }),
+            "frame 0, press 0: place unknown: only emit calibrate takes presses without a place");
+}
+
 }  // namespace emit

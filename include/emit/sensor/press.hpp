@@ -70,7 +70,8 @@ Vector2 press_chart_mm(const Shape& shape, const Press& press);
 /// How far a press's centre may be from a cylinder's surface [mm] (it is then moved onto it).
 inline constexpr double press_surface_tolerance_mm = 1.0;
 
-/// \throw InvalidInput if a value is not finite, the radius is not positive, the force is
+/// \throw InvalidInput for a place or force not known ("place unknown: only emit calibrate takes
+/// presses without a place"), if a value is not finite, the radius is not positive, the force is
 /// negative, the centre is off the sheet, or on a cylinder more than press_surface_tolerance_mm
 /// off its surface; for an outline, if the sheet is curved, the profile not flat, or the outline
 /// not valid (press_outline.hpp's validate_outline). `where` prefixes the message.

@@ -8,6 +8,7 @@
 
 #include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor.hpp"
+#include "emit/twin/calibration_person.hpp"
 
 namespace emit {
 
@@ -50,22 +51,28 @@ PressSequence crossing_script(const Sensor& sensor, int frames, double min_separ
 
 /// A script by name, as `emit simulate --script` takes it, with every script's parameters.
 struct PressScript {
-  enum class Kind { none, grid, random, two_finger, three_finger, four_finger, moving, crossing };
+  enum class Kind { none, grid, random, two_finger, three_finger, four_finger, moving, crossing, calibration };
   Kind kind = Kind::none;
   int frames = 20;                        ///< none (no-contact references), random, two_finger, moving, crossing
   double spacing_mm = 10, jitter_mm = 0;  ///< grid
   /// two_finger, crossing (at the closest approach); three/four: min only
   double min_separation_mm = 12, max_separation_mm = 40;
   Vector2 from_mm{0, 0}, to_mm{0, 0};  ///< moving
+  /// calibration: a person calibrating without a robot (twin/calibration_person.hpp), sampled at
+  /// frames_per_s (its frames are 1/frames_per_s apart in its time)
+  CalibrationPersonOptions person;
+  double frames_per_s = 50;
   PressStyle style;
 };
 
-/// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving", "crossing". \throw
+/// "none", "grid", "random", "two-finger", "three-finger", "four-finger", "moving", "crossing",
+/// "calibration". \throw
 /// InvalidInput naming the text.
 PressScript::Kind parse_script_kind(const std::string& name);
 
 /// How many frames run_script gives, at most, found without running it: `frames`, or a grid's
-/// nodes over the sheet's bounding box (those outside the margin are dropped after); 0 for a
+/// nodes over the sheet's bounding box (those outside the margin are dropped after), a
+/// calibration person's session at its frames_per_s; 0 for a
 /// spacing that is not positive (grid_script refuses it).
 double script_frame_count(const Sensor& sensor, const PressScript& script);
 

@@ -11,6 +11,7 @@
 /// is refused at the start, naming it, rather than failing mid-run. A sleeve's seam is no border
 /// (a press across it loads both sides, twin/press_contact.hpp).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "emit/mesh/mesh.hpp"
 #include "emit/sensor/press.hpp"
 #include "emit/sensor/sensor.hpp"
+#include "emit/twin/calibration_person.hpp"
 
 namespace emit {
 
@@ -27,16 +29,21 @@ struct SimScript {
     loop,    ///< a figure-eight over the sheet, 6 s pressed then 1 s lifted, again and again
     random,  ///< a press at a random place for 0.6 s, then 0.2 s lifted, again and again
     fixed,   ///< one press held: `fixed`, a disc or an outline
+    /// a person calibrating without a robot (twin/calibration_person.hpp): quiet, `person.presses`
+    /// finger presses at random places, then the known weights; then lifted for good
+    calibration,
   };
   Kind kind = Kind::loop;
   Press fixed{30, 30, 5, 10};               ///< kind fixed: where and how hard
   bool fixed_at_middle = false;             ///< kind fixed: at the sheet's middle instead ("sim:fixed")
   double radius_mm = 5;                     ///< the indenter of loop and random
   double min_force_N = 2, max_force_N = 8;  ///< loop: force swings between them; random: drawn uniformly
+  CalibrationPersonOptions person;          ///< kind calibration (its seed: the source's)
 };
 
-/// "sim", "sim:loop", "sim:random", "sim:fixed" (10 N held at the sheet's middle), "sim:fixed:X,Y[,F]", or
-/// "sim:fixed:OUTLINE": a flat punch of any outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…,
+/// "sim", "sim:loop", "sim:random", "sim:calibration[:PRESSES]" (a person calibrating: PRESSES finger
+/// presses, default 60, then the default weights), "sim:fixed" (10 N held at the sheet's middle), "sim:fixed:X,Y[,F]",
+/// or "sim:fixed:OUTLINE": a flat punch of any outline `emit simulate --press` takes (bar:x,y,L,W,angle,F, ellipse:…,
 /// ring:…, polygon:…; flat sheets only: sensor/press_outline.hpp), held. \throw InvalidInput naming the spec.
 SimScript parse_sim_script(const std::string& spec);
 
@@ -81,9 +88,10 @@ class ScriptedPresses {
   const Mesh& mesh_;
   SimScript script_;
   SourceOptions options_;
-  Vector2 center_mm_, half_extent_mm_;     ///< of the sheet's chart box, for the loop's path
-  double loop_scale_ = 1;                  ///< of the figure-eight's full reach, as the sheet has room
-  std::vector<Vector3> border_points_mm_;  ///< the border on the surface (room_mm)
+  Vector2 center_mm_, half_extent_mm_;       ///< of the sheet's chart box, for the loop's path
+  double loop_scale_ = 1;                    ///< of the figure-eight's full reach, as the sheet has room
+  std::vector<Vector3> border_points_mm_;    ///< the border on the surface (room_mm)
+  std::optional<CalibrationPerson> person_;  ///< kind calibration: the session, drawn once
 };
 
 }  // namespace emit
