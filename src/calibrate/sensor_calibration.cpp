@@ -100,8 +100,11 @@ class Evaluator {
     }
     if (moved || t != theta_) {  // the Green's function only when the sheet changes
       predictor_.reset();
-      green_ = dense_green_function(
-          mesh_, p_.correction(t.data()).element_conductance_S(mesh_, p_.sensor.sheet_resistance_ohm_per_sq), columns_);
+      green_ =
+          dense_green_function(mesh_,
+                               p_.correction(t.data()).element_conductance_S(mesh_,
+                                                                             p_.sensor.sheet_resistance_ohm_per_sq),
+                               columns_);
       predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
       theta_ = t;
     }
@@ -261,8 +264,7 @@ class Evaluator {
 /// Evaluator), the cheap ones (R, E) go first on the evaluator that holds the point's sheet.
 class PressesCost : public ceres::CostFunction {
  public:
-  PressesCost(const Presses& presses, std::vector<PressFit> start, int threads)
-      : p_(presses), fits_(std::move(start)) {
+  PressesCost(const Presses& presses, std::vector<PressFit> start, int threads) : p_(presses), fits_(std::move(start)) {
     for (int t = 0; t < std::max(1, threads); ++t) evaluators_.push_back(std::make_unique<Evaluator>(presses));
     set_num_residuals(presses.residual_count());
     mutable_parameter_block_sizes()->assign({presses.box.terms(), 1, presses.electrodes(), presses.electrodes()});
@@ -286,7 +288,7 @@ class PressesCost : public ceres::CostFunction {
       int block, index;
       double step;
     };
-    std::vector<Direction> directions;  // the cheap ones first
+    std::vector<Direction> directions;                          // the cheap ones first
     const std::array<double, 4> steps{1e-4, 1e-5, 1e-3, 1e-3};  // θ, log E, R/100 Ω, shift [mm]
     const bool fresh = sheet_jacobians_ < fresh_sheet_jacobians_;
     for (const int block : {1, 2, 0, 3}) {
@@ -310,8 +312,7 @@ class PressesCost : public ceres::CostFunction {
       Evaluator& evaluator = *evaluators_[which];
       std::vector<double> moved(static_cast<std::size_t>(R));
       std::vector<std::vector<double>> blocks(4);
-      for (std::size_t b = 0; b < 4; ++b)
-        blocks[b].assign(x[b], x[b] + parameter_block_sizes()[b]);
+      for (std::size_t b = 0; b < 4; ++b) blocks[b].assign(x[b], x[b] + parameter_block_sizes()[b]);
       for (;;) {
         Direction d{};
         {
@@ -322,9 +323,9 @@ class PressesCost : public ceres::CostFunction {
         std::vector<double>& value = blocks[static_cast<std::size_t>(d.block)];
         value[static_cast<std::size_t>(d.index)] += d.step;
         std::vector<PressFit> warm = fits;
-        const bool ok = evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits_) &&
-                        evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm,
-                                            moved.data());
+        const bool ok =
+            evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits_) &&
+            evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm, moved.data());
         value[static_cast<std::size_t>(d.index)] -= d.step;
         if (!ok) {
           const std::lock_guard<std::mutex> lock(taking);
@@ -333,7 +334,8 @@ class PressesCost : public ceres::CostFunction {
         }
         const int size = parameter_block_sizes()[static_cast<std::size_t>(d.block)];
         for (int k = 0; k < R; ++k)
-          jacobians[d.block][static_cast<std::ptrdiff_t>(k) * size + d.index] = (moved[static_cast<std::size_t>(k)] - residuals[k]) / d.step;
+          jacobians[d.block][static_cast<std::ptrdiff_t>(k) * size + d.index] =
+              (moved[static_cast<std::size_t>(k)] - residuals[k]) / d.step;
       }
     };
     if (evaluators_.size() == 1) {
@@ -516,8 +518,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
                        " electrodes");
   const FitOptions resolved = resolved_fit_options(fit_options, sensor, fit_mesh);
   const double noise_V = reading_noise_V(sensor.adc);
-  Presses presses{sensor, fit_mesh, measurements, dV, {}, resolved, noise_V,
-                  SheetCorrection::identity_over(fit_mesh, options.sheet_terms)};
+  Presses presses{sensor, fit_mesh, measurements, dV,
+                  {},     resolved, noise_V,      SheetCorrection::identity_over(fit_mesh, options.sheet_terms)};
   std::vector<PressFit> start(dV.size());
   for (std::size_t i = 0; i < dV.size(); ++i) {
     const Vector2& c = centres_mm[i];
@@ -525,8 +527,8 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
     presses.place_free.push_back(free);
     presses.any_free = presses.any_free || free;
     if (!free && !chart_on_sheet(fit_mesh, sensor.shape, c))
-      throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " +
-                         std::to_string(c.y()) + ") mm is off the sheet");
+      throw InvalidInput("sensor calibration: a press centre (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) +
+                         ") mm is off the sheet");
     start[i] = {free ? Vector2::Zero() : c, std::log(sensor.contact.conductance_S_per_mm2(0.1))};
   }
 

@@ -2,8 +2,8 @@
 
 #include <array>
 #include <chrono>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <variant>
 
@@ -227,8 +227,9 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
         if (f >= static_cast<std::size_t>(options.unplaced_known_forces))
           press.force_N = std::numeric_limits<double>::quiet_NaN();
       }
-  const PressCalibrationResult calibration = calibrate_from_presses(
-      eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames, given, progress.stage);
+  const PressCalibrationResult calibration =
+      calibrate_from_presses(eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames, given,
+                             progress.stage);
   result.calibration_s = seconds_since(calibration_start);
   if (calibration.sheet) result.calibration_warnings = calibration.sheet->warnings;
 

@@ -202,7 +202,8 @@ nlohmann::json to_json(const SensorCalibration& r) {
                           {"determined", p.determined}});
   nlohmann::json placed = nlohmann::json::array();  // the presses whose place was fitted
   for (std::size_t i = 0; i < r.centres_mm.size(); ++i)
-    if (r.place_fitted[i]) placed.push_back({{"press", i}, {"x_mm", r.centres_mm[i].x()}, {"y_mm", r.centres_mm[i].y()}});
+    if (r.place_fitted[i])
+      placed.push_back({{"press", i}, {"x_mm", r.centres_mm[i].x()}, {"y_mm", r.centres_mm[i].y()}});
   return {{"presses", r.presses},
           {"fitted_places", placed},
           {"rms_misfit_nominal_mV", 1e3 * r.rms_misfit_nominal_V},
