@@ -445,13 +445,17 @@ void start_free_presses(Evaluator& evaluator, const Presses& p, const Mesh& mesh
   std::vector<Vector> frames;
   Vector frame;
   const double log_g0 = std::log(p.sensor.contact.conductance_S_per_mm2(0.1));
-  for (double y = box.min().y() + step_mm / 2; y < box.max().y(); y += step_mm)
-    for (double x = box.min().x() + step_mm / 2; x < box.max().x(); x += step_mm)
+  const int columns = static_cast<int>(std::ceil(box.sizes().x() / step_mm));
+  const int rows = static_cast<int>(std::ceil(box.sizes().y() / step_mm));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const Vector2 c = box.min() + step_mm * Vector2(i + 0.5, j + 0.5);
       for (const double ds : {-3.0, -1.5, 0.0, 1.5, 3.0})
-        if (evaluator.scaled_frame({x, y}, log_g0 + ds, E, frame)) {
-          candidates.push_back({{x, y}, log_g0 + ds});
-          frames.push_back(frame / std::max(frame.norm(), 1e-300));
+        if (evaluator.scaled_frame(c, log_g0 + ds, E, frame)) {
+          candidates.push_back(PressFit{c, log_g0 + ds});
+          frames.emplace_back(frame / std::max(frame.norm(), 1e-300));
         }
+    }
   if (candidates.empty()) throw SolverError("sensor calibration: no point of the sheet to start an unknown press at");
   for (std::size_t i = 0; i < fits.size(); ++i) {
     if (!p.place_free[i]) continue;
