@@ -100,11 +100,10 @@ class Evaluator {
     }
     if (moved || t != theta_) {  // the Green's function only when the sheet changes
       predictor_.reset();
-      green_ =
-          dense_green_function(mesh_,
-                               p_.correction(t.data()).element_conductance_S(mesh_,
-                                                                             p_.sensor.sheet_resistance_ohm_per_sq),
-                               columns_);
+      const Vector conductance_S =
+          p_.correction(t.data()).element_conductance_S(mesh_, p_.sensor.sheet_resistance_ohm_per_sq);
+      green_ = p_.any_free ? dense_green_function(mesh_, conductance_S)  // a free press may go anywhere
+                           : blockwise_green_function(mesh_, conductance_S, blocks_);
       predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
       theta_ = t;
     }
@@ -139,21 +138,18 @@ class Evaluator {
 
  private:
   /// Each press of known place a held disc of unit conductance at its centre on the current
-  /// mesh, and the Green's function's columns the presses and the electrodes need.
+  /// mesh, and the block of the Green's function it needs: its patch's dofs (with the electrodes).
   void integrate_known(const std::vector<PressFit>& at) {
     const ElectrodeDofs dofs = number_electrode_dofs(mesh_);
-    columns_.clear();
+    blocks_.assign(at.size(), {});
     unit_loads_.resize(at.size());
-    if (!p_.any_free)  // else every column: a free press may go anywhere
-      for (int e = 0; e < dofs.electrode_count; ++e) columns_.push_back(e);  // electrode e is dof e
     for (std::size_t i = 0; i < at.size(); ++i) {
       unit_loads_[i].clear();  // integrate() appends
       if (p_.place_free[i]) continue;
       const Vector2& c = at[i].centre_mm;
       integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
-      if (!p_.any_free)
-        for (Index t : unit_loads_[i].triangles)
-          for (int k = 0; k < 3; ++k) columns_.push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
+      for (Index t : unit_loads_[i].triangles)
+        for (int k = 0; k < 3; ++k) blocks_[i].push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
     }
   }
 
@@ -246,7 +242,7 @@ class Evaluator {
   Mesh mesh_;  ///< the base mesh with the electrodes slid to shift_
   std::vector<double> shift_, theta_;
   std::unique_ptr<DiscContactIntegrator> integrator_;
-  std::vector<int> columns_;
+  std::vector<std::vector<int>> blocks_;  ///< per press of known place, its patch's dofs
   std::vector<DiscLoad> unit_loads_;
   DiscLoad load_;
   std::vector<Eigen::Matrix3d> scaled_;

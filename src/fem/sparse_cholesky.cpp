@@ -4,6 +4,8 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "emit/core/errors.hpp"
@@ -86,6 +88,41 @@ SparseMatrix SparseCholesky::selected_inverse() const {
   SparseMatrix Z(n, n);
   Z.setFromTriplets(entries.begin(), entries.end());
   return Z;
+}
+
+Matrix SparseCholesky::inverse_block(const std::vector<int>& index) const {
+  if (!impl_->factorized) throw std::logic_error("SparseCholesky::inverse_block before factorize");
+  const SparseMatrix& L = impl_->ldlt.matrixL().nestedExpression();  // strictly lower, unit diagonal
+  const Vector& D = impl_->ldlt.vectorD();
+  const auto& permuted = impl_->ldlt.permutationP().indices();  // A's index a is row permuted[a] of L
+  const int n = static_cast<int>(L.cols());
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  const double* l_value = L.valuePtr();
+  // Forward solves L y = e_r along the elimination tree (a column's parent is its first row).
+  std::vector<double> work(static_cast<std::size_t>(n), 0.0);
+  std::vector<int> compact(static_cast<std::size_t>(n), -1), rows;  // union of the paths
+  std::vector<std::vector<std::pair<int, double>>> y(index.size());
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    if (index[k] < 0 || index[k] >= n) throw std::out_of_range("SparseCholesky::inverse_block: an index out of range");
+    work[static_cast<std::size_t>(permuted[index[k]])] = 1.0;
+    for (int j = permuted[index[k]]; j >= 0; j = start[j] < start[j + 1] ? row[start[j]] : -1) {
+      const double v = work[static_cast<std::size_t>(j)];
+      work[static_cast<std::size_t>(j)] = 0;
+      for (int p = start[j]; p < start[j + 1]; ++p) work[static_cast<std::size_t>(row[p])] -= l_value[p] * v;
+      y[k].emplace_back(j, v / std::sqrt(D[j]));  // D^{-1/2} y: the block is then a Gram matrix
+      if (compact[static_cast<std::size_t>(j)] < 0) {
+        compact[static_cast<std::size_t>(j)] = static_cast<int>(rows.size());
+        rows.push_back(j);
+      }
+    }
+  }
+  Matrix Y = Matrix::Zero(static_cast<Index>(rows.size()), static_cast<Index>(index.size()));
+  for (std::size_t k = 0; k < index.size(); ++k)
+    for (const auto& [j, v] : y[k]) Y(compact[static_cast<std::size_t>(j)], static_cast<Index>(k)) = v;
+  Matrix block(Y.cols(), Y.cols());
+  block.noalias() = Y.transpose() * Y;
+  return block;
 }
 
 }  // namespace emit

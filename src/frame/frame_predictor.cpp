@@ -53,13 +53,13 @@ void FramePredictor::gather_green() {
     const auto column = green_.column(patch_dofs_[j]);
     for (Index i = 0; i < p; ++i) {
       const int previous_i = previous_j < 0 ? -1 : previous_patch_of_dof_[patch_dofs_[i]];
-      G_pp_(i, j) = previous_i < 0 ? column[patch_dofs_[i]] : previous_G_pp_(previous_i, previous_j);
+      G_pp_(i, j) = previous_i < 0 ? column[green_.row(patch_dofs_[i])] : previous_G_pp_(previous_i, previous_j);
     }
   }
   G_pe_.resize(p, N);
   for (int e = 0; e < N; ++e) {
     const auto column = green_.column(e);
-    for (Index i = 0; i < p; ++i) G_pe_(i, e) = column[patch_dofs_[i]];
+    for (Index i = 0; i < p; ++i) G_pe_(i, e) = column[green_.row(patch_dofs_[i])];
   }
 }
 

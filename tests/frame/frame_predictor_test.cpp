@@ -156,6 +156,36 @@ TEST(FramePredictor, AgreesWithTheSparseForwardModel) {
   }
 }
 
+// A Green's function kept only on each press's block (its patch and the electrodes): each
+// press's frame, read from its own block, is the full Green's function's to round-off, although
+// the entries between the blocks were never computed.
+TEST(FramePredictor, BlockwiseGreenFunctionGivesTheFullOnesFrames) {
+  const Mesh& mesh = default_mesh();
+  const Sensor sensor = default_sensor();
+  const Vector conductance_S = Vector::Constant(mesh.triangle_count(), 1.0 / sensor.sheet_resistance_ohm_per_sq);
+  const DenseGreenFunction full = dense_green_function(mesh, conductance_S);
+  const ElectrodeDofs dofs = number_electrode_dofs(mesh);
+  const std::vector<Press> presses{{30, 30, 5, 8}, {12, 47, 4, 5}, {22.5, 2, 3, 4}};
+  std::vector<ContactLoad> loads;
+  std::vector<std::vector<int>> blocks;
+  for (const Press& press : presses) {
+    loads.push_back(press_contact_load(mesh, {press}, sensor.contact));
+    blocks.emplace_back();
+    for (Index t : loads.back().triangles)
+      for (int k = 0; k < 3; ++k) blocks.back().push_back(dofs.dof_of_node[mesh.triangles(t, k)]);
+  }
+  const DenseGreenFunction blockwise = blockwise_green_function(mesh, conductance_S, blocks);
+  EXPECT_LT(blockwise.G0.rows(), dofs.dof_count / 4);  // only the blocks' dofs are kept
+  FramePredictor from_full(mesh, full), from_blocks(mesh, blockwise);
+  for (const ContactLoad& load : loads) {
+    Frame exact, predicted;
+    from_full.predict(load.triangles, load.local_S, sensor.drive_voltage_V, exact);
+    from_blocks.predict(load.triangles, load.local_S, sensor.drive_voltage_V, predicted);
+    // The same identities on G0 entries computed by different solves: solution round-off.
+    EXPECT_LT((predicted - exact).cwiseAbs().maxCoeff(), test::solve_roundoff * exact.cwiseAbs().maxCoeff());
+  }
+}
+
 TEST(FramePredictor, DerivativeMatchesFiniteDifferences) {
   const Mesh& mesh = default_mesh();
   const Sensor sensor = default_sensor();

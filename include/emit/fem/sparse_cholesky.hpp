@@ -9,6 +9,7 @@
 /// 172 vs 313 ms at 95k; bench/forward_bench), and its L, D and permutation are plain Eigen
 /// objects, which selected inversion needs.
 #include <memory>
+#include <vector>
 
 #include "emit/core/types.hpp"
 
@@ -36,6 +37,12 @@ class SparseCholesky {
   /// Returned lower triangle (row ≥ column) in A's own ordering; A⁻¹(i, j) for an (i, j) coupled
   /// in A is `Z.coeff(max(i, j), min(i, j))`.
   SparseMatrix selected_inverse() const;
+
+  /// A⁻¹ on the rows and columns `index` (m indices of A's own ordering): a dense m × m block.
+  /// L⁻¹Pe_a is nonzero only on the path from a to the root of the elimination tree, so the block
+  /// costs m such sparse forward solves and one product over the union of their paths
+  /// (A⁻¹(a, b) = yₐᵀD⁻¹y_b), not m full solves of n each.
+  Matrix inverse_block(const std::vector<int>& index) const;
 
  private:
   struct Impl;
