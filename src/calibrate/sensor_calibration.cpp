@@ -74,16 +74,18 @@ struct PressFit {
 };
 
 /// The presses' misfits (predicted − measured)/σ for one sensor (θ, shifts, R, E): the Green's
-/// function of the corrected sheet on the slid mesh (on the columns the presses and electrodes
-/// need, every column when a press's place is free; kept while θ and the shifts stay), then per
-/// press its own unknowns by a small damped Gauss–Newton, warm-started. One per thread.
+/// function of the corrected sheet on the slid mesh (on each press's block: its patch, or for a
+/// press of unknown place the neighbourhood it may move in, with the electrodes; kept while θ,
+/// the shifts and the blocks stay), then per press its own unknowns by a small damped
+/// Gauss–Newton, warm-started. One per thread.
 class Evaluator {
  public:
-  explicit Evaluator(const Presses& presses) : p_(presses) {}
+  /// `whole_sheet`: every column of the Green's function, for a search over the whole sheet.
+  Evaluator(const Presses& presses, bool whole_sheet = false) : p_(presses), whole_sheet_(whole_sheet) {}
 
-  /// The sheet and electrodes of the next evaluations. False when the electrodes cannot slide
-  /// that far (Ceres then rejects the step).
-  bool set_sheet(const double* theta, const double* shift, const std::vector<PressFit>& known_centres) {
+  /// The sheet and electrodes of the next evaluations, the presses' blocks placed for `fits`.
+  /// False when the electrodes cannot slide that far (Ceres then rejects the step).
+  bool set_sheet(const double* theta, const double* shift, const std::vector<PressFit>& fits) {
     const std::vector<double> t(theta, theta + p_.box.terms()), d(shift, shift + p_.electrodes());
     const bool moved = !predictor_ || d != shift_;
     if (moved) {
@@ -95,34 +97,52 @@ class Evaluator {
         return false;  // beyond the room to slide
       }
       integrator_ = std::make_unique<DiscContactIntegrator>(mesh_, p_.options.edge_mm, 3, p_.sensor.shape);
-      integrate_known(known_centres);
+      integrate_known(fits);
       shift_ = d;
     }
-    if (moved || t != theta_) {  // the Green's function only when the sheet changes
-      predictor_.reset();
-      const Vector conductance_S =
-          p_.correction(t.data()).element_conductance_S(mesh_, p_.sensor.sheet_resistance_ohm_per_sq);
-      green_ = p_.any_free ? dense_green_function(mesh_, conductance_S)  // a free press may go anywhere
-                           : blockwise_green_function(mesh_, conductance_S, blocks_);
-      predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
-      theta_ = t;
-    }
+    bool recentred = false;  // a press of unknown place gone far from its block's centre
+    if (!moved && !whole_sheet_)
+      for (std::size_t i = 0; i < fits.size(); ++i)
+        if (p_.place_free[i] && (fits[i].centre_mm - block_centre_[i]).norm() > recentre_mm) {
+          place_block(i, fits[i].centre_mm);
+          recentred = true;
+        }
+    const bool changed = moved || recentred || t != theta_;  // the Green's function only then
+    theta_ = t;
+    if (changed) compute_green();
     return true;
   }
 
   /// Every press's residuals for series resistances R and drive E on the sheet set, each press's
-  /// unknowns warm-started from `fits` and left there.
+  /// unknowns warm-started from `fits` and left there. A press of unknown place that ends near
+  /// its block's edge has its block recentred and is fitted again (a few times at most), so that
+  /// the blocks never bound a fit.
   bool residuals(const std::vector<double>& series_ohm, double E, std::vector<PressFit>& fits, double* residuals) {
     set_series_resistance(series_ohm);
     const int M = p_.readings();
+    std::vector<std::size_t> walled;
     for (std::size_t i = 0; i < fits.size(); ++i) {
       double* r = residuals + static_cast<std::ptrdiff_t>(i) * M;
       if (!(p_.place_free[i] ? fit_free(E, i, fits[i], r) : fit_known(E, i, fits[i].log_g, r))) return false;
+      if (near_edge(i, fits[i])) walled.push_back(i);
+    }
+    for (int round = 0; round < 4 && !walled.empty(); ++round) {
+      for (const std::size_t i : walled) place_block(i, fits[i].centre_mm);
+      compute_green();
+      std::vector<std::size_t> again;
+      for (const std::size_t i : walled) {
+        if (!fit_free(E, i, fits[i], residuals + static_cast<std::ptrdiff_t>(i) * M)) return false;
+        if (near_edge(i, fits[i])) again.push_back(i);
+      }
+      walled.swap(again);
     }
     return true;
   }
 
-  void set_series_resistance(const std::vector<double>& ohm) { predictor_->set_series_resistance(ohm); }
+  void set_series_resistance(const std::vector<double>& ohm) {
+    series_ohm_ = ohm;
+    predictor_->set_series_resistance(ohm);
+  }
 
   /// The frame, in units of the noise, of a disc of log conductance s at c: the starting search's.
   bool scaled_frame(const Vector2& c, double s, double E, Vector& out) {
@@ -138,19 +158,69 @@ class Evaluator {
 
  private:
   /// Each press of known place a held disc of unit conductance at its centre on the current
-  /// mesh, and the block of the Green's function it needs: its patch's dofs (with the electrodes).
+  /// mesh; each press's block of the Green's function (with the electrodes): a known press's
+  /// patch, an unknown one's neighbourhood.
   void integrate_known(const std::vector<PressFit>& at) {
-    const ElectrodeDofs dofs = number_electrode_dofs(mesh_);
+    dofs_ = number_electrode_dofs(mesh_);
     blocks_.assign(at.size(), {});
+    block_centre_.assign(at.size(), Vector2::Zero());
+    block_triangles_.assign(at.size(), {});
     unit_loads_.resize(at.size());
     for (std::size_t i = 0; i < at.size(); ++i) {
       unit_loads_[i].clear();  // integrate() appends
-      if (p_.place_free[i]) continue;
+      if (p_.place_free[i]) {
+        if (!whole_sheet_) place_block(i, at[i].centre_mm);
+        continue;
+      }
       const Vector2& c = at[i].centre_mm;
       integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, 1.0}, unit_loads_[i]);  // C is linear in g
-      for (Index t : unit_loads_[i].triangles)
-        for (int k = 0; k < 3; ++k) blocks_[i].push_back(dofs.dof_of_node[mesh_.triangles(t, k)]);
+      blocks_[i] = patch_dofs(unit_loads_[i]);
     }
+  }
+
+  /// The sorted dofs of a load's triangles.
+  std::vector<int> patch_dofs(const DiscLoad& load) const {
+    std::vector<int> dofs;
+    for (Index t : load.triangles)
+      for (int k = 0; k < 3; ++k) dofs.push_back(dofs_.dof_of_node[mesh_.triangles(t, k)]);
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
+  }
+
+  /// Press i's block: the dofs a disc may touch within block_margin_mm of c.
+  void place_block(std::size_t i, const Vector2& c) {
+    DiscLoad reach;
+    integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm + block_margin_mm, 1.0}, reach);
+    blocks_[i] = patch_dofs(reach);
+    block_triangles_[i] = reach.triangles;
+    block_centre_[i] = c;
+  }
+
+  /// The Green's function of the sheet θ on the mesh and blocks set, and its predictor.
+  void compute_green() {
+    predictor_.reset();
+    const Vector conductance_S =
+        p_.correction(theta_.data()).element_conductance_S(mesh_, p_.sensor.sheet_resistance_ohm_per_sq);
+    green_ = whole_sheet_ ? dense_green_function(mesh_, conductance_S)
+                          : blockwise_green_function(mesh_, conductance_S, blocks_);
+    predictor_ = std::make_unique<FramePredictor>(mesh_, green_);
+    if (!series_ohm_.empty()) predictor_->set_series_resistance(series_ohm_);
+  }
+
+  /// Whether press i, of unknown place, has come within a millimetre of its block's edge.
+  bool near_edge(std::size_t i, const PressFit& fit) const {
+    return !whole_sheet_ && p_.place_free[i] && (fit.centre_mm - block_centre_[i]).norm() > block_margin_mm - 1;
+  }
+
+  /// Whether the load lies in press i's block (always, with the whole sheet's Green's function).
+  bool in_block(std::size_t i, const DiscLoad& load) const {
+    if (whole_sheet_) return true;
+    for (Index t : load.triangles)
+      for (int k = 0; k < 3; ++k)
+        if (!std::binary_search(blocks_[i].begin(), blocks_[i].end(), dofs_.dof_of_node[mesh_.triangles(t, k)]))
+          return false;
+    return true;
   }
 
   /// Gauss–Newton on s = log g (∂C/∂s = C); leaves the press's residuals in `residuals`.
@@ -180,10 +250,12 @@ class Evaluator {
   /// The residuals of press i held at (c, s) into r, their cost ½|r|², and with `derivatives`
   /// the Jacobian in (x, y, s) into J_. Infinite off the sheet.
   double press_cost(double E, std::size_t i, const Vector2& c, double s, bool derivatives, double* r) {
-    if (!chart_on_sheet(mesh_, p_.sensor.shape, c)) return std::numeric_limits<double>::infinity();
+    const bool on_sheet = whole_sheet_ ? chart_on_sheet(mesh_, p_.sensor.shape, c)
+                                       : chart_on_sheet(mesh_, p_.sensor.shape, c, block_triangles_[i]);
+    if (!on_sheet) return std::numeric_limits<double>::infinity();
     load_.clear();
     integrator_->integrate({c.x(), c.y(), p_.options.prior_radius_mm, std::exp(s)}, load_, derivatives);
-    if (load_.triangles.empty()) return std::numeric_limits<double>::infinity();
+    if (load_.triangles.empty() || !in_block(i, load_)) return std::numeric_limits<double>::infinity();
     predictor_->predict(load_.triangles, load_.local_S, E, frame_);
     const int M = p_.readings();
     double cost = 0;
@@ -238,11 +310,18 @@ class Evaluator {
     return std::isfinite(cost);
   }
 
+  /// A press of unknown place moves within its block: block_margin_mm beyond its disc, the block
+  /// recentred (a new Green's function) once the press is recentre_mm from the block's centre.
+  static constexpr double block_margin_mm = 3, recentre_mm = 1;
   const Presses& p_;
+  bool whole_sheet_;
   Mesh mesh_;  ///< the base mesh with the electrodes slid to shift_
-  std::vector<double> shift_, theta_;
+  ElectrodeDofs dofs_;
+  std::vector<double> shift_, theta_, series_ohm_;
   std::unique_ptr<DiscContactIntegrator> integrator_;
-  std::vector<std::vector<int>> blocks_;  ///< per press of known place, its patch's dofs
+  std::vector<std::vector<int>> blocks_;  ///< per press, the sorted dofs of its block
+  std::vector<Vector2> block_centre_;     ///< per press of unknown place, where its block is
+  std::vector<std::vector<Index>> block_triangles_;  ///< and the triangles its block's disc touches
   std::vector<DiscLoad> unit_loads_;
   DiscLoad load_;
   std::vector<Eigen::Matrix3d> scaled_;
@@ -320,7 +399,7 @@ class PressesCost : public ceres::CostFunction {
         value[static_cast<std::size_t>(d.index)] += d.step;
         std::vector<PressFit> warm = fits;
         const bool ok =
-            evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits_) &&
+            evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
             evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm, moved.data());
         value[static_cast<std::size_t>(d.index)] -= d.step;
         if (!ok) {
@@ -542,7 +621,7 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
   SensorCalibration result;
   result.presses = static_cast<int>(dV.size());
   if (presses.any_free) {
-    Evaluator search(presses);
+    Evaluator search(presses, true);
     search.set_sheet(x.theta.data(), x.shift_mm.data(), start);
     search.set_series_resistance(presses.series_ohm(x.series.data()));
     if (progress) progress("sensor calibration: placing the presses of unknown place");

@@ -15,16 +15,23 @@ Vector3 Mesh::triangle_centroid_mm(Index t) const {
          3.0;
 }
 
-bool Mesh::contains_xy(const Vector2& p) const {
-  for (Index t = 0; t < triangle_count(); ++t) {
-    double sign[3];
-    for (int k = 0; k < 3; ++k) {
-      const Vector2 a = nodes_mm.row(triangles(t, k)).head<2>(), b = nodes_mm.row(triangles(t, (k + 1) % 3)).head<2>();
-      sign[k] = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
-    }
-    if ((sign[0] >= 0 && sign[1] >= 0 && sign[2] >= 0) || (sign[0] <= 0 && sign[1] <= 0 && sign[2] <= 0)) return true;
+bool Mesh::triangle_contains_xy(Index t, const Vector2& p) const {
+  double sign[3];
+  for (int k = 0; k < 3; ++k) {
+    const Vector2 a = nodes_mm.row(triangles(t, k)).head<2>(), b = nodes_mm.row(triangles(t, (k + 1) % 3)).head<2>();
+    sign[k] = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
   }
+  return (sign[0] >= 0 && sign[1] >= 0 && sign[2] >= 0) || (sign[0] <= 0 && sign[1] <= 0 && sign[2] <= 0);
+}
+
+bool Mesh::contains_xy(const Vector2& p) const {
+  for (Index t = 0; t < triangle_count(); ++t)
+    if (triangle_contains_xy(t, p)) return true;
   return false;
+}
+
+bool Mesh::contains_xy(const Vector2& p, const std::vector<Index>& among) const {
+  return std::any_of(among.begin(), among.end(), [&](Index t) { return triangle_contains_xy(t, p); });
 }
 
 std::vector<std::array<int, 2>> Mesh::border_edges() const {

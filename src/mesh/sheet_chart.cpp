@@ -21,6 +21,10 @@ bool chart_on_sheet(const Mesh& mesh, const Shape& shape, const Vector2& c) {
   return cylinder_box(shape).contains(c);
 }
 
+bool chart_on_sheet(const Mesh& mesh, const Shape& shape, const Vector2& c, const std::vector<Index>& near_triangles) {
+  return shape.kind == ShapeKind::cylinder ? chart_on_sheet(mesh, shape, c) : mesh.contains_xy(c, near_triangles);
+}
+
 Eigen::AlignedBox2d chart_box(const Mesh& mesh, const Shape& shape) {
   if (shape.kind == ShapeKind::cylinder) return cylinder_box(shape);
   return {mesh.nodes_mm.leftCols<2>().colwise().minCoeff().transpose(),

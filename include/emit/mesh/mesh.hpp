@@ -30,6 +30,10 @@ struct Mesh {
   std::vector<std::array<int, 2>> electrode_edges(int e) const;
   /// Whether the point (x, y) lies on some triangle, seen from +z (flat sheets).
   bool contains_xy(const Vector2& point_mm) const;
+  /// The same among the given triangles only (a neighbourhood known to hold the point if any does).
+  bool contains_xy(const Vector2& point_mm, const std::vector<Index>& among) const;
+  /// Whether the point lies on triangle t, seen from +z.
+  bool triangle_contains_xy(Index t, const Vector2& point_mm) const;
   /// All border edges (edges used by exactly one triangle).
   std::vector<std::array<int, 2>> border_edges() const;
 };
