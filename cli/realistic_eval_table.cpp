@@ -83,6 +83,13 @@ void print_realistic_evaluation(const RealisticEvaluation& e) {
   print_row(("four presses >= " + apart + ", all " + within).c_str(), "-",
             of_frames(e.four_presses, k.multi_press_frames), format(">= %.0f %%", 100 * T::four_presses),
             e.four_presses >= T::four_presses);
+  const ParameterCoverage& sp = e.sheet_parameters;
+  if (sp.parameters > 0)
+    print_row("sheet parameters within their 2 sigma of the truth", "-",
+              std::to_string(sp.within_2_sigma) + " of " + std::to_string(sp.parameters) + " (1 sigma " +
+                  std::to_string(sp.within_1_sigma) + ")",
+              format(">= %.0f %%", 100 * T::parameters_within_2_sigma),
+              sp.within_2_sigma >= T::parameters_within_2_sigma * sp.parameters);
   print_row("calibration, wall time", "-", format("%.1f s", e.calibration_s), format("<= %.0f s", T::calibration_s),
             e.calibration_s <= T::calibration_s);
   print_row("contact fitting, a frame of one press", "-", format("%.1f ms", e.fit_ms_per_frame), "", true);

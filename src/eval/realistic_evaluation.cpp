@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "emit/core/errors.hpp"
+#include "emit/model/fit_model.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/pipeline/press_calibration.hpp"
 #include "emit/twin/press_scripts.hpp"
@@ -231,7 +232,11 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
       calibrate_from_presses(eval_case.sensor, calibration_options, runs.reference, runs.calibration_frames, given,
                              progress.stage);
   result.calibration_s = seconds_since(calibration_start);
-  if (calibration.sheet) result.calibration_warnings = calibration.sheet->warnings;
+  if (calibration.sheet) {
+    result.calibration_warnings = calibration.sheet->warnings;
+    result.sheet_parameters = parameter_coverage(
+        *calibration.sheet, parameter_truth(*calibration.sheet, sheet, fit_mesh(eval_case.sensor)));
+  }
 
   evaluate_paper(eval_case, runs, result, progress);
   {  // the nominal description, as before calibrating; its models freed before the calibrated ones

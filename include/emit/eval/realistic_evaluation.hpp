@@ -23,6 +23,7 @@
 
 #include "emit/core/progress.hpp"
 #include "emit/eval/contact_scoring.hpp"
+#include "emit/eval/parameter_truth.hpp"
 #include "emit/eval/sheet_evaluation.hpp"
 #include "emit/twin/realistic_sheet.hpp"
 
@@ -71,6 +72,8 @@ struct RealisticTargets {
   static constexpr double three_presses = 0.95, four_presses = 0.90;     ///< every press matched
   static constexpr double false_contacts = 0.02;                         ///< of single presses
   static constexpr double calibration_s = 60;
+  /// The sensor calibration's parameters within their reported 2σ of the truth (over many sheets).
+  static constexpr double parameters_within_2_sigma = 0.95;
 };
 
 /// The field calibration's targets (issue "calibrate a sheet where it is used"): presses at unknown
@@ -110,6 +113,9 @@ struct RealisticEvaluation {
   double fit_ms_per_frame = 0;      ///< wall time a calibrated test frame (one press)
   double several_ms_per_frame = 0;  ///< and a frame of three or four presses
   std::vector<std::string> calibration_warnings;
+  /// The sensor calibration's parameters against the sheet's truth in their own terms
+  /// (parameter_truth.hpp): how often the reported σ covers it.
+  ParameterCoverage sheet_parameters;
 };
 
 /// The round on `eval_case`'s sheet (its sensor must have an analytic border). `progress` is told
