@@ -16,9 +16,11 @@
 /// each evaluation (variable projection: the outer problem has the sheet's, the electrodes' and
 /// the drive's parameters only). Weak priors (the plausible range of a real sheet) keep a
 /// parameter the presses cannot see at its nominal value; identifiability is read from the fit's
-/// Jacobian: a parameter is *determined* when the presses shrink its uncertainty below half its
-/// prior's (the posterior 1σ from (JᵀJ + prior)⁻¹, scaled by the misfit per reading when the model
-/// misfits beyond the noise).
+/// Jacobian: a parameter is *determined* when the presses shrink its statistical uncertainty
+/// below half its prior's (the posterior 1σ from (JᵀJ + prior)⁻¹, scaled by the misfit per
+/// reading when the model misfits beyond the noise). The reported σ adds the model's own error in
+/// quadrature (a floor per kind of parameter, measured over realistic sheets: docs/physics.md,
+/// "How sure"), so that it covers the truth of a real sheet, not only the noise.
 ///
 /// What presses cannot tell, by the physics (docs/physics.md, "Self-calibration"):
 /// - the sheet's overall resistance: scaling σ by s is the same as scaling every contact
@@ -41,9 +43,9 @@ namespace emit {
 struct CalibratedParameter {
   std::string name;  ///< "sheet θ_u", "drive_voltage_V", "series_resistance_ohm[3]"
   double value = 0;  ///< in the unit its name says
-  double std = 0;    ///< posterior 1σ
+  double std = 0;    ///< 1σ: the posterior's and the model's error in quadrature
   double prior_std = 0;
-  bool determined = false;  ///< std < half of prior_std: the presses, not the prior, set it
+  bool determined = false;  ///< the posterior's σ < half of prior_std: the presses, not the prior, set it
 };
 
 struct SensorCalibrationOptions {
