@@ -405,12 +405,17 @@ class PressesCost : public ceres::CostFunction {
           d = which == 0 ? directions[front++] : directions[--back];  // the first takes the cheap end
         }
         std::vector<double>& value = blocks[static_cast<std::size_t>(d.block)];
-        value[static_cast<std::size_t>(d.index)] += d.step;
-        std::vector<PressFit> warm = fits;
-        const bool ok =
-            evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
-            evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm, moved.data());
-        value[static_cast<std::size_t>(d.index)] -= d.step;
+        const auto stepped = [&](double step) {
+          value[static_cast<std::size_t>(d.index)] += step;
+          std::vector<PressFit> warm = fits;
+          const bool ok =
+              evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
+              evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm, moved.data());
+          value[static_cast<std::size_t>(d.index)] -= step;
+          return ok;
+        };
+        bool ok = stepped(d.step);
+        if (!ok && d.block == 3 && stepped(-d.step)) ok = true, d.step = -d.step;  // a shift at its room's end
         if (!ok) {
           const std::lock_guard<std::mutex> lock(taking);
           failed = true;
