@@ -41,10 +41,10 @@ constexpr double shift_bound_mm = 1.5;  // slide_electrodes refuses what its roo
 // to the statistical σ in quadrature. Measured as the spread of fitted − true (eval/parameter_truth)
 // over 24 realistic 60 mm sheets (seeds 1–24, 40 labelled presses each): the floor under which
 // 97.5 % of each kind lie within 2σ; checked on other sheets (labelled and unplaced).
-constexpr double theta_model_std = 0.024;
-constexpr double log_drive_model_std = 0.0032;
-constexpr double series_model_std = 1.66;  // × 100 Ω
-constexpr double shift_model_std_mm = 0.225;
+constexpr double theta_model_std = 0.023;
+constexpr double log_drive_model_std = 0.0035;
+constexpr double series_model_std = 1.68;  // × 100 Ω
+constexpr double shift_model_std_mm = 0.21;
 
 /// What every evaluation of the presses' misfit shares: the sensor, its base mesh, each press's
 /// readings and whether its place is known.
@@ -148,6 +148,32 @@ class Evaluator {
     return true;
   }
 
+  /// The presses' residuals with their own unknowns held at `fits`, not fitted again: a Jacobian
+  /// step's (the refit's first-order effect is then projected out, PressesCost).
+  bool held_residuals(const std::vector<double>& series_ohm, double E, const std::vector<PressFit>& fits,
+                      double* residuals) {
+    set_series_resistance(series_ohm);
+    const int M = p_.readings();
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+      double* r = residuals + static_cast<std::ptrdiff_t>(i) * M;
+      if (p_.place_free[i]) {
+        if (!std::isfinite(press_cost(E, i, fits[i].centre_mm, fits[i].log_g, false, r))) return false;
+        continue;
+      }
+      const DiscLoad& unit = unit_loads_[i];
+      scaled_.resize(unit.local_S.size());
+      for (std::size_t t = 0; t < scaled_.size(); ++t) scaled_[t] = std::exp(fits[i].log_g) * unit.local_S[t];
+      predictor_->predict(unit.triangles, scaled_, E, frame_);
+      for (int k = 0; k < M; ++k)
+        r[k] = (frame_.data()[p_.measurements.frame_index[static_cast<std::size_t>(k)]] - p_.dV[i][k]) / p_.noise_V;
+    }
+    return std::all_of(residuals, residuals + p_.residual_count(), [](double r) { return std::isfinite(r); });
+  }
+
+  /// Per press, the last fit's Jacobian of its residuals in its own unknowns (M × 1: log g; M × 3:
+  /// x, y, log g), at the point the residuals were left at.
+  const std::vector<Matrix>& press_jacobians() const { return press_jacobians_; }
+
   void set_series_resistance(const std::vector<double>& ohm) {
     series_ohm_ = ohm;
     predictor_->set_series_resistance(ohm);
@@ -236,6 +262,9 @@ class Evaluator {
   bool fit_known(double E, std::size_t i, double& s, double* residuals) {
     const DiscLoad& unit = unit_loads_[i];
     const int M = p_.readings();
+    press_jacobians_.resize(p_.dV.size());
+    Matrix& J = press_jacobians_[i];
+    J.resize(M, 1);
     for (int iteration = 0; iteration < 40; ++iteration) {
       scaled_.resize(unit.local_S.size());
       for (std::size_t t = 0; t < scaled_.size(); ++t) scaled_[t] = std::exp(s) * unit.local_S[t];
@@ -246,6 +275,7 @@ class Evaluator {
         const int at = p_.measurements.frame_index[static_cast<std::size_t>(r)];
         residuals[r] = (frame_.data()[at] - p_.dV[i][r]) / p_.noise_V;
         const double j = d_frame_.data()[at] / p_.noise_V;
+        J(r, 0) = j;
         jr += j * residuals[r], jj += j * j;
       }
       if (!std::isfinite(jr) || !(jj > 0)) return false;
@@ -316,6 +346,8 @@ class Evaluator {
         if (mu > 1e8) break;  // no step lowers the cost: a minimum to the precision there is
       }
     }
+    press_jacobians_.resize(p_.dV.size());
+    press_jacobians_[i] = J_;  // at the last accepted point, where the residuals are
     return std::isfinite(cost);
   }
 
@@ -327,6 +359,7 @@ class Evaluator {
   Mesh mesh_;  ///< the base mesh with the electrodes slid to shift_
   ElectrodeDofs dofs_;
   std::vector<double> shift_, theta_, series_ohm_;
+  std::vector<Matrix> press_jacobians_;
   std::unique_ptr<DiscContactIntegrator> integrator_;
   std::vector<std::vector<int>> blocks_;  ///< per press, the sorted dofs of its block
   std::vector<Vector2> block_centre_;     ///< per press of unknown place, where its block is
@@ -342,8 +375,9 @@ class Evaluator {
 };
 
 /// The presses' misfit as one Ceres residual block over the blocks θ, log E, R and the shifts,
-/// its Jacobian by forward differences of the profiled residuals (the presses' own unknowns
-/// solved again for each step, warm-started from the point's). The steps that change the sheet
+/// its Jacobian by forward differences with the presses' own unknowns held at the point's fit,
+/// each press's part then less its projection on that press's own Jacobian (variable projection
+/// in Kaufman's form: the refit to first order, without refitting). The steps that change the sheet
 /// or the electrodes need a Green's function each; they are shared between threads (each its own
 /// Evaluator), the cheap ones (R, E) go first on the evaluator that holds the point's sheet.
 class PressesCost : public ceres::CostFunction {
@@ -389,6 +423,11 @@ class PressesCost : public ceres::CostFunction {
       for (int k = 0; k < parameter_block_sizes()[static_cast<std::size_t>(block)]; ++k)
         directions.push_back({block, k, steps[static_cast<std::size_t>(block)]});
     }
+    // Each press's own Jacobian as an orthonormal basis (thin Q), for the projection below.
+    const int M = p_.readings();
+    std::vector<Matrix> own;
+    for (const Matrix& J : base.press_jacobians())
+      own.emplace_back(Eigen::HouseholderQR<Matrix>(J).householderQ() * Matrix::Identity(M, J.cols()));
     std::mutex taking;
     std::size_t front = 0, back = directions.size();
     bool failed = false;
@@ -407,10 +446,9 @@ class PressesCost : public ceres::CostFunction {
         std::vector<double>& value = blocks[static_cast<std::size_t>(d.block)];
         const auto stepped = [&](double step) {
           value[static_cast<std::size_t>(d.index)] += step;
-          std::vector<PressFit> warm = fits;
-          const bool ok =
-              evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
-              evaluator.residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), warm, moved.data());
+          const bool ok = evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
+                          evaluator.held_residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()),
+                                                   fits, moved.data());
           value[static_cast<std::size_t>(d.index)] -= step;
           return ok;
         };
@@ -421,10 +459,16 @@ class PressesCost : public ceres::CostFunction {
           failed = true;
           return;
         }
+        // Each press's own refit, to first order: its column less its projection on the press's
+        // own Jacobian (variable projection, Kaufman's Jacobian).
+        Eigen::Map<Vector> column(moved.data(), R);
+        column = (column - Eigen::Map<const Vector>(residuals, R)) / d.step;
+        for (std::size_t i = 0; i < own.size(); ++i) {
+          auto part = column.segment(static_cast<Index>(i) * M, M);
+          part -= own[i] * (own[i].transpose() * part);
+        }
         const int size = parameter_block_sizes()[static_cast<std::size_t>(d.block)];
-        for (int k = 0; k < R; ++k)
-          jacobians[d.block][static_cast<std::ptrdiff_t>(k) * size + d.index] =
-              (moved[static_cast<std::size_t>(k)] - residuals[k]) / d.step;
+        for (int k = 0; k < R; ++k) jacobians[d.block][static_cast<std::ptrdiff_t>(k) * size + d.index] = column[k];
       }
     };
     if (evaluators_.size() == 1) {
