@@ -63,7 +63,8 @@ std::vector<std::vector<int>> press_blocks(const Mesh& mesh) {
 
 void BM_GreenFunction40Presses(benchmark::State& state, bool blockwise) {
   const Mesh mesh = fit_mesh(round().sensor);
-  const Vector conductance_S = Vector::Constant(mesh.triangle_count(), 1.0 / round().sensor.sheet_resistance_ohm_per_sq);
+  const Vector conductance_S =
+      Vector::Constant(mesh.triangle_count(), 1.0 / round().sensor.sheet_resistance_ohm_per_sq);
   const std::vector<std::vector<int>> blocks = press_blocks(mesh);
   std::vector<int> columns;
   for (int e = 0; e < number_electrode_dofs(mesh).electrode_count; ++e) columns.push_back(e);

@@ -90,7 +90,7 @@ struct PressFit {
 class Evaluator {
  public:
   /// `whole_sheet`: every column of the Green's function, for a search over the whole sheet.
-  Evaluator(const Presses& presses, bool whole_sheet = false) : p_(presses), whole_sheet_(whole_sheet) {}
+  explicit Evaluator(const Presses& presses, bool whole_sheet = false) : p_(presses), whole_sheet_(whole_sheet) {}
 
   /// The sheet and electrodes of the next evaluations, the presses' blocks placed for `fits`.
   /// False when the electrodes cannot slide that far (Ceres then rejects the step).
@@ -361,8 +361,8 @@ class Evaluator {
   std::vector<double> shift_, theta_, series_ohm_;
   std::vector<Matrix> press_jacobians_;
   std::unique_ptr<DiscContactIntegrator> integrator_;
-  std::vector<std::vector<int>> blocks_;  ///< per press, the sorted dofs of its block
-  std::vector<Vector2> block_centre_;     ///< per press of unknown place, where its block is
+  std::vector<std::vector<int>> blocks_;             ///< per press, the sorted dofs of its block
+  std::vector<Vector2> block_centre_;                ///< per press of unknown place, where its block is
   std::vector<std::vector<Index>> block_triangles_;  ///< and the triangles its block's disc touches
   std::vector<DiscLoad> unit_loads_;
   DiscLoad load_;
@@ -447,8 +447,8 @@ class PressesCost : public ceres::CostFunction {
         const auto stepped = [&](double step) {
           value[static_cast<std::size_t>(d.index)] += step;
           const bool ok = evaluator.set_sheet(blocks[0].data(), blocks[3].data(), fits) &&
-                          evaluator.held_residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()),
-                                                   fits, moved.data());
+                          evaluator.held_residuals(p_.series_ohm(blocks[2].data()), p_.drive_V(blocks[1].data()), fits,
+                                                   moved.data());
           value[static_cast<std::size_t>(d.index)] -= step;
           return ok;
         };

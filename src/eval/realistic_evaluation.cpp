@@ -234,8 +234,8 @@ RealisticEvaluation evaluate_realistic_sheet(const EvalCase& eval_case, const Re
   result.calibration_s = seconds_since(calibration_start);
   if (calibration.sheet) {
     result.calibration_warnings = calibration.sheet->warnings;
-    result.sheet_parameters = parameter_coverage(
-        *calibration.sheet, parameter_truth(*calibration.sheet, sheet, fit_mesh(eval_case.sensor)));
+    result.sheet_parameters =
+        parameter_coverage(*calibration.sheet, parameter_truth(*calibration.sheet, sheet, fit_mesh(eval_case.sensor)));
   }
 
   evaluate_paper(eval_case, runs, result, progress);

@@ -90,7 +90,8 @@ TEST(SparseCholesky, InverseBlockMatchesTheDenseInverse) {
   double worst = 0;
   for (std::size_t a = 0; a < index.size(); ++a)
     for (std::size_t b = 0; b < index.size(); ++b)
-      worst = std::max(worst, std::abs(block(static_cast<Index>(a), static_cast<Index>(b)) - inverse(index[a], index[b])));
+      worst =
+          std::max(worst, std::abs(block(static_cast<Index>(a), static_cast<Index>(b)) - inverse(index[a], index[b])));
   EXPECT_LE(worst, test::solve_roundoff * inverse.cwiseAbs().maxCoeff());
   EXPECT_THROW(cholesky.inverse_block({n}), std::out_of_range);
 }

@@ -22,7 +22,7 @@ std::vector<double> parameter_truth(const SensorCalibration& calibration, const 
                                     const Mesh& fit_mesh);
 
 struct ParameterCoverage {
-  int parameters = 0;                     ///< compared
+  int parameters = 0;                          ///< compared
   int within_1_sigma = 0, within_2_sigma = 0;  ///< |value − truth| ≤ 1σ, 2σ (the reported σ)
 };
 
