@@ -254,6 +254,12 @@ void add_eval_command(CLI::App& app) {
                   "(default 20,30,50,75,100,150,200,300,440; those past the held-out presses are skipped)")
       ->delimiter(',')
       ->needs(real);
+  cmd->add_option("--rail", a->real.options.readings.rail,
+                  "With --real: the board's largest reading (its ADC's rail); a reading at or above it is clipped and "
+                  "left out (default: found from the data, the largest value when it recurs in 1 % of the frames)")
+      ->type_name("VALUE")
+      ->check(CLI::PositiveNumber)
+      ->needs(real);
   cmd->add_option("--contacts", a->real.contacts_path,
                   "With --real: write the located presses as JSON Lines (\"frame\": the row of frames.csv)")
       ->type_name("FILE")

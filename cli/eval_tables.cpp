@@ -91,6 +91,30 @@ void print_stats(const char* what, const ErrorStats& e) {
               e.p95, e.count, e.missed > 0 ? (", " + std::to_string(e.missed) + " not found").c_str() : "");
 }
 
+/// The readings masked and dropped (model/reading_screen.hpp), with a warning on stderr naming
+/// the worst channels when any was.
+void print_reading_survey(const RealEvaluation& e) {
+  const ReadingSurvey& s = e.survey;
+  const std::vector<Index> dropped = s.dropped(), worst = s.worst(5);
+  std::printf("  readings: %ld masked in %ld of %ld frames%s", static_cast<long>(s.masked_readings),
+              static_cast<long>(s.frames_with_bad), static_cast<long>(e.presses),
+              s.rail_found ? "" : (std::isfinite(s.screen.rail) ? "; rail as stated" : "; no rail found"));
+  if (s.rail_found) std::printf("; rail found at %g", s.screen.rail);
+  std::printf("; %zu channels dropped\n", dropped.size());
+  if (worst.empty()) return;
+  std::string named;
+  for (const Index m : worst)
+    named += (named.empty() ? "" : ", ") + std::to_string(m) + " (" +
+             std::to_string(s.bad_frames[static_cast<std::size_t>(m)]) +
+             (s.bad_frames[static_cast<std::size_t>(m)] == 1 ? " frame" : " frames") +
+             (s.screen.is_dropped(m) ? ", dropped" : "") + ")";
+  std::fprintf(stderr, "emit: warning: readings that cannot be used (not positive, not finite or at the rail) were left out; worst channels: %s\n",
+               named.c_str());
+  if (!e.unusable_calibration_presses.empty())
+    std::fprintf(stderr, "emit: warning: %zu calibration presses had no reading to use and were left out\n",
+                 e.unusable_calibration_presses.size());
+}
+
 }  // namespace
 
 void print_sheet_evaluation(const EvalCase& eval_case, const SheetEvalReport& report, bool sweep) {
@@ -111,8 +135,10 @@ void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report)
               job.folder.c_str(), report.sensor_name.c_str(), static_cast<long>(e.presses),
               static_cast<long>(e.readings), static_cast<long>(e.calibration_presses - 1),
               static_cast<long>(e.test_from), static_cast<long>(e.presses - 1));
-  std::printf("  press response: degree %d, shrinkage %.1f (chosen by %d-fold cross-validation: %.2f mm)\n",
-              e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm);
+  print_reading_survey(e);
+  std::printf("  press response: degree %d, shrinkage %.1f (chosen by %d-fold cross-validation: %.2f mm); drift rate %.2f\n",
+              e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm,
+              e.fit.drift_rate);
   print_stats("held-out presses, position error", e.held_out);
   print_stats("always answering the presses' centre", e.held_out_centre);
   if (e.held_out_image) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -22,6 +23,10 @@ void PressResponseFitOptions::validate() const {
       throw InvalidInput("press response: shrinkages: each must be in [0, 1], got " + std::to_string(rho));
   if (folds < 2) throw InvalidInput("press response: folds must be at least 2, got " + std::to_string(folds));
   if (grid_divisions < 2) throw InvalidInput("press response: grid_divisions must be at least 2");
+  if (drift_rates.empty()) throw InvalidInput("press response: drift rates: give at least one (0: none)");
+  for (const double f : drift_rates)
+    if (!(f >= 0 && f < 1))
+      throw InvalidInput("press response: drift rates: each must be in [0, 1), got " + std::to_string(f));
 }
 
 namespace {
@@ -76,6 +81,36 @@ std::vector<Vector2> grown_region(const std::vector<Vector2>& hull, double press
   return grown;
 }
 
+/// Fills the masked (NaN) entries of `changes` from the model at each press's place, the model
+/// fitted to the presses with what is known, twice; each filled row renormalised. \return the
+/// number of rows filled.
+Index fill_masked(Matrix& changes, const std::vector<Vector2>& positions_mm, int degree, const PressResponse& base) {
+  const Matrix measured = changes;
+  const Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> masked = measured.array().isNaN();
+  std::vector<Index> rows, all(static_cast<std::size_t>(changes.rows()));
+  for (Index i = 0; i < changes.rows(); ++i) {
+    all[static_cast<std::size_t>(i)] = i;
+    if (masked.row(i).any()) rows.push_back(i);
+  }
+  if (rows.empty()) return 0;
+  changes = masked.select(0.0, measured.array()).matrix();
+  Vector basis(response_basis_size(degree)), model(changes.cols());
+  for (int round = 0; round < 2; ++round) {
+    const PressResponse r = fit_one(changes, positions_mm, all, degree, 1.0, base);
+    for (const Index i : rows) {
+      r.basis_at(positions_mm[static_cast<std::size_t>(i)], basis);
+      model.noalias() = r.coefficients.transpose() * basis;
+      double dm = 0, mm = 0;  // the press's amplitude, from the readings used
+      for (Index m = 0; m < changes.cols(); ++m)
+        if (!masked(i, m)) dm += measured(i, m) * model(m), mm += model(m) * model(m);
+      const double a = mm > 0 ? dm / mm : 0;
+      for (Index m = 0; m < changes.cols(); ++m) changes(i, m) = masked(i, m) ? a * model(m) : measured(i, m);
+      if (const double norm = changes.row(i).norm(); norm > 0) changes.row(i) /= norm;
+    }
+  }
+  return static_cast<Index>(rows.size());
+}
+
 }  // namespace
 
 PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
@@ -100,6 +135,10 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   base.region_mm = grown_region(base.region_mm, static_cast<double>(n));
 
   PressResponseFit fit;
+  const Matrix& measured = changes;  // NaN where masked: the cross-validation locates these
+  Matrix filled = changes;
+  fit.filled_presses = fill_masked(filled, positions_mm, options.degrees.front(), base);
+
   const long total = static_cast<long>(options.degrees.size() * options.shrinkages.size());
   long done = 0;
   for (const int degree : options.degrees)
@@ -109,9 +148,9 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
       for (int fold = 0; fold < options.folds; ++fold) {
         std::vector<Index> train, test;
         for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
-        PressLocator locator(fit_one(changes, positions_mm, train, degree, shrinkage, base), options.grid_divisions);
+        PressLocator locator(fit_one(filled, positions_mm, train, degree, shrinkage, base), options.grid_divisions);
         for (const Index i : test) {
-          const LocatedPress located = locator.locate_change(changes.row(i).transpose());
+          const LocatedPress located = locator.locate_change(measured.row(i).transpose());
           error += located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
                                  : 2 * base.scale_mm;
         }
@@ -125,8 +164,38 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   });
   std::vector<Index> all(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
-  fit.response = fit_one(changes, positions_mm, all, kept->degree, kept->shrinkage, base);
+  fit.response = fit_one(filled, positions_mm, all, kept->degree, kept->shrinkage, base);
   fit.kept = *kept;
+
+  // The drift rate, as a live session would meet it: the first half calibrates, the second is
+  // located in order. Half a calibration is too short for most drift to show, so the fastest
+  // rate whose cost there is within the noise (its paired excess over the best rate within one
+  // standard error) is kept: tracking costs little on a skin that holds still, and gains much on
+  // one that drifts.
+  std::vector<Index> first(all.begin(), all.begin() + n / 2);
+  const PressResponse half = fit_one(filled, positions_mm, first, kept->degree, kept->shrinkage, base);
+  std::vector<Vector> errors;
+  for (const double rate : options.drift_rates) {
+    PressLocator locator(half, PressLocatorOptions{options.grid_divisions, rate, {}, -1});
+    Vector& error = errors.emplace_back(n - n / 2);
+    for (Index i = n / 2; i < n; ++i) {
+      const LocatedPress located = locator.locate_change(measured.row(i).transpose());
+      error(i - n / 2) = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
+                                       : 2 * base.scale_mm;
+    }
+    fit.drift_errors_mm.push_back(error.mean());
+  }
+  const auto best = static_cast<std::size_t>(
+      std::min_element(fit.drift_errors_mm.begin(), fit.drift_errors_mm.end()) - fit.drift_errors_mm.begin());
+  fit.drift_rate = options.drift_rates[best];
+  for (std::size_t r = 0; r < errors.size(); ++r) {
+    const Vector excess = errors[r] - errors[best];
+    const double mean = excess.mean();
+    const double standard_error =
+        std::sqrt((excess.array() - mean).square().sum() / static_cast<double>(std::max<Index>(excess.size() - 1, 1)) /
+                  static_cast<double>(excess.size()));
+    if (mean <= standard_error) fit.drift_rate = std::max(fit.drift_rate, options.drift_rates[r]);
+  }
   return fit;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 #include "emit/core/errors.hpp"
@@ -39,19 +40,23 @@ void RealEvalOptions::validate(Index presses, const std::string& folder) const {
 
 namespace {
 
-/// The normalised changes of presses [first, last) as rows, and their centres. A frame whose
-/// change cannot be formed (a value not positive) is named.
-void changes_of(const RealDataset& data, Index first, Index last, Matrix& changes, std::vector<Vector2>& positions) {
+/// The normalised changes of presses [first, last) as rows (NaN where masked), and their
+/// centres; presses with no change that can be used are left out and listed in `unusable`.
+void changes_of(const RealDataset& data, const ReadingScreen& screen, Index first, Index last, Matrix& changes,
+                std::vector<Vector2>& positions, std::vector<Index>* unusable) {
   changes.resize(last - first, data.readings());
   positions.clear();
   Vector change(data.readings());
+  Index rows = 0;
   for (Index i = first; i < last; ++i) {
-    if (!(relative_change(data.frames.row(i).transpose(), data.references.row(i).transpose(), change) > 0))
-      throw InvalidInput(data.folder + ": press " + std::to_string(i) +
-                         ": a value or its reference is not positive, or the frame equals its reference");
-    changes.row(i - first) = change.transpose();
+    if (!(relative_change(data.frames.row(i).transpose(), data.references.row(i).transpose(), change, screen) > 0)) {
+      if (unusable) unusable->push_back(i);
+      continue;
+    }
+    changes.row(rows++) = change.transpose();
     positions.push_back(data.contacts[static_cast<std::size_t>(i)].front());
   }
+  changes.conservativeResize(rows, Eigen::NoChange);
 }
 
 /// Locate presses from..end with `locator`; the errors of those from test_from on.
@@ -70,8 +75,8 @@ ErrorStats held_out_errors(const RealDataset& data, PressLocator& locator, Index
 }
 
 /// The held-out presses located by the difference image alone (RealEvalOptions::image).
-ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index test_from, long& triangles,
-                        const Progress& progress) {
+ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, const ReadingScreen& screen, Index test_from,
+                        long& triangles, const Progress& progress) {
   progress.say("the physics alone: meshing, the relative conductivity Jacobian, the NOSER operator");
   const Mesh mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
   triangles = static_cast<long>(mesh.triangle_count());
@@ -83,8 +88,15 @@ ErrorStats image_errors(const RealDataset& data, const Sensor& sensor, Index tes
   std::vector<double> errors;
   int missed = 0;
   for (Index i = test_from; i < data.presses(); ++i) {
-    change = (data.frames.row(i).array() / data.references.row(i).array()).log().transpose();
-    if (!change.allFinite()) {  // a value or its reference not positive: not located, as by the response
+    // A masked reading or a dropped channel reads as no change: the image is linear.
+    bool any = false;
+    for (Index m = 0; m < change.size(); ++m) {
+      const double v = data.frames(i, m), ref = data.references(i, m);
+      const bool used = !screen.is_dropped(m) && screen.usable(v, ref);
+      change(m) = used ? std::log(v / ref) : 0;
+      any = any || used;
+    }
+    if (!any) {
       ++missed;
       continue;
     }
@@ -121,21 +133,26 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   e.test_from = options.test_from < 0 ? data.presses() - data.presses() / 5 : options.test_from;
   e.calibration_presses = options.calibration_presses;
 
+  progress.say("surveying the readings");
+  e.survey = survey_readings(data.frames, data.references, options.readings);
+  PressLocatorOptions locating{options.grid_divisions, 0, e.survey.screen, -1};
   Matrix changes;
   std::vector<Vector2> positions;
   // The curve, then the calibration asked for (its contacts written, its time measured).
   for (const Index n : options.curve) {
     if (n < 2 * static_cast<Index>(options.fit.folds) || n > e.test_from || n == options.calibration_presses) continue;
     progress.say("the curve: calibrating on the first " + std::to_string(n) + " presses");
-    changes_of(data, 0, n, changes, positions);
+    changes_of(data, e.survey.screen, 0, n, changes, positions, nullptr);
     const PressResponseFit fit = fit_press_response(changes, positions, options.fit);
-    PressLocator locator(fit.response, options.grid_divisions);
-    e.curve.push_back({n, held_out_errors(data, locator, e.test_from, nullptr, e.test_from), fit.kept});
+    locating.drift_rate = fit.drift_rate;
+    PressLocator locator(fit.response, locating);
+    e.curve.push_back({n, held_out_errors(data, locator, e.test_from, nullptr, n), fit.kept});
   }
   progress.say("calibrating on the first " + std::to_string(e.calibration_presses) + " presses");
-  changes_of(data, 0, e.calibration_presses, changes, positions);
+  changes_of(data, e.survey.screen, 0, e.calibration_presses, changes, positions, &e.unusable_calibration_presses);
   e.fit = fit_press_response(changes, positions, options.fit, progress);
-  PressLocator locator(e.fit.response, options.grid_divisions);
+  locating.drift_rate = e.fit.drift_rate;
+  PressLocator locator(e.fit.response, locating);
   progress.say("locating presses " + std::to_string(e.calibration_presses) + " to " + std::to_string(e.presses - 1));
   const auto start = std::chrono::steady_clock::now();
   e.held_out = held_out_errors(data, locator, e.test_from, &e.located, e.calibration_presses);
@@ -148,7 +165,7 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   for (Index i = e.test_from; i < e.presses; ++i)
     centre.push_back((data.contacts[static_cast<std::size_t>(i)].front() - e.fit.response.center_mm).norm());
   e.held_out_centre = summarize_errors(centre, 0);
-  if (options.image) e.held_out_image = image_errors(data, sensor, e.test_from, e.image_triangles, progress);
+  if (options.image) e.held_out_image = image_errors(data, sensor, e.survey.screen, e.test_from, e.image_triangles, progress);
   return e;
 }
 

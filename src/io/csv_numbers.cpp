@@ -10,7 +10,8 @@
 
 namespace emit {
 
-void parse_csv_numbers(const std::string& line, const LineReader& lines, std::vector<double>& values) {
+void parse_csv_numbers(const std::string& line, const LineReader& lines, std::vector<double>& values,
+                       bool allow_not_finite) {
   values.clear();
   const char* p = line.c_str();
   const char* const line_end = p + line.size();
@@ -25,7 +26,7 @@ void parse_csv_numbers(const std::string& line, const LineReader& lines, std::ve
                          quote_input(std::string_view(p, static_cast<std::size_t>(field_end - p))) +
                          " is not a number");
     }
-    if (!std::isfinite(value))
+    if (!allow_not_finite && !std::isfinite(value))
       throw InvalidInput(lines.where() + ": value " + std::to_string(values.size() + 1) + " is " +
                          std::string(p, static_cast<std::size_t>(end - p)));
     values.push_back(value);

@@ -21,7 +21,7 @@ Matrix read_rows(const std::string& path, const std::string& what, Index width, 
   Index rows = 0;
   for (std::string line; lines.next(line);) {
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    parse_csv_numbers(line, lines, row);
+    parse_csv_numbers(line, lines, row, true);  // a reading not finite is masked (model/reading_screen.hpp)
     if (width == 0) width = static_cast<Index>(row.size());
     if (static_cast<Index>(row.size()) != width)
       throw InvalidInput(lines.where() + ": " + std::to_string(row.size()) + " values, the frames have " +

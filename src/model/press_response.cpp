@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace emit {
 
@@ -55,12 +56,15 @@ std::vector<Vector2> convex_hull(std::vector<Vector2> points) {
 }
 
 double relative_change(const Eigen::Ref<const Vector>& frame, const Eigen::Ref<const Vector>& reference,
-                       Eigen::Ref<Vector> change) {
+                       Eigen::Ref<Vector> change, const ReadingScreen& screen) {
+  double norm2 = 0;
   for (Index m = 0; m < frame.size(); ++m) {
-    if (!(frame(m) > 0 && reference(m) > 0 && std::isfinite(frame(m)) && std::isfinite(reference(m)))) return 0;
-    change(m) = std::log(frame(m) / reference(m));
+    if (screen.is_dropped(m)) change(m) = 0;
+    else if (screen.usable(frame(m), reference(m))) change(m) = std::log(frame(m) / reference(m));
+    else change(m) = std::numeric_limits<double>::quiet_NaN();
+    if (std::isfinite(change(m))) norm2 += change(m) * change(m);
   }
-  const double norm = change.norm();
+  const double norm = std::sqrt(norm2);
   if (!(norm > 0)) return 0;
   change /= norm;
   return norm;

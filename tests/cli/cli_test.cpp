@@ -1171,8 +1171,9 @@ std::string hydrogel_folder() {
 
 // emit eval --real as a user runs it on the real hydrogel skin (Hardman et al. 2023): calibrated on
 // its first 100 presses, the held-out presses 440–549 are located within the target of
-// 5 mm mean (4.68 mm measured; the data set's kNN floor is 8.1 mm with 440 presses, the authors'
-// own method 11–14 mm); every later press is written as a contact, and the curve is drawn.
+// 4 mm mean (3.91 mm measured, with the drift tracked; the data set's kNN floor is 8.1 mm with 440
+// presses, the authors' own method 11–14 mm); every later press is written as a contact, and the
+// curve is drawn.
 TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
   const std::string data = hydrogel_folder();
   if (data.empty()) GTEST_SKIP() << "no real data at " << test::real_data_dir() << " (cmake -DEMIT_REAL_DATA_DIR=...)";
@@ -1183,7 +1184,7 @@ TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   double mean_mm = -1;
   ASSERT_EQ(read_row(r.out, "held-out presses, position error", " %lf", &mean_mm), 1) << r.out;
-  EXPECT_LT(mean_mm, 5.0) << r.out;
+  EXPECT_LT(mean_mm, 4.0) << r.out;
   EXPECT_GT(mean_mm, 0.0) << r.out;
   EXPECT_NE(r.out.find("   50 presses:"), std::string::npos) << r.out;
   const std::string contacts = test::read_text(d + "/contacts.jsonl");
@@ -1194,6 +1195,40 @@ TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
   ASSERT_EQ(first.size(), 1u);
   EXPECT_LT(std::hypot(first[0].x_mm, first[0].y_mm), 72.0);  // within the presses' reach
   EXPECT_TRUE(std::ifstream(d + "/plots/real_error_vs_calibration.png").good());
+
+  // A board that glitches: 11 frames of 550 (2 %) each with one reading dropped to 0, not a number,
+  // or clipped at a rail of 1e5 (in 6 frames, so the survey finds it). The evaluation masks them,
+  // names the worst channels, and places the held-out presses within 0.2 mm of the clean data's.
+  const std::string glitchy = d + "/glitchy";
+  std::filesystem::create_directories(glitchy);
+  for (const char* name : {"references_per_frame.csv", "truth.csv"})
+    std::filesystem::copy_file(data + "/" + name, glitchy + "/" + name);
+  {
+    std::istringstream in(test::read_text(data + "/frames.csv"));
+    std::ofstream out(glitchy + "/frames.csv");
+    int row = 0, glitch = 0;
+    for (std::string line; std::getline(in, line); ++row) {
+      if (row % 50 == 7) {  // frames 7, 57, …, 507: 4 of them held out or calibrating
+        std::vector<std::string> values;
+        std::stringstream fields(line);
+        for (std::string v; std::getline(fields, v, ',');) values.push_back(v);
+        values[static_cast<std::size_t>((37 * row) % 192)] = glitch < 3 ? "0" : glitch < 5 ? "nan" : "100000";
+        ++glitch;
+        line.clear();
+        for (std::size_t k = 0; k < values.size(); ++k) line += (k ? "," : "") + values[k];
+      }
+      out << line << '\n';
+    }
+  }
+  const auto bad = run_emit("eval --real " + glitchy + " --sensor " + sensor +
+                            " --calibration-presses 100 --curve none --plots ''");
+  ASSERT_EQ(bad.exit_code, 0) << bad.err;
+  EXPECT_NE(bad.out.find("readings: 11 masked in 11 of 550 frames; rail found at 100000"), std::string::npos)
+      << bad.out;
+  EXPECT_NE(bad.err.find("emit: warning: readings that cannot be used"), std::string::npos) << bad.err;
+  double glitchy_mm = -1;
+  ASSERT_EQ(read_row(bad.out, "held-out presses, position error", " %lf", &glitchy_mm), 1) << bad.out;
+  EXPECT_LT(glitchy_mm, mean_mm + 0.2) << bad.out;
 
   // A sensor without a protocol, and an EMIT command given the current-injection skin: one line each.
   const auto emit_sheet = run_emit("eval --real " + data + " --sensor " +

@@ -3,7 +3,10 @@
 // allocates nothing per frame.
 #include "emit/frame/press_locator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -69,13 +72,104 @@ TEST(PressLocator, AllocatesNothingPerFrameAndRefusesWhatItCannotRead) {
     EXPECT_EQ(counter.count(), 0);
   }
   EXPECT_FALSE(locator.locate(reference, reference).found);  // no change
+  // A value that is not positive is masked, the rest located (allocating nothing either).
   frame(0) = -1;
-  EXPECT_FALSE(locator.locate(frame, reference).found);  // a value that is not positive
+  {
+    test::AllocationCounter counter;
+    const LocatedPress masked = locator.locate(frame, reference);
+    EXPECT_EQ(counter.count(), 0);
+    EXPECT_TRUE(masked.found);
+    EXPECT_EQ(masked.masked, 1);
+  }
+  // More than a quarter of the readings masked (7 of 24): not located.
+  for (Index m = 0; m < 7; ++m) frame(m) = 0;
+  const LocatedPress too_many = locator.locate(frame, reference);
+  EXPECT_FALSE(too_many.found);
+  EXPECT_EQ(too_many.masked, 7);
   EXPECT_EQ(test::error_of([&] { locator.locate(Vector::Ones(5), reference); }),
             "press locator: a frame of 5 values and a reference of 24 for a response of 24 readings");
   PressResponse none = known_response();
   none.region_mm.clear();
   EXPECT_EQ(test::error_of([&] { PressLocator{none}; }), "press locator: the press response has no region to search");
+}
+
+/// known_response() with a random dense Λ (SPD: AAᵀ + I), so that masking couples the readings.
+PressResponse correlated_response() {
+  PressResponse r = known_response();
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal;
+  Matrix a(24, 24);
+  for (Index i = 0; i < a.size(); ++i) a(i) = 0.3 * normal(random);
+  r.precision = a * a.transpose() + Matrix::Identity(24, 24);
+  return r;
+}
+
+// Masked readings are marginalised exactly: locating with readings 𝓑 masked gives the answer of
+// the response without them, whose precision is the inverse of the covariance Σ = Λ⁻¹ left without
+// 𝓑's rows and columns (the Gaussian's marginal), to rounding.
+TEST(PressLocator, MaskingIsTheMarginalOfTheReadingsLeft) {
+  const PressResponse full = correlated_response();
+  const std::vector<Index> masked{2, 5, 17}, kept = [&] {
+    std::vector<Index> k;
+    for (Index m = 0; m < 24; ++m)
+      if (std::find(masked.begin(), masked.end(), m) == masked.end()) k.push_back(m);
+    return k;
+  }();
+  PressResponse reduced = full;
+  const Matrix covariance = full.precision.inverse();
+  reduced.coefficients = full.coefficients(Eigen::all, kept);
+  reduced.precision = Matrix(covariance(kept, kept)).inverse();
+  PressLocator with_mask(full, 30), without(reduced, 30);
+  std::mt19937 random(9);
+  std::normal_distribution<double> normal;
+  for (int k = 0; k < 10; ++k) {
+    Vector frame(24), reference = Vector::Constant(24, 1000);
+    for (Index m = 0; m < 24; ++m) frame(m) = 1000 * std::exp(0.02 * normal(random));
+    Vector masked_frame = frame;
+    for (const Index m : masked) masked_frame(m) = std::numeric_limits<double>::quiet_NaN();
+    const LocatedPress a = with_mask.locate(masked_frame, reference);
+    const LocatedPress b = without.locate(frame(kept), reference(kept));
+    ASSERT_EQ(a.found, b.found);
+    if (!a.found) continue;
+    EXPECT_EQ(a.masked, 3);
+    EXPECT_LT((a.position_mm - b.position_mm).norm(), 1e-9) << "frame " << k;
+    EXPECT_NEAR(a.explained, b.explained, 1e-9);
+  }
+}
+
+// A response that drifted by a constant change δ₀ (40 % of a press's own) after calibration: the
+// locator that learns the drift from its own answers places the later presses better than one
+// that does not (measured: 0.70 against 2.02 mm over the last 30 of 150 presses; asserted ×2: a
+// press's amplitude, fitted with δ₀ in the frame, takes up δ₀'s part along m(p), which varies
+// with p, so δ₀ is learned only in part).
+TEST(PressLocator, LearnsADriftFromThePressesItLocates) {
+  const PressResponse response = known_response();
+  std::mt19937 random(21);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> angle(0, 6.283), radius(0, 25);
+  Vector offset(24);
+  for (Index m = 0; m < 24; ++m) offset(m) = 0.4 * normal(random);
+  PressLocatorOptions learning;
+  learning.grid_divisions = 30;
+  learning.drift_rate = 0.1;
+  PressLocator drifting(response, learning), still(response, 30);
+  const Vector reference = Vector::Constant(24, 1000);
+  Vector basis(response_basis_size(3));
+  double error_learning = 0, error_still = 0;
+  for (int k = 0; k < 150; ++k) {
+    const Vector2 p = response.center_mm + radius(random) * Vector2(std::cos(angle(random)), std::sin(angle(random)));
+    response.basis_at(p, basis);
+    Vector change = response.coefficients.transpose() * basis;
+    change = change / change.norm() + offset / std::sqrt(24.0);
+    const Vector frame = (reference.array() * (0.02 * change).array().exp()).matrix();
+    const LocatedPress a = drifting.locate(frame, reference), b = still.locate(frame, reference);
+    if (k < 120) continue;
+    error_learning += a.found ? (a.position_mm - p).norm() : 60;
+    error_still += b.found ? (b.position_mm - p).norm() : 60;
+  }
+  EXPECT_LT(2 * error_learning, error_still) << error_learning / 30 << " against " << error_still / 30 << " mm";
+  drifting.reset_drift();
+  EXPECT_EQ(drifting.drift().norm(), 0);
 }
 
 }  // namespace

@@ -52,11 +52,24 @@ TEST(PressResponse, RelativeChangeIsTheNormalisedLogRatio) {
   EXPECT_NEAR(size, log_ratio.norm(), 1e-15);
   EXPECT_NEAR((d - log_ratio / log_ratio.norm()).norm(), 0, 1e-15);
   EXPECT_EQ(relative_change(reference, reference, d), 0);  // no change to normalise
+  // A reading that cannot be used is masked (NaN), the rest normalised; a dropped channel reads 0.
   Vector bad = frame;
   bad(1) = 0;
-  EXPECT_EQ(relative_change(bad, reference, d), 0);
+  EXPECT_NEAR(relative_change(bad, reference, d), std::log(1.01), 1e-15);
+  EXPECT_EQ(d(0), 1);
+  EXPECT_TRUE(std::isnan(d(1)));
+  EXPECT_EQ(d(2), 0);
   bad(1) = std::nan("");
-  EXPECT_EQ(relative_change(bad, reference, d), 0);
+  EXPECT_TRUE(relative_change(bad, reference, d) > 0 && std::isnan(d(1)));
+  ReadingScreen screen;
+  screen.rail = 150;  // 198 and 200 are clipped
+  screen.dropped = {0, 1, 0};
+  EXPECT_NEAR(relative_change(frame, reference, d, screen), std::log(1.01), 1e-15);
+  EXPECT_EQ(d(1), 0);
+  screen.dropped = {0, 0, 0};
+  EXPECT_TRUE(relative_change(frame, reference, d, screen) > 0 && std::isnan(d(1)));
+  bad.setConstant(-1);
+  EXPECT_EQ(relative_change(bad, reference, d), 0);  // nothing to use
 }
 
 }  // namespace

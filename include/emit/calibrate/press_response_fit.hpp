@@ -7,6 +7,15 @@
 /// located best by k-fold cross-validation (each fold located by a model fitted without it,
 /// frame/press_locator.hpp). The region searched is the calibration presses' convex hull. Nothing is tuned on presses
 /// outside the calibration set.
+///
+/// Masked readings (NaN in a press's change; model/reading_screen.hpp) are filled from the model
+/// at the press's known place (a first fit of the lowest degree, its amplitude fitted to the
+/// press's readings used), twice, before the candidates are fitted; the cross-validation locates
+/// a held-out press with them masked, as a frame is located.
+///
+/// The drift rate (frame/press_locator.hpp, "Drift") is chosen as a live session would have
+/// chosen it: the kept candidate fitted on the first half of the presses (in the order measured),
+/// the second half located in order with each rate, the rate with the least mean error kept.
 #include <vector>
 
 #include "emit/core/progress.hpp"
@@ -20,6 +29,7 @@ struct PressResponseFitOptions {
   std::vector<double> shrinkages{0.1, 0.3, 0.6, 1.0};  ///< ρ, each in [0, 1]
   int folds = 10;                                      ///< for the cross-validation; at most the number of presses
   int grid_divisions = 35;  ///< the cross-validation's location grid (coarser than per frame's 70)
+  std::vector<double> drift_rates{0, 0.01, 0.03, 0.1};  ///< each in [0, 1)
 
   /// \throw InvalidInput naming the option and the rule it breaks.
   void validate() const;
@@ -35,10 +45,13 @@ struct PressResponseFit {
   PressResponse response;
   PressResponseCandidate kept;                     ///< the one `response` is
   std::vector<PressResponseCandidate> candidates;  ///< every one tried, the kept one among them
+  double drift_rate = 0;                           ///< the one chosen
+  std::vector<double> drift_errors_mm;             ///< per drift_rates: the second half's mean error
+  Index filled_presses = 0;                        ///< presses with masked readings filled
 };
 
-/// changes: one row per press, its change (relative_change's, normalised; the fit itself takes
-/// any scale); positions_mm: its centre. \throw InvalidInput for fewer than 2 × folds presses, or rows and positions
+/// changes: one row per press in the order measured, its change (relative_change's, normalised,
+/// NaN where masked; the fit itself takes any scale); positions_mm: its centre. \throw InvalidInput for fewer than 2 × folds presses, or rows and positions
 /// that differ in number.
 PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
                                     const PressResponseFitOptions& options = {}, const Progress& progress = {});

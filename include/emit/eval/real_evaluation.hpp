@@ -15,6 +15,7 @@
 #include "emit/eval/error_stats.hpp"
 #include "emit/frame/press_locator.hpp"
 #include "emit/io/real_dataset.hpp"
+#include "emit/model/reading_screen.hpp"
 #include "emit/sensor/sensor.hpp"
 
 namespace emit {
@@ -25,6 +26,7 @@ struct RealEvalOptions {
   /// The curve's numbers of calibration presses; those beyond test_from are left out.
   std::vector<Index> curve{20, 30, 50, 75, 100, 150, 200, 300, 440};
   PressResponseFitOptions fit;
+  ReadingSurveyOptions readings;  ///< which readings to mask, which channels to drop (model/reading_screen.hpp)
   int grid_divisions = 70;  ///< the per-frame search's first grid (frame/press_locator.hpp)
   /// Also locate the held-out presses by the physics alone, with no calibration: the difference
   /// image of log(V/V_ref) (relative conductivity Jacobian on the sensor's mesh, NOSER prior,
@@ -44,6 +46,9 @@ struct RealCurvePoint {
 
 struct RealEvaluation {
   Index presses = 0, readings = 0, test_from = 0, calibration_presses = 0;
+  ReadingSurvey survey;  ///< the readings masked and the channels dropped, over every frame
+  /// Calibration presses left out: none of their readings could be used, or they did not change.
+  std::vector<Index> unusable_calibration_presses;
   PressResponseFit fit;                      ///< with calibration_presses
   ErrorStats held_out;                       ///< presses test_from …, located with `fit`
   ErrorStats held_out_centre;                ///< the same presses, always answering the calibration presses' centre
@@ -54,6 +59,8 @@ struct RealEvaluation {
   double ms_per_frame = 0;  ///< locating one frame (the held-out presses' mean)
 };
 
+/// Readings that cannot be trusted are masked, frame by frame, and channels bad in most frames
+/// dropped (model/reading_screen.hpp); a press whose readings are all unusable is left out.
 /// \throw InvalidInput when the data's frames do not have the sensor's readings (its
 /// "excitation"), when a frame holds more than one press, or as the options' validate().
 RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, const RealEvalOptions& options,

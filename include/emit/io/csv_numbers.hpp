@@ -10,8 +10,10 @@
 namespace emit {
 
 /// The numbers of `line` into `values` (cleared first; a caller that keeps it allocates nothing
-/// once it has grown). \throw InvalidInput "<path>:<line>: value k \"text\" is not a number" or
+/// once it has grown). `nan`, `inf` are taken only with allow_not_finite (a real board's readings,
+/// to be masked). \throw InvalidInput "<path>:<line>: value k \"text\" is not a number" or
 /// "… value k is inf", `lines` naming the place.
-void parse_csv_numbers(const std::string& line, const LineReader& lines, std::vector<double>& values);
+void parse_csv_numbers(const std::string& line, const LineReader& lines, std::vector<double>& values,
+                       bool allow_not_finite = false);
 
 }  // namespace emit

@@ -7,7 +7,8 @@
 ///   (or reference.csv)          one unpressed frame for them all, when there is no per-frame one
 ///   truth.csv                   header frame,contact,x_mm,y_mm[,...]: where each frame was pressed
 ///                               (more columns, such as depth_mm, are kept unread)
-/// Every value of a frame must be a finite number; every frame the same length.
+/// Every value of a frame must be a number (`nan` and `inf` are read: a board's dropped samples,
+/// masked by the evaluation, model/reading_screen.hpp); every frame the same length.
 #include <cstddef>
 #include <string>
 #include <vector>

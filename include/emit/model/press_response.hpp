@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "emit/core/types.hpp"
+#include "emit/model/reading_screen.hpp"
 
 namespace emit {
 
@@ -45,11 +46,13 @@ std::vector<Vector2> convex_hull(std::vector<Vector2> points);
 /// The number of monomials in two variables up to `degree`: (degree + 1)(degree + 2)/2.
 Index response_basis_size(int degree);
 
-/// The normalised relative change d of a frame against its reference into `change` (M entries).
-/// Allocates nothing. \return ‖log(V / V_ref)‖, the size of the change before normalising; 0,
-/// leaving `change` unspecified, when a value or a reference is not positive and finite, or when
-/// the frame equals its reference (no change to normalise).
+/// The normalised relative change d of a frame against its reference into `change` (M entries):
+/// log(V / V_ref) where the screen can use the reading and its reference, NaN where it cannot (a
+/// masked reading), 0 on a channel the screen drops; normalised over the readings used.
+/// Allocates nothing. \return ‖log(V / V_ref)‖ over the readings used, the size of the change
+/// before normalising; 0, leaving `change` unspecified, when no reading can be used or the frame
+/// equals its reference (no change to normalise).
 double relative_change(const Eigen::Ref<const Vector>& frame, const Eigen::Ref<const Vector>& reference,
-                       Eigen::Ref<Vector> change);
+                       Eigen::Ref<Vector> change, const ReadingScreen& screen = {});
 
 }  // namespace emit
