@@ -140,6 +140,8 @@ void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report)
               e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm,
               e.fit.drift_rate);
   print_stats("held-out presses, position error", e.held_out);
+  std::printf("  their sigma (k sqrt(1 - explained + u0), k %.1f mm set on the calibration): mean %.2f mm; error within 1 sigma %.0f %%, 2 sigma %.0f %%\n",
+              e.fit.response.error_scale_mm, e.held_out_sigma_mm, 100 * e.within_1sigma, 100 * e.within_2sigma);
   print_stats("always answering the presses' centre", e.held_out_centre);
   if (e.held_out_image) {
     const std::string what = "physics alone (NOSER image, " + std::to_string(e.image_triangles) + " triangles)";

@@ -141,18 +141,23 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
 
   const long total = static_cast<long>(options.degrees.size() * options.shrinkages.size());
   long done = 0;
+  // Per candidate: each press's error and 1 − explained when held out (for the σ's scale).
+  std::vector<std::vector<Vector2>> held_out_misses;
   for (const int degree : options.degrees)
     for (const double shrinkage : options.shrinkages) {
       progress.step("cross-validating press response", done++, total);
       double error = 0;
+      std::vector<Vector2>& misses = held_out_misses.emplace_back();
       for (int fold = 0; fold < options.folds; ++fold) {
         std::vector<Index> train, test;
         for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
         PressLocator locator(fit_one(filled, positions_mm, train, degree, shrinkage, base), options.grid_divisions);
         for (const Index i : test) {
           const LocatedPress located = locator.locate_change(measured.row(i).transpose());
-          error += located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                 : 2 * base.scale_mm;
+          const double e = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
+                                         : 2 * base.scale_mm;
+          error += e;
+          misses.emplace_back(e, 1 - located.explained);
         }
       }
       error /= static_cast<double>(n);
@@ -196,6 +201,40 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
                   static_cast<double>(excess.size()));
     if (mean <= standard_error) fit.drift_rate = std::max(fit.drift_rate, options.drift_rates[r]);
   }
+
+  // The σ's scale (frame/press_locator.hpp, "How sure"): u₀ the median 1 − explained of the kept
+  // candidate's cross-validation; then, for presses a model did not see, the ratios
+  // r = error / √(1 − explained + u₀), and k the least that puts 68 % of them within k and 95 %
+  // within 2k by their order statistics (split conformal: the ⌈(m + 1) q⌉-th smallest of m covers
+  // a new press with probability q or more). Two sets of such presses, k the larger of theirs:
+  // the kept candidate's cross-validation (models of nine tenths of the presses, as sure as the
+  // final one), and the second half located in order as above (a model of half the presses, but
+  // meeting the drift).
+  const std::vector<Vector2>& validated = held_out_misses[static_cast<std::size_t>(kept - fit.candidates.begin())];
+  std::vector<double> unexplained;
+  for (const Vector2& v : validated) unexplained.push_back(v.y());
+  std::nth_element(unexplained.begin(), unexplained.begin() + static_cast<std::ptrdiff_t>(unexplained.size() / 2),
+                   unexplained.end());
+  fit.response.unexplained_floor = std::max(unexplained[unexplained.size() / 2], 1e-9);
+  const auto scale_of = [&](const std::vector<Vector2>& misses) {
+    std::vector<double> ratios;
+    for (const Vector2& v : misses) ratios.push_back(v.x() / std::sqrt(v.y() + fit.response.unexplained_floor));
+    std::sort(ratios.begin(), ratios.end());
+    const auto order_statistic = [&](double q) {
+      const auto k = static_cast<std::size_t>(std::ceil((static_cast<double>(ratios.size()) + 1) * q));
+      return ratios[std::min(k, ratios.size()) - 1];
+    };
+    return std::max(order_statistic(0.68), order_statistic(0.95) / 2);
+  };
+  PressLocator locator(half, PressLocatorOptions{options.grid_divisions, fit.drift_rate, {}, -1});
+  std::vector<Vector2> in_order;
+  for (Index i = n / 2; i < n; ++i) {
+    const LocatedPress located = locator.locate_change(measured.row(i).transpose());
+    in_order.emplace_back(located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
+                                        : 2 * base.scale_mm,
+                          1 - located.explained);
+  }
+  fit.response.error_scale_mm = std::max(scale_of(in_order), scale_of(validated));
   return fit;
 }
 

@@ -159,6 +159,18 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
   e.ms_per_frame = elapsed.count() / static_cast<double>(e.presses - e.calibration_presses);
   e.curve.push_back({e.calibration_presses, e.held_out, e.fit.kept});
+  Index found = 0;
+  for (Index i = std::max(e.test_from, e.calibration_presses); i < e.presses; ++i) {
+    const LocatedPress& p = e.located[static_cast<std::size_t>(i - e.calibration_presses)];
+    if (!p.found) continue;
+    const double error = (p.position_mm - data.contacts[static_cast<std::size_t>(i)].front()).norm();
+    ++found;
+    e.within_1sigma += error <= p.std_mm ? 1 : 0;
+    e.within_2sigma += error <= 2 * p.std_mm ? 1 : 0;
+    e.held_out_sigma_mm += p.std_mm;
+  }
+  if (found > 0)
+    for (double* x : {&e.within_1sigma, &e.within_2sigma, &e.held_out_sigma_mm}) *x /= static_cast<double>(found);
   std::sort(e.curve.begin(), e.curve.end(),
             [](const auto& a, const auto& b) { return a.calibration_presses < b.calibration_presses; });
   std::vector<double> centre;

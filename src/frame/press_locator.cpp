@@ -187,6 +187,8 @@ LocatedPress PressLocator::locate_normalised() {
   located.found = true;
   located.position_mm = p;
   located.explained = dd > 0 ? std::min(1.0, best_score / dd) : 0;
+  located.std_mm = response_.error_scale_mm * std::sqrt(1 - located.explained + response_.unexplained_floor);
+  located.x_std_mm = located.y_std_mm = located.std_mm / std::sqrt(2.0);
   if (options_.drift_rate > 0) learn_drift(p);
   return located;
 }

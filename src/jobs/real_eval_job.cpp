@@ -19,6 +19,8 @@ void write_contacts(const RealEvaluation& e, std::ostream& out) {
       Contact c;
       c.x_mm = p.position_mm.x();
       c.y_mm = p.position_mm.y();
+      c.x_std_mm = p.x_std_mm;
+      c.y_std_mm = p.y_std_mm;
       contacts.push_back(c);
     }
     write_contacts_line(out, static_cast<long>(e.calibration_presses) + static_cast<long>(k), contacts);

@@ -89,6 +89,11 @@ TEST(RealEvaluation, LocatesHeldOutPressesAsCrossValidationSaid) {
   ASSERT_TRUE(e.held_out_image);
   EXPECT_EQ(e.held_out_image->missed, 1);
   EXPECT_GT(e.held_out_centre.mean, 5 * e.held_out.mean);
+  // Each press's σ, scaled on calibration presses the fit did not see (split conformal: 68 % and
+  // 95 % or more of new exchangeable presses within 1σ and 2σ, in expectation).
+  EXPECT_GT(e.fit.response.error_scale_mm, 0);
+  EXPECT_GE(e.within_1sigma, 0.68) << e.held_out_sigma_mm << " mm mean sigma";
+  EXPECT_GE(e.within_2sigma, 0.95);
 }
 
 TEST(RealEvaluation, RefusesFramesThatDoNotFitTheSensor) {

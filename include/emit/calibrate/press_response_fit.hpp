@@ -15,7 +15,12 @@
 ///
 /// The drift rate (frame/press_locator.hpp, "Drift") is chosen as a live session would have
 /// chosen it: the kept candidate fitted on the first half of the presses (in the order measured),
-/// the second half located in order with each rate, the rate with the least mean error kept.
+/// the second half located in order with each rate; the fastest rate whose paired excess error
+/// over the best rate's is within one standard error is kept (half a calibration is too short for
+/// most drift to show: tracking costs little on a skin that holds still, and gains much on one
+/// that drifts).
+/// The position σ's scale (frame/press_locator.hpp, "How sure") is set on the same half: the least
+/// that puts 68 % of its errors within 1σ and 95 % within 2σ (split conformal).
 #include <vector>
 
 #include "emit/core/progress.hpp"

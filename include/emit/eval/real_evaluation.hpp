@@ -57,6 +57,9 @@ struct RealEvaluation {
   std::vector<LocatedPress> located;         ///< presses calibration_presses …, in order
   std::vector<RealCurvePoint> curve;
   double ms_per_frame = 0;  ///< locating one frame (the held-out presses' mean)
+  /// The held-out presses found whose error is within their own σ (LocatedPress::std_mm), and 2σ.
+  double within_1sigma = 0, within_2sigma = 0;
+  double held_out_sigma_mm = 0;  ///< their σ's mean
 };
 
 /// Readings that cannot be trusted are masked, frame by frame, and channels bad in most frames

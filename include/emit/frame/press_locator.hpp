@@ -21,6 +21,13 @@
 /// locates each new frame's d − δ; δ ← (1 − f) δ + f (d − a m(p̂)), a the least-squares amplitude.
 /// It learns from located frames only (no true places): the order of frames then matters, as in
 /// a live session.
+///
+/// **How sure**: a press the model places badly is one it explains badly: on the hydrogel skin the
+/// error's correlation with √(1 − explained) is 0.37, while the likelihood's own spread over the
+/// grid, at any temperature, does not follow the error at all (0.0–0.2; Λ, fitted to 100 presses,
+/// knows the noise, not the model's error). So the position's σ is k √(1 − explained + u₀), the
+/// floor u₀ for a press explained well but placed off by the model's own bias; k and u₀ set on
+/// presses the fit did not see (calibrate/press_response_fit.hpp); along each axis σ/√2.
 #include "emit/core/types.hpp"
 #include "emit/model/press_response.hpp"
 #include "emit/model/reading_screen.hpp"
@@ -36,6 +43,9 @@ struct LocatedPress {
   /// How much of the change the model explains, in Λ's metric: (dᵀΛm)² / (mᵀΛm · dᵀΛd), in [0, 1].
   double explained = 0;
   int masked = 0;  ///< readings left out of this frame (not counting channels dropped for good)
+  /// The position's σ ("How sure" above), of the distance to the true place, and along x and y
+  /// (std_mm / √2 each); 0 when the response has no error scale.
+  double std_mm = 0, x_std_mm = 0, y_std_mm = 0;
 };
 
 struct PressLocatorOptions {

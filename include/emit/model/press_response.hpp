@@ -31,6 +31,9 @@ struct PressResponse {
   std::vector<Vector2> region_mm;
   Matrix coefficients;  ///< W, basis_size(degree) × M
   Matrix precision;     ///< Λ, M × M, symmetric positive definite
+  /// k and u₀: a located press's position σ is k √(1 − explained + u₀) (frame/press_locator.hpp,
+  /// "How sure"); set when fitted, on presses the fit did not see; k = 0: no σ.
+  double error_scale_mm = 0, unexplained_floor = 0;
 
   Index readings() const { return coefficients.cols(); }
   /// b(p) into `basis` (basis_size(degree) entries). Allocates nothing.
