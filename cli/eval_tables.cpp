@@ -91,6 +91,14 @@ void print_stats(const char* what, const ErrorStats& e) {
               e.p95, e.count, e.missed > 0 ? (", " + std::to_string(e.missed) + " not found").c_str() : "");
 }
 
+/// "degree 6", or "kernel 30 mm, smoothing 0.0001".
+std::string response_name(const PressResponseCandidate& c) {
+  if (c.kernel_length_mm == 0) return "degree " + std::to_string(c.degree);
+  char text[64];
+  std::snprintf(text, sizeof text, "kernel %g mm, smoothing %g", c.kernel_length_mm, c.smoothing);
+  return text;
+}
+
 /// The readings masked and dropped (model/reading_screen.hpp), with a warning on stderr naming
 /// the worst channels when any was.
 void print_reading_survey(const RealEvaluation& e) {
@@ -136,9 +144,9 @@ void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report)
               static_cast<long>(e.readings), static_cast<long>(e.calibration_presses - 1),
               static_cast<long>(e.test_from), static_cast<long>(e.presses - 1));
   print_reading_survey(e);
-  std::printf("  press response: degree %d, shrinkage %.1f (chosen by %d-fold cross-validation: %.2f mm); drift rate %.2f\n",
-              e.fit.kept.degree, e.fit.kept.shrinkage, job.options.fit.folds, e.fit.kept.cross_validated_mm,
-              e.fit.drift_rate);
+  std::printf("  press response: %s, shrinkage %.1f (chosen by %d-fold cross-validation: %.2f mm); drift rate %.2f\n",
+              response_name(e.fit.kept).c_str(), e.fit.kept.shrinkage, job.options.fit.folds,
+              e.fit.kept.cross_validated_mm, e.fit.drift_rate);
   print_stats("held-out presses, position error", e.held_out);
   std::printf("  their sigma (k sqrt(1 - explained + u0), k %.1f mm set on the calibration): mean %.2f mm; error within 1 sigma %.0f %%, 2 sigma %.0f %%\n",
               e.fit.response.error_scale_mm, e.held_out_sigma_mm, 100 * e.within_1sigma, 100 * e.within_2sigma);
@@ -148,10 +156,10 @@ void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report)
     print_stats(what.c_str(), *e.held_out_image);
   }
   std::printf("  %.2f ms a frame\n", e.ms_per_frame);
-  std::printf("  against calibration presses (held-out mean; cross-validated; degree):\n");
+  std::printf("  against calibration presses (held-out mean; cross-validated; response):\n");
   for (const RealCurvePoint& p : e.curve)
-    std::printf("    %4ld presses: %6.2f mm   %6.2f mm   %d\n", static_cast<long>(p.calibration_presses),
-                p.held_out.mean, p.kept.cross_validated_mm, p.kept.degree);
+    std::printf("    %4ld presses: %6.2f mm   %6.2f mm   %s\n", static_cast<long>(p.calibration_presses),
+                p.held_out.mean, p.kept.cross_validated_mm, response_name(p.kept).c_str());
   if (!job.contacts_path.empty())
     std::printf("  contacts: %s (presses %ld on)\n", job.contacts_path.c_str(),
                 static_cast<long>(e.calibration_presses));

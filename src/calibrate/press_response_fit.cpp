@@ -23,6 +23,12 @@ void PressResponseFitOptions::validate() const {
       throw InvalidInput("press response: shrinkages: each must be in [0, 1], got " + std::to_string(rho));
   if (folds < 2) throw InvalidInput("press response: folds must be at least 2, got " + std::to_string(folds));
   if (grid_divisions < 2) throw InvalidInput("press response: grid_divisions must be at least 2");
+  for (const double l : kernel_lengths_mm)
+    if (!(l > 0)) throw InvalidInput("press response: kernel lengths: each must be positive, got " + std::to_string(l));
+  if (!kernel_lengths_mm.empty() && kernel_smoothings.empty())
+    throw InvalidInput("press response: kernel smoothings: give at least one for the kernel lengths");
+  for (const double l : kernel_smoothings)
+    if (!(l > 0)) throw InvalidInput("press response: kernel smoothings: each must be positive, got " + std::to_string(l));
   if (drift_rates.empty()) throw InvalidInput("press response: drift rates: give at least one (0: none)");
   for (const double f : drift_rates)
     if (!(f >= 0 && f < 1))
@@ -31,12 +37,18 @@ void PressResponseFitOptions::validate() const {
 
 namespace {
 
-/// The response of one degree and shrinkage fitted to the presses `rows`, with the region given.
+/// The response of one candidate fitted to the presses `rows`, with the region given.
 PressResponse fit_one(const Matrix& changes, const std::vector<Vector2>& positions_mm, const std::vector<Index>& rows,
-                      int degree, double shrinkage, const PressResponse& frame_of_reference) {
+                      const PressResponseCandidate& candidate, const PressResponse& frame_of_reference) {
   PressResponse r = frame_of_reference;
-  r.degree = degree;
-  const Index n = static_cast<Index>(rows.size()), B = response_basis_size(degree), M = changes.cols();
+  r.degree = candidate.degree;
+  const double shrinkage = candidate.shrinkage;
+  if (candidate.kernel_length_mm > 0) {
+    // The bumps reach the region's margin: centres within the presses' reach and a quarter width.
+    r.kernel_length_mm = candidate.kernel_length_mm;
+    r.centres_mm = hexagonal_lattice(r.center_mm, r.scale_mm + r.kernel_length_mm / 4, r.kernel_length_mm);
+  }
+  const Index n = static_cast<Index>(rows.size()), B = r.basis_size(), M = changes.cols();
   Matrix basis(B, n), data(n, M);  // column i: press i's b(p)
   for (Index i = 0; i < n; ++i) {
     const Index row = rows[static_cast<std::size_t>(i)];
@@ -45,6 +57,15 @@ PressResponse fit_one(const Matrix& changes, const std::vector<Vector2>& positio
   }
   Matrix normal = basis * basis.transpose();
   normal.diagonal().array() += 1e-6 * static_cast<double>(n);
+  if (const auto C = static_cast<Index>(r.centres_mm.size()); C > 0) {
+    Matrix kernel(C, C);  // the bumps' prior: λ n aᵀKa
+    for (Index i = 0; i < C; ++i)
+      for (Index j = 0; j < C; ++j)
+        kernel(i, j) = std::exp(-0.5 * (r.centres_mm[static_cast<std::size_t>(i)] - r.centres_mm[static_cast<std::size_t>(j)])
+                                           .squaredNorm() /
+                                (r.kernel_length_mm * r.kernel_length_mm));
+    normal.bottomRightCorner(C, C) += candidate.smoothing * static_cast<double>(n) * kernel;
+  }
   r.coefficients = normal.ldlt().solve(basis * data);
   const Matrix residual = data - basis.transpose() * r.coefficients;
   Matrix covariance = residual.transpose() * residual / static_cast<double>(n);
@@ -85,6 +106,7 @@ std::vector<Vector2> grown_region(const std::vector<Vector2>& hull, double press
 /// fitted to the presses with what is known, twice; each filled row renormalised. \return the
 /// number of rows filled.
 Index fill_masked(Matrix& changes, const std::vector<Vector2>& positions_mm, int degree, const PressResponse& base) {
+  const PressResponseCandidate plain{degree, 1.0, 0, 0, 0};
   const Matrix measured = changes;
   const Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic> masked = measured.array().isNaN();
   std::vector<Index> rows, all(static_cast<std::size_t>(changes.rows()));
@@ -96,7 +118,7 @@ Index fill_masked(Matrix& changes, const std::vector<Vector2>& positions_mm, int
   changes = masked.select(0.0, measured.array()).matrix();
   Vector basis(response_basis_size(degree)), model(changes.cols());
   for (int round = 0; round < 2; ++round) {
-    const PressResponse r = fit_one(changes, positions_mm, all, degree, 1.0, base);
+    const PressResponse r = fit_one(changes, positions_mm, all, plain, base);
     for (const Index i : rows) {
       r.basis_at(positions_mm[static_cast<std::size_t>(i)], basis);
       model.noalias() = r.coefficients.transpose() * basis;
@@ -139,37 +161,42 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   Matrix filled = changes;
   fit.filled_presses = fill_masked(filled, positions_mm, options.degrees.front(), base);
 
-  const long total = static_cast<long>(options.degrees.size() * options.shrinkages.size());
+  std::vector<PressResponseCandidate> tried;
+  for (const int degree : options.degrees)
+    for (const double shrinkage : options.shrinkages) tried.push_back({degree, shrinkage, 0, 0, 0});
+  for (const double length : options.kernel_lengths_mm)
+    for (const double smoothing : options.kernel_smoothings)
+      for (const double shrinkage : options.shrinkages) tried.push_back({1, shrinkage, length, smoothing, 0});
+  const auto total = static_cast<long>(tried.size());
   long done = 0;
   // Per candidate: each press's error and 1 − explained when held out (for the σ's scale).
   std::vector<std::vector<Vector2>> held_out_misses;
-  for (const int degree : options.degrees)
-    for (const double shrinkage : options.shrinkages) {
-      progress.step("cross-validating press response", done++, total);
-      double error = 0;
-      std::vector<Vector2>& misses = held_out_misses.emplace_back();
-      for (int fold = 0; fold < options.folds; ++fold) {
-        std::vector<Index> train, test;
-        for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
-        PressLocator locator(fit_one(filled, positions_mm, train, degree, shrinkage, base), options.grid_divisions);
-        for (const Index i : test) {
-          const LocatedPress located = locator.locate_change(measured.row(i).transpose());
-          const double e = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                         : 2 * base.scale_mm;
-          error += e;
-          misses.emplace_back(e, 1 - located.explained);
-        }
+  for (PressResponseCandidate& candidate : tried) {
+    progress.step("cross-validating press response", done++, total);
+    double error = 0;
+    std::vector<Vector2>& misses = held_out_misses.emplace_back();
+    for (int fold = 0; fold < options.folds; ++fold) {
+      std::vector<Index> train, test;
+      for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
+      PressLocator locator(fit_one(filled, positions_mm, train, candidate, base), options.grid_divisions);
+      for (const Index i : test) {
+        const LocatedPress located = locator.locate_change(measured.row(i).transpose());
+        const double e = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
+                                       : 2 * base.scale_mm;
+        error += e;
+        misses.emplace_back(e, 1 - located.explained);
       }
-      error /= static_cast<double>(n);
-      fit.candidates.push_back({degree, shrinkage, error});
     }
+    candidate.cross_validated_mm = error / static_cast<double>(n);
+    fit.candidates.push_back(candidate);
+  }
   progress.step("cross-validating press response", total, total);
   const auto kept = std::min_element(fit.candidates.begin(), fit.candidates.end(), [](const auto& a, const auto& b) {
     return a.cross_validated_mm < b.cross_validated_mm;
   });
   std::vector<Index> all(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
-  fit.response = fit_one(filled, positions_mm, all, kept->degree, kept->shrinkage, base);
+  fit.response = fit_one(filled, positions_mm, all, *kept, base);
   fit.kept = *kept;
 
   // The drift rate, as a live session would meet it: the first half calibrates, the second is
@@ -178,7 +205,7 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   // standard error) is kept: tracking costs little on a skin that holds still, and gains much on
   // one that drifts.
   std::vector<Index> first(all.begin(), all.begin() + n / 2);
-  const PressResponse half = fit_one(filled, positions_mm, first, kept->degree, kept->shrinkage, base);
+  const PressResponse half = fit_one(filled, positions_mm, first, *kept, base);
   std::vector<Vector> errors;
   for (const double rate : options.drift_rates) {
     PressLocator locator(half, PressLocatorOptions{options.grid_divisions, rate, {}, -1});

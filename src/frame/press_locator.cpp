@@ -22,7 +22,7 @@ PressLocator::PressLocator(PressResponse response, const PressLocatorOptions& op
     : response_(std::move(response)), options_(options) {
   options_.validate();
   if (response_.region_mm.size() < 3) throw InvalidInput("press locator: the press response has no region to search");
-  const Index M = response_.readings(), B = response_basis_size(response_.degree);
+  const Index M = response_.readings(), B = response_.basis_size();
   if (!options_.screen.dropped.empty() && static_cast<Index>(options_.screen.dropped.size()) != M)
     throw InvalidInput("press locator: a screen of " + std::to_string(options_.screen.dropped.size()) +
                        " channels for a response of " + std::to_string(M) + " readings");

@@ -8,6 +8,23 @@ namespace emit {
 
 Index response_basis_size(int degree) { return static_cast<Index>(degree + 1) * (degree + 2) / 2; }
 
+Index PressResponse::basis_size() const {
+  return response_basis_size(degree) + static_cast<Index>(centres_mm.size());
+}
+
+std::vector<Vector2> hexagonal_lattice(const Vector2& centre_mm, double radius_mm, double spacing_mm) {
+  std::vector<Vector2> points;
+  const double row_step = spacing_mm * std::sqrt(3.0) / 2;
+  const int rows = static_cast<int>(std::floor(radius_mm / row_step)),
+            columns = static_cast<int>(std::floor(radius_mm / spacing_mm)) + 1;
+  for (int j = -rows; j <= rows; ++j)
+    for (int i = -columns; i <= columns; ++i) {
+      const Vector2 offset((i + (j % 2 != 0 ? 0.5 : 0.0)) * spacing_mm, j * row_step);
+      if (offset.norm() <= radius_mm) points.push_back(centre_mm + offset);
+    }
+  return points;
+}
+
 void PressResponse::basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) const {
   const double u = (p_mm.x() - center_mm.x()) / scale_mm, v = (p_mm.y() - center_mm.y()) / scale_mm;
   // Degree by degree, u^i v^(d−i) for i = 0 … d: each degree's terms from the previous degree's.
@@ -18,6 +35,8 @@ void PressResponse::basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) cons
     for (int i = 0; i < d; ++i) basis(k++) = basis(previous + i) * v;  // u^i v^(d−i)
     basis(k++) = basis(previous + d - 1) * u;                          // u^d
   }
+  const double scale = -0.5 / (kernel_length_mm * kernel_length_mm);
+  for (const Vector2& c : centres_mm) basis(k++) = std::exp(scale * (p_mm - c).squaredNorm());
 }
 
 bool PressResponse::in_region(const Vector2& p_mm) const {

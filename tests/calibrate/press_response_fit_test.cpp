@@ -19,16 +19,16 @@ struct Presses {
   std::vector<Vector2> positions;
 };
 
-/// n presses uniform in a disc of 40 mm, each change the degree-3 response at its centre plus
-/// noise of σ per reading. Not normalised, so that the truth is a cubic exactly (a normalised
-/// cubic is not one); the fit and the locator take changes of any size.
+/// n presses uniform in a disc of 40 mm, each change the true response at its centre plus
+/// noise of σ per reading. Not normalised, so that the truth is its kind exactly (a normalised
+/// cubic is not a cubic); the fit and the locator take changes of any size.
 Presses make_presses(const PressResponse& truth, int n, double sigma, unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> uniform(-1, 1);
   std::normal_distribution<double> noise(0, sigma);
   Presses p;
   p.changes.resize(n, truth.readings());
-  Vector basis(response_basis_size(truth.degree));
+  Vector basis(truth.basis_size());
   while (static_cast<int>(p.positions.size()) < n) {
     const Vector2 x(40 * uniform(random), 40 * uniform(random));
     if (x.norm() > 40) continue;
@@ -58,6 +58,7 @@ TEST(PressResponseFit, CrossValidationKeepsTheDegreeThatMadeThePresses) {
   PressResponseFitOptions options;
   options.degrees = {1, 2, 3};
   options.shrinkages = {1.0};
+  options.kernel_lengths_mm = {};
   const PressResponseFit fit = fit_press_response(calibration.changes, calibration.positions, options);
   ASSERT_EQ(fit.candidates.size(), 3u);
   EXPECT_EQ(fit.kept.degree, 3);
@@ -89,6 +90,32 @@ TEST(PressResponseFit, CrossValidationKeepsTheDegreeThatMadeThePresses) {
   ASSERT_GT(inside, 40);
   EXPECT_LT(error / inside, 2 * fit.kept.cross_validated_mm);
   EXPECT_GT(error / inside, fit.kept.cross_validated_mm / 2);
+}
+
+// A response made of bumps 12 mm wide (a kernel response) is kept as one, at its width, and
+// located better than any polynomial up to degree 5, which cannot follow it.
+TEST(PressResponseFit, CrossValidationKeepsAKernelResponseOfItsWidth) {
+  PressResponse truth;
+  truth.degree = 1;
+  truth.scale_mm = 40;
+  truth.kernel_length_mm = 12;
+  truth.centres_mm = hexagonal_lattice({0, 0}, 45, 12);
+  std::mt19937 random(12);
+  std::normal_distribution<double> normal;
+  truth.coefficients = Matrix(truth.basis_size(), 32);
+  for (Index i = 0; i < truth.coefficients.size(); ++i) truth.coefficients(i) = normal(random);
+  const Presses calibration = make_presses(truth, 120, 0.02, 1);
+  PressResponseFitOptions options;
+  options.degrees = {3, 4, 5};
+  options.shrinkages = {1.0};
+  options.kernel_lengths_mm = {6, 12, 24};
+  options.kernel_smoothings = {1e-4};
+  const PressResponseFit fit = fit_press_response(calibration.changes, calibration.positions, options);
+  ASSERT_EQ(fit.candidates.size(), 6u);
+  EXPECT_EQ(fit.kept.kernel_length_mm, 12);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_GT(fit.candidates[c].cross_validated_mm, 2 * fit.kept.cross_validated_mm)
+        << "degree " << fit.candidates[c].degree << ": " << fit.candidates[c].cross_validated_mm << " mm";
 }
 
 TEST(PressResponseFit, RefusesTooFewPressesAndBadOptions) {

@@ -65,6 +65,7 @@ TEST(RealEvaluation, LocatesHeldOutPressesAsCrossValidationSaid) {
   options.curve = {30, 60, 200};  // 200 is past the held-out presses: skipped
   options.fit.degrees = {2, 3};
   options.fit.shrinkages = {1.0};
+  options.fit.kernel_lengths_mm = {};
   const RealEvaluation e = evaluate_real(data, ring_skin(), options);
   EXPECT_EQ(e.fit.kept.degree, 3);
   ASSERT_EQ(e.curve.size(), 2u);
@@ -131,6 +132,7 @@ TEST(RealEvaluation, CalibratesThroughBadReadings) {
   options.image = false;
   options.fit.degrees = {3};
   options.fit.shrinkages = {1.0};
+  options.fit.kernel_lengths_mm = {};
   const RealEvaluation reference = evaluate_real(clean, ring_skin(), options);
   RealDataset data = clean;
   data.frames(5, 0) = 0;

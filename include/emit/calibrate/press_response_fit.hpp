@@ -1,7 +1,7 @@
 #pragma once
 /// \file press_response_fit.hpp
 /// A current-injection skin's press response (model/press_response.hpp) fitted to presses of
-/// known place: for each candidate degree and shrinkage, W by least squares (a ridge of 1e-6 per
+/// known place: for each candidate (a degree, or a kernel's width and smoothing) and shrinkage, W by least squares (a ridge of 1e-6 per
 /// press keeps a degree with more terms than presses solvable), Λ from the residuals'
 /// covariance S as ((1 − ρ) S + ρ diag S)⁻¹; the candidate kept is the one whose presses are
 /// located best by k-fold cross-validation (each fold located by a model fitted without it,
@@ -32,6 +32,11 @@ namespace emit {
 struct PressResponseFitOptions {
   std::vector<int> degrees{2, 3, 4, 5, 6};
   std::vector<double> shrinkages{0.1, 0.3, 0.6, 1.0};  ///< ρ, each in [0, 1]
+  /// Kernel responses (model/press_response.hpp): a plane plus bumps of each width ℓ on a lattice
+  /// of spacing ℓ, their coefficients a held to the prior λ n aᵀKa (K the bumps' kernel between
+  /// their centres: a Gaussian process's smoothness) for each λ; every ρ with each. Empty: none.
+  std::vector<double> kernel_lengths_mm{20, 30, 40};
+  std::vector<double> kernel_smoothings{1e-4, 1e-3};  ///< λ, each positive
   int folds = 10;                                      ///< for the cross-validation; at most the number of presses
   int grid_divisions = 35;  ///< the cross-validation's location grid (coarser than per frame's 70)
   std::vector<double> drift_rates{0, 0.01, 0.03, 0.1};  ///< each in [0, 1)
@@ -43,6 +48,8 @@ struct PressResponseFitOptions {
 struct PressResponseCandidate {
   int degree = 0;
   double shrinkage = 0;
+  double kernel_length_mm = 0;  ///< 0: monomials alone
+  double smoothing = 0;         ///< λ of a kernel response
   double cross_validated_mm = 0;  ///< mean position error of the held-out folds
 };
 

@@ -7,6 +7,9 @@
 ///   d = log(V / V_ref) / ‖log(V / V_ref)‖,
 /// is modelled as a smooth function of the press's centre p plus noise:
 ///   d(p) ≈ Wᵀ b(p),   b(p) = the monomials of (p − c)/s up to `degree` (degree 2: 1, u, v, u², uv, v²),
+/// then, for a kernel response, Gaussian bumps exp(−‖p − c_j‖² / 2ℓ²) about centres c_j on a
+/// hexagonal lattice of spacing ℓ (a smooth response over the skin, as a Gaussian process's mean
+/// with the bumps' ridge as its prior: calibrate/press_response_fit.hpp),
 /// with the noise's precision Λ (the inverse of the residual covariance, shrunk towards its
 /// diagonal). The press is then located by maximum likelihood with a free amplitude a ≥ 0:
 /// min over (p, a) of (d − a m(p))ᵀ Λ (d − a m(p)), m(p) = Wᵀ b(p), i.e. max (dᵀΛm)² / (mᵀΛm)
@@ -24,6 +27,8 @@ namespace emit {
 
 struct PressResponse {
   int degree = 0;           ///< of the monomials in b(p)
+  std::vector<Vector2> centres_mm;  ///< the kernel's bumps' centres (empty: monomials alone)
+  double kernel_length_mm = 0;      ///< ℓ, their width
   Vector2 center_mm{0, 0};  ///< c: the calibration presses' centre
   double scale_mm = 1;      ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
   /// Where presses are looked for: the calibration presses' convex hull, counter-clockwise (a
@@ -36,7 +41,9 @@ struct PressResponse {
   double error_scale_mm = 0, unexplained_floor = 0;
 
   Index readings() const { return coefficients.cols(); }
-  /// b(p) into `basis` (basis_size(degree) entries). Allocates nothing.
+  /// B, the number of basis functions: the monomials' and the bumps'.
+  Index basis_size() const;
+  /// b(p) into `basis` (basis_size() entries). Allocates nothing.
   void basis_at(const Vector2& p_mm, Eigen::Ref<Vector> basis) const;
   /// Whether p is in the region (on its border counts). Allocates nothing.
   bool in_region(const Vector2& p_mm) const;
@@ -48,6 +55,10 @@ std::vector<Vector2> convex_hull(std::vector<Vector2> points);
 
 /// The number of monomials in two variables up to `degree`: (degree + 1)(degree + 2)/2.
 Index response_basis_size(int degree);
+
+/// A hexagonal lattice of spacing `spacing_mm` (one point at `centre_mm`), the points within
+/// `radius_mm` of it: the kernel's centres.
+std::vector<Vector2> hexagonal_lattice(const Vector2& centre_mm, double radius_mm, double spacing_mm);
 
 /// The normalised relative change d of a frame against its reference into `change` (M entries):
 /// log(V / V_ref) where the screen can use the reading and its reference, NaN where it cannot (a
