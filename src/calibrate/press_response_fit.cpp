@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include <Eigen/Cholesky>
@@ -133,6 +132,62 @@ Index fill_masked(Matrix& changes, const std::vector<Vector2>& positions_mm, int
   return static_cast<Index>(rows.size());
 }
 
+/// A located press's miss: its distance from the true place (2 s for a press not found) and the
+/// share of its change the model left unexplained.
+Vector2 miss_of(const LocatedPress& located, const Vector2& truth_mm, double scale_mm) {
+  return {located.found ? (located.position_mm - truth_mm).norm() : 2 * scale_mm, 1 - located.explained};
+}
+
+/// Presses [first, n) located in order by `response` with the drift at `rate`: their misses.
+std::vector<Vector2> misses_in_order(const PressResponse& response, double rate, int grid_divisions,
+                                     const Matrix& measured, const std::vector<Vector2>& positions_mm, Index first) {
+  PressLocator locator(response, PressLocatorOptions{grid_divisions, rate, {}, -1});
+  std::vector<Vector2> misses;
+  for (Index i = first; i < measured.rows(); ++i)
+    misses.push_back(miss_of(locator.locate_change(measured.row(i).transpose()),
+                             positions_mm[static_cast<std::size_t>(i)], response.scale_mm));
+  return misses;
+}
+
+/// The fastest rate whose paired excess error over the best rate's is within one standard error
+/// (fit_press_response's drift rate); errors[r]: rate r's misses.
+double fastest_within_noise(const std::vector<double>& rates, const std::vector<std::vector<Vector2>>& errors,
+                            std::vector<double>& means) {
+  means.clear();
+  for (const auto& e : errors) {
+    double sum = 0;
+    for (const Vector2& v : e) sum += v.x();
+    means.push_back(sum / static_cast<double>(e.size()));
+  }
+  const auto best = static_cast<std::size_t>(std::min_element(means.begin(), means.end()) - means.begin());
+  double kept = rates[best];
+  for (std::size_t r = 0; r < errors.size(); ++r) {
+    const auto m = static_cast<double>(errors[r].size());
+    double mean = 0, square = 0;
+    for (std::size_t i = 0; i < errors[r].size(); ++i) {
+      const double excess = errors[r][i].x() - errors[best][i].x();
+      mean += excess / m, square += excess * excess;
+    }
+    const double standard_error = std::sqrt(std::max(square - m * mean * mean, 0.0) / std::max(m - 1, 1.0) / m);
+    if (mean <= standard_error) kept = std::max(kept, rates[r]);
+  }
+  return kept;
+}
+
+/// The least k that puts 68 % of the ratios error / √(unexplained + u₀) within k and 95 % within 2k,
+/// by their order statistics (split conformal: the ⌈(m + 1) q⌉-th smallest of m covers a new
+/// exchangeable one with probability q or more).
+double conformal_scale(const std::vector<Vector2>& misses, double floor) {
+  std::vector<double> ratios;
+  for (const Vector2& v : misses) ratios.push_back(v.x() / std::sqrt(v.y() + floor));
+  std::sort(ratios.begin(), ratios.end());
+  const auto order_statistic = [&](double q) {
+    const auto k = static_cast<std::size_t>(std::ceil((static_cast<double>(ratios.size()) + 1) * q));
+    return ratios[std::min(k, ratios.size()) - 1];
+  };
+  return std::max(order_statistic(0.68), order_statistic(0.95) / 2);
+}
+
 }  // namespace
 
 PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
@@ -180,11 +235,9 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
       for (Index i = 0; i < n; ++i) (i % options.folds == fold ? test : train).push_back(i);
       PressLocator locator(fit_one(filled, positions_mm, train, candidate, base), options.grid_divisions);
       for (const Index i : test) {
-        const LocatedPress located = locator.locate_change(measured.row(i).transpose());
-        const double e = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                       : 2 * base.scale_mm;
-        error += e;
-        misses.emplace_back(e, 1 - located.explained);
+        misses.push_back(miss_of(locator.locate_change(measured.row(i).transpose()),
+                                 positions_mm[static_cast<std::size_t>(i)], base.scale_mm));
+        error += misses.back().x();
       }
     }
     candidate.cross_validated_mm = error / static_cast<double>(n);
@@ -206,62 +259,26 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   // one that drifts.
   std::vector<Index> first(all.begin(), all.begin() + n / 2);
   const PressResponse half = fit_one(filled, positions_mm, first, *kept, base);
-  std::vector<Vector> errors;
-  for (const double rate : options.drift_rates) {
-    PressLocator locator(half, PressLocatorOptions{options.grid_divisions, rate, {}, -1});
-    Vector& error = errors.emplace_back(n - n / 2);
-    for (Index i = n / 2; i < n; ++i) {
-      const LocatedPress located = locator.locate_change(measured.row(i).transpose());
-      error(i - n / 2) = located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                       : 2 * base.scale_mm;
-    }
-    fit.drift_errors_mm.push_back(error.mean());
-  }
-  const auto best = static_cast<std::size_t>(
-      std::min_element(fit.drift_errors_mm.begin(), fit.drift_errors_mm.end()) - fit.drift_errors_mm.begin());
-  fit.drift_rate = options.drift_rates[best];
-  for (std::size_t r = 0; r < errors.size(); ++r) {
-    const Vector excess = errors[r] - errors[best];
-    const double mean = excess.mean();
-    const double standard_error =
-        std::sqrt((excess.array() - mean).square().sum() / static_cast<double>(std::max<Index>(excess.size() - 1, 1)) /
-                  static_cast<double>(excess.size()));
-    if (mean <= standard_error) fit.drift_rate = std::max(fit.drift_rate, options.drift_rates[r]);
-  }
+  std::vector<std::vector<Vector2>> by_rate;
+  for (const double rate : options.drift_rates)
+    by_rate.push_back(misses_in_order(half, rate, options.grid_divisions, measured, positions_mm, n / 2));
+  fit.drift_rate = fastest_within_noise(options.drift_rates, by_rate, fit.drift_errors_mm);
 
   // The σ's scale (frame/press_locator.hpp, "How sure"): u₀ the median 1 − explained of the kept
-  // candidate's cross-validation; then, for presses a model did not see, the ratios
-  // r = error / √(1 − explained + u₀), and k the least that puts 68 % of them within k and 95 %
-  // within 2k by their order statistics (split conformal: the ⌈(m + 1) q⌉-th smallest of m covers
-  // a new press with probability q or more). Two sets of such presses, k the larger of theirs:
-  // the kept candidate's cross-validation (models of nine tenths of the presses, as sure as the
-  // final one), and the second half located in order as above (a model of half the presses, but
-  // meeting the drift).
+  // candidate's cross-validation; k by conformal_scale on presses a model did not see, the larger
+  // of two sets' k: the kept candidate's cross-validation (models of nine tenths of the presses,
+  // as sure as the final one) and the second half located in order with the rate kept (a model
+  // of half the presses, but meeting the drift).
   const std::vector<Vector2>& validated = held_out_misses[static_cast<std::size_t>(kept - fit.candidates.begin())];
   std::vector<double> unexplained;
   for (const Vector2& v : validated) unexplained.push_back(v.y());
   std::nth_element(unexplained.begin(), unexplained.begin() + static_cast<std::ptrdiff_t>(unexplained.size() / 2),
                    unexplained.end());
   fit.response.unexplained_floor = std::max(unexplained[unexplained.size() / 2], 1e-9);
-  const auto scale_of = [&](const std::vector<Vector2>& misses) {
-    std::vector<double> ratios;
-    for (const Vector2& v : misses) ratios.push_back(v.x() / std::sqrt(v.y() + fit.response.unexplained_floor));
-    std::sort(ratios.begin(), ratios.end());
-    const auto order_statistic = [&](double q) {
-      const auto k = static_cast<std::size_t>(std::ceil((static_cast<double>(ratios.size()) + 1) * q));
-      return ratios[std::min(k, ratios.size()) - 1];
-    };
-    return std::max(order_statistic(0.68), order_statistic(0.95) / 2);
-  };
-  PressLocator locator(half, PressLocatorOptions{options.grid_divisions, fit.drift_rate, {}, -1});
-  std::vector<Vector2> in_order;
-  for (Index i = n / 2; i < n; ++i) {
-    const LocatedPress located = locator.locate_change(measured.row(i).transpose());
-    in_order.emplace_back(located.found ? (located.position_mm - positions_mm[static_cast<std::size_t>(i)]).norm()
-                                        : 2 * base.scale_mm,
-                          1 - located.explained);
-  }
-  fit.response.error_scale_mm = std::max(scale_of(in_order), scale_of(validated));
+  const auto rate = static_cast<std::size_t>(
+      std::find(options.drift_rates.begin(), options.drift_rates.end(), fit.drift_rate) - options.drift_rates.begin());
+  fit.response.error_scale_mm = std::max(conformal_scale(by_rate[rate], fit.response.unexplained_floor),
+                                         conformal_scale(validated, fit.response.unexplained_floor));
   return fit;
 }
 
