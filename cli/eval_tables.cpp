@@ -116,7 +116,9 @@ void print_reading_survey(const RealEvaluation& e) {
              std::to_string(s.bad_frames[static_cast<std::size_t>(m)]) +
              (s.bad_frames[static_cast<std::size_t>(m)] == 1 ? " frame" : " frames") +
              (s.screen.is_dropped(m) ? ", dropped" : "") + ")";
-  std::fprintf(stderr, "emit: warning: readings that cannot be used (not positive, not finite or at the rail) were left out; worst channels: %s\n",
+  std::fprintf(stderr,
+               "emit: warning: readings that cannot be used (not positive, not finite or at the rail) were left out; "
+               "worst channels: %s\n",
                named.c_str());
   if (!e.unusable_calibration_presses.empty())
     std::fprintf(stderr, "emit: warning: %zu calibration presses had no reading to use and were left out\n",
@@ -148,8 +150,10 @@ void print_real_evaluation(const RealEvalJob& job, const RealEvalReport& report)
               response_name(e.fit.kept).c_str(), e.fit.kept.shrinkage, job.options.fit.folds,
               e.fit.kept.cross_validated_mm, e.fit.drift_rate);
   print_stats("held-out presses, position error", e.held_out);
-  std::printf("  their sigma (k sqrt(1 - explained + u0), k %.1f mm set on the calibration): mean %.2f mm; error within 1 sigma %.0f %%, 2 sigma %.0f %%\n",
-              e.fit.response.error_scale_mm, e.held_out_sigma_mm, 100 * e.within_1sigma, 100 * e.within_2sigma);
+  std::printf(
+      "  their sigma (k sqrt(1 - explained + u0), k %.1f mm set on the calibration): mean %.2f mm; error within 1 "
+      "sigma %.0f %%, 2 sigma %.0f %%\n",
+      e.fit.response.error_scale_mm, e.held_out_sigma_mm, 100 * e.within_1sigma, 100 * e.within_2sigma);
   print_stats("always answering the presses' centre", e.held_out_centre);
   if (e.held_out_image) {
     const std::string what = "physics alone (NOSER image, " + std::to_string(e.image_triangles) + " triangles)";

@@ -27,7 +27,8 @@ void PressResponseFitOptions::validate() const {
   if (!kernel_lengths_mm.empty() && kernel_smoothings.empty())
     throw InvalidInput("press response: kernel smoothings: give at least one for the kernel lengths");
   for (const double l : kernel_smoothings)
-    if (!(l > 0)) throw InvalidInput("press response: kernel smoothings: each must be positive, got " + std::to_string(l));
+    if (!(l > 0))
+      throw InvalidInput("press response: kernel smoothings: each must be positive, got " + std::to_string(l));
   if (drift_rates.empty()) throw InvalidInput("press response: drift rates: give at least one (0: none)");
   for (const double f : drift_rates)
     if (!(f >= 0 && f < 1))
@@ -60,9 +61,10 @@ PressResponse fit_one(const Matrix& changes, const std::vector<Vector2>& positio
     Matrix kernel(C, C);  // the bumps' prior: λ n aᵀKa
     for (Index i = 0; i < C; ++i)
       for (Index j = 0; j < C; ++j)
-        kernel(i, j) = std::exp(-0.5 * (r.centres_mm[static_cast<std::size_t>(i)] - r.centres_mm[static_cast<std::size_t>(j)])
-                                           .squaredNorm() /
-                                (r.kernel_length_mm * r.kernel_length_mm));
+        kernel(i, j) = std::exp(
+            -0.5 *
+            (r.centres_mm[static_cast<std::size_t>(i)] - r.centres_mm[static_cast<std::size_t>(j)]).squaredNorm() /
+            (r.kernel_length_mm * r.kernel_length_mm));
     normal.bottomRightCorner(C, C) += candidate.smoothing * static_cast<double>(n) * kernel;
   }
   r.coefficients = normal.ldlt().solve(basis * data);

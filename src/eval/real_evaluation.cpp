@@ -177,7 +177,8 @@ RealEvaluation evaluate_real(const RealDataset& data, const Sensor& sensor, cons
   for (Index i = e.test_from; i < e.presses; ++i)
     centre.push_back((data.contacts[static_cast<std::size_t>(i)].front() - e.fit.response.center_mm).norm());
   e.held_out_centre = summarize_errors(centre, 0);
-  if (options.image) e.held_out_image = image_errors(data, sensor, e.survey.screen, e.test_from, e.image_triangles, progress);
+  if (options.image)
+    e.held_out_image = image_errors(data, sensor, e.survey.screen, e.test_from, e.image_triangles, progress);
   return e;
 }
 

@@ -8,9 +8,7 @@ namespace emit {
 
 Index response_basis_size(int degree) { return static_cast<Index>(degree + 1) * (degree + 2) / 2; }
 
-Index PressResponse::basis_size() const {
-  return response_basis_size(degree) + static_cast<Index>(centres_mm.size());
-}
+Index PressResponse::basis_size() const { return response_basis_size(degree) + static_cast<Index>(centres_mm.size()); }
 
 std::vector<Vector2> hexagonal_lattice(const Vector2& centre_mm, double radius_mm, double spacing_mm) {
   std::vector<Vector2> points;

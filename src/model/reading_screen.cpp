@@ -67,7 +67,8 @@ ReadingSurvey survey_readings(const Matrix& frames, const Matrix& references, co
       one_value = one_value && frames(i, m) == frames(0, m) && references(i, m) == frames(0, m);
     }
     if (one_value) s.stuck.push_back(m);
-    if (one_value || static_cast<double>(s.bad_frames[static_cast<std::size_t>(m)]) > options.drop_above * static_cast<double>(n))
+    if (one_value ||
+        static_cast<double>(s.bad_frames[static_cast<std::size_t>(m)]) > options.drop_above * static_cast<double>(n))
       s.screen.dropped[static_cast<std::size_t>(m)] = 1;
   }
   for (Index i = 0; i < n; ++i) {

@@ -1191,8 +1191,8 @@ TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
   double sigma_mm = -1, within_1 = -1, within_2 = -1;
   const std::size_t at = r.out.find("their sigma (");
   ASSERT_NE(at, std::string::npos) << r.out;
-  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("mean ", at), "mean %lf mm; error within 1 sigma %lf %%, 2 sigma %lf",
-                        &sigma_mm, &within_1, &within_2),
+  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("mean ", at),
+                        "mean %lf mm; error within 1 sigma %lf %%, 2 sigma %lf", &sigma_mm, &within_1, &within_2),
             3)
       << r.out;
   EXPECT_GE(within_1, 68) << r.out;
@@ -1231,8 +1231,8 @@ TEST(Cli, EvalRealLocatesTheHydrogelSkinsPresses) {
       out << line << '\n';
     }
   }
-  const auto bad = run_emit("eval --real " + glitchy + " --sensor " + sensor +
-                            " --calibration-presses 100 --curve none --plots ''");
+  const auto bad =
+      run_emit("eval --real " + glitchy + " --sensor " + sensor + " --calibration-presses 100 --curve none --plots ''");
   ASSERT_EQ(bad.exit_code, 0) << bad.err;
   EXPECT_NE(bad.out.find("readings: 11 masked in 11 of 550 frames; rail found at 100000"), std::string::npos)
       << bad.out;

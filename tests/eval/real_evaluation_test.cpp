@@ -57,7 +57,7 @@ RealDataset cubic_skin(int n) {
 
 TEST(RealEvaluation, LocatesHeldOutPressesAsCrossValidationSaid) {
   RealDataset data = cubic_skin(120);
-  data.frames(110, 3) = 0;  // a held-out frame with a dropped sample: masked, the frame located
+  data.frames(110, 3) = 0;               // a held-out frame with a dropped sample: masked, the frame located
   data.frames.row(100).setConstant(-1);  // and one with no reading to use: missed
   RealEvalOptions options;
   options.calibration_presses = 60;

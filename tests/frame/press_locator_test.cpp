@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 

@@ -57,12 +57,12 @@ TEST(ReadingScreen, FindsARailOnlyWhereTheTopValueRecurs) {
 TEST(ReadingScreen, MasksBadReadingsAndDropsChannelsBadInMostFrames) {
   Matrix frames, references;
   random_frames(frames, references);
-  frames(3, 0) = 0;                                             // a dropped sample
-  frames(4, 0) = std::numeric_limits<double>::quiet_NaN();      // a value not finite
-  references(5, 1) = -2;                                        // a reference not positive
+  frames(3, 0) = 0;                                         // a dropped sample
+  frames(4, 0) = std::numeric_limits<double>::quiet_NaN();  // a value not finite
+  references(5, 1) = -2;                                    // a reference not positive
   frames(6, 1) = std::numeric_limits<double>::infinity();
-  for (Index i = 0; i < 101; ++i) frames(i, 7) = 0;             // bad in 101 of 200 frames: dropped
-  frames.col(9).setConstant(512);                               // stuck: one value everywhere
+  for (Index i = 0; i < 101; ++i) frames(i, 7) = 0;  // bad in 101 of 200 frames: dropped
+  frames.col(9).setConstant(512);                    // stuck: one value everywhere
   references.col(9).setConstant(512);
   const ReadingSurvey s = survey_readings(frames, references);
   EXPECT_EQ(s.bad_frames[0], 2);

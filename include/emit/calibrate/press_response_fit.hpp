@@ -1,12 +1,11 @@
 #pragma once
 /// \file press_response_fit.hpp
 /// A current-injection skin's press response (model/press_response.hpp) fitted to presses of
-/// known place: for each candidate (a degree, or a kernel's width and smoothing) and shrinkage, W by least squares (a ridge of 1e-6 per
-/// press keeps a degree with more terms than presses solvable), Λ from the residuals'
-/// covariance S as ((1 − ρ) S + ρ diag S)⁻¹; the candidate kept is the one whose presses are
-/// located best by k-fold cross-validation (each fold located by a model fitted without it,
-/// frame/press_locator.hpp). The region searched is the calibration presses' convex hull. Nothing is tuned on presses
-/// outside the calibration set.
+/// known place: for each candidate (a degree, or a kernel's width and smoothing) and shrinkage, W by least squares (a
+/// ridge of 1e-6 per press keeps a degree with more terms than presses solvable), Λ from the residuals' covariance S as
+/// ((1 − ρ) S + ρ diag S)⁻¹; the candidate kept is the one whose presses are located best by k-fold cross-validation
+/// (each fold located by a model fitted without it, frame/press_locator.hpp). The region searched is the calibration
+/// presses' convex hull. Nothing is tuned on presses outside the calibration set.
 ///
 /// Masked readings (NaN in a press's change; model/reading_screen.hpp) are filled from the model
 /// at the press's known place (a first fit of the lowest degree, its amplitude fitted to the
@@ -37,7 +36,7 @@ struct PressResponseFitOptions {
   /// their centres: a Gaussian process's smoothness) for each λ; every ρ with each. Empty: none.
   std::vector<double> kernel_lengths_mm{20, 30, 40};
   std::vector<double> kernel_smoothings{1e-4, 1e-3};  ///< λ, each positive
-  int folds = 10;                                      ///< for the cross-validation; at most the number of presses
+  int folds = 10;                                     ///< for the cross-validation; at most the number of presses
   int grid_divisions = 35;  ///< the cross-validation's location grid (coarser than per frame's 70)
   std::vector<double> drift_rates{0, 0.01, 0.03, 0.1};  ///< each in [0, 1)
 
@@ -48,8 +47,8 @@ struct PressResponseFitOptions {
 struct PressResponseCandidate {
   int degree = 0;
   double shrinkage = 0;
-  double kernel_length_mm = 0;  ///< 0: monomials alone
-  double smoothing = 0;         ///< λ of a kernel response
+  double kernel_length_mm = 0;    ///< 0: monomials alone
+  double smoothing = 0;           ///< λ of a kernel response
   double cross_validated_mm = 0;  ///< mean position error of the held-out folds
 };
 
@@ -63,8 +62,8 @@ struct PressResponseFit {
 };
 
 /// changes: one row per press in the order measured, its change (relative_change's, normalised,
-/// NaN where masked; the fit itself takes any scale); positions_mm: its centre. \throw InvalidInput for fewer than 2 × folds presses, or rows and positions
-/// that differ in number.
+/// NaN where masked; the fit itself takes any scale); positions_mm: its centre. \throw InvalidInput for fewer than 2 ×
+/// folds presses, or rows and positions that differ in number.
 PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vector2>& positions_mm,
                                     const PressResponseFitOptions& options = {}, const Progress& progress = {});
 

@@ -27,7 +27,7 @@ struct RealEvalOptions {
   std::vector<Index> curve{20, 30, 50, 75, 100, 150, 200, 300, 440};
   PressResponseFitOptions fit;
   ReadingSurveyOptions readings;  ///< which readings to mask, which channels to drop (model/reading_screen.hpp)
-  int grid_divisions = 70;  ///< the per-frame search's first grid (frame/press_locator.hpp)
+  int grid_divisions = 70;        ///< the per-frame search's first grid (frame/press_locator.hpp)
   /// Also locate the held-out presses by the physics alone, with no calibration: the difference
   /// image of log(V/V_ref) (relative conductivity Jacobian on the sensor's mesh, NOSER prior,
   /// automatic λ), its centroid above half its largest magnitude (the paper's estimator).

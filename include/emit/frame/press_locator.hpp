@@ -109,7 +109,7 @@ class PressLocator {
   Eigen::Matrix<Index, Eigen::Dynamic, 1> bad_;  ///< the masked readings' indices
   Matrix masked_block_, masked_z_, masked_grid_, masked_gram_;
   Vector masked_y_, masked_norm2_;
-  const Matrix* gram_now_ = &gram_;         ///< gram_ or masked_gram_
+  const Matrix* gram_now_ = &gram_;  ///< gram_ or masked_gram_
   const Vector* grid_norm2_now_ = &grid_norm2_;
 };
 

@@ -26,11 +26,11 @@
 namespace emit {
 
 struct PressResponse {
-  int degree = 0;           ///< of the monomials in b(p)
+  int degree = 0;                   ///< of the monomials in b(p)
   std::vector<Vector2> centres_mm;  ///< the kernel's bumps' centres (empty: monomials alone)
   double kernel_length_mm = 0;      ///< ℓ, their width
-  Vector2 center_mm{0, 0};  ///< c: the calibration presses' centre
-  double scale_mm = 1;      ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
+  Vector2 center_mm{0, 0};          ///< c: the calibration presses' centre
+  double scale_mm = 1;              ///< s: their largest distance from c, so |u|, |v| ≤ 1 where they were
   /// Where presses are looked for: the calibration presses' convex hull, counter-clockwise (a
   /// polynomial is trusted where it was fitted, not beyond).
   std::vector<Vector2> region_mm;

@@ -44,11 +44,11 @@ struct ReadingSurveyOptions {
 /// What a survey of a data set's frames found.
 struct ReadingSurvey {
   ReadingScreen screen;
-  bool rail_found = false;          ///< the rail came from the data (not stated)
-  std::vector<Index> bad_frames;    ///< per channel: the frames where it could not be used
-  std::vector<Index> stuck;         ///< channels with one value in every frame and reference
-  Index frames_with_bad = 0;        ///< frames with a reading masked (dropped channels aside)
-  Index masked_readings = 0;        ///< readings masked in all (dropped channels aside)
+  bool rail_found = false;        ///< the rail came from the data (not stated)
+  std::vector<Index> bad_frames;  ///< per channel: the frames where it could not be used
+  std::vector<Index> stuck;       ///< channels with one value in every frame and reference
+  Index frames_with_bad = 0;      ///< frames with a reading masked (dropped channels aside)
+  Index masked_readings = 0;      ///< readings masked in all (dropped channels aside)
 
   /// The channels dropped for good, in order.
   std::vector<Index> dropped() const;
