@@ -181,6 +181,7 @@ double fastest_within_noise(const std::vector<double>& rates, const std::vector<
 /// exchangeable one with probability q or more).
 double conformal_scale(const std::vector<Vector2>& misses, double floor) {
   std::vector<double> ratios;
+  ratios.reserve(misses.size());
   for (const Vector2& v : misses) ratios.push_back(v.x() / std::sqrt(v.y() + floor));
   std::sort(ratios.begin(), ratios.end());
   const auto order_statistic = [&](double q) {
@@ -273,6 +274,7 @@ PressResponseFit fit_press_response(const Matrix& changes, const std::vector<Vec
   // of half the presses, but meeting the drift).
   const std::vector<Vector2>& validated = held_out_misses[static_cast<std::size_t>(kept - fit.candidates.begin())];
   std::vector<double> unexplained;
+  unexplained.reserve(validated.size());
   for (const Vector2& v : validated) unexplained.push_back(v.y());
   std::nth_element(unexplained.begin(), unexplained.begin() + static_cast<std::ptrdiff_t>(unexplained.size() / 2),
                    unexplained.end());

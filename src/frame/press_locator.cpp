@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "emit/core/errors.hpp"
@@ -18,8 +19,8 @@ void PressLocatorOptions::validate() const {
 PressLocator::PressLocator(PressResponse response, int grid_divisions)
     : PressLocator(std::move(response), PressLocatorOptions{grid_divisions, 0, {}, -1}) {}
 
-PressLocator::PressLocator(PressResponse response, const PressLocatorOptions& options)
-    : response_(std::move(response)), options_(options) {
+PressLocator::PressLocator(PressResponse response, PressLocatorOptions options)
+    : response_(std::move(response)), options_(std::move(options)) {
   options_.validate();
   if (response_.region_mm.size() < 3) throw InvalidInput("press locator: the press response has no region to search");
   const Index M = response_.readings(), B = response_.basis_size();
@@ -35,7 +36,7 @@ PressLocator::PressLocator(PressResponse response, const PressLocatorOptions& op
   for (int i = 0; i <= steps.x(); ++i)
     for (int j = 0; j <= steps.y(); ++j)
       if (const Vector2 p = low + grid_step_mm_ * Vector2(i, j); response_.in_region(p)) points.push_back(p);
-  const Index G = static_cast<Index>(points.size());
+  const auto G = static_cast<Index>(points.size());
   grid_mm_.resize(2, G);
   Matrix basis(B, G);
   for (Index g = 0; g < G; ++g) {

@@ -18,7 +18,7 @@ std::vector<Vector2> hexagonal_lattice(const Vector2& centre_mm, double radius_m
   for (int j = -rows; j <= rows; ++j)
     for (int i = -columns; i <= columns; ++i) {
       const Vector2 offset((i + (j % 2 != 0 ? 0.5 : 0.0)) * spacing_mm, j * row_step);
-      if (offset.norm() <= radius_mm) points.push_back(centre_mm + offset);
+      if (offset.norm() <= radius_mm) points.emplace_back(centre_mm + offset);
     }
   return points;
 }

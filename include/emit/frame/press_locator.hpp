@@ -67,7 +67,7 @@ class PressLocator {
   /// \throw InvalidInput for fewer than 2 divisions or a response with no region.
   explicit PressLocator(PressResponse response, int grid_divisions = 70);
   /// \throw InvalidInput as options.validate(), or for a screen of another number of readings.
-  PressLocator(PressResponse response, const PressLocatorOptions& options);
+  PressLocator(PressResponse response, PressLocatorOptions options);
 
   /// frame and reference: M values each (model/press_response.hpp); readings the screen refuses
   /// are masked. Updates the drift when the press is found. \throw InvalidInput for a wrong
