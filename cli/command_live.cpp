@@ -40,6 +40,11 @@ void print_summary(FILE* say, const LiveStats& stats) {
                "writing and publishing); the bottleneck: %s\n",
                1e3 * stats.source_wait_s, making(stats).c_str(), 1e3 * stats.reconstruction_s, 1e3 * stats.output_s,
                stats.bottleneck());
+  if (stats.readings_masked > 0)
+    std::fprintf(say, "readings: %llu masked in %llu of %llu frames (not finite, or clipped at the ADC's top code)\n",
+                 static_cast<unsigned long long>(stats.readings_masked),
+                 static_cast<unsigned long long>(stats.frames_with_masked),
+                 static_cast<unsigned long long>(stats.frames));
   std::fflush(say);
 }
 

@@ -33,6 +33,9 @@ void run_reconstruct(ReconstructArgs args) {
   if (!job.mcap_path.empty())
     std::fprintf(say, "recorded frames, contacts and pressure images to %s (MCAP, ROS 2 messages)\n",
                  job.mcap_path.c_str());
+  if (r.readings_masked > 0)
+    std::fprintf(say, "readings: %ld masked in %ld of %zu frames (nan or inf, or clipped at the ADC's top code)\n",
+                 r.readings_masked, r.frames_with_masked, r.frames);
   if (!r.calibrated)
     std::fprintf(say, "note: pressures are uncalibrated; run 'emit calibrate' for N/mm2 you can trust\n");
 }

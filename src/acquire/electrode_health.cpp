@@ -1,6 +1,7 @@
 #include "emit/acquire/electrode_health.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "emit/core/errors.hpp"
@@ -38,7 +39,7 @@ ElectrodeHealthTally::ElectrodeHealthTally(int electrode_count, const AdcSpec& a
       full_rows_(static_cast<std::size_t>(electrode_count), 0) {}
 
 void ElectrodeHealthTally::add(const Frame& frame) {
-  if (!has_signal(frame, tolerance_V_)) return;
+  if (!frame.allFinite() || !has_signal(frame, tolerance_V_)) return;  // a frame with a masked reading says less
   ++with_signal_;
   for (Index e = 0; e < frame.rows(); ++e) {
     zero_columns_[static_cast<std::size_t>(e)] += column_at_zero(frame, e, tolerance_V_);
@@ -66,28 +67,12 @@ std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames
   return tally.dead();
 }
 
-void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
-                         const std::string& source, std::size_t first_frame) {
-  const double step = rail_tolerance_V(adc);
-  for (std::size_t f = 0; f < frames.size(); ++f)
-    for (Index l = 0; l < frames[f].rows(); ++l) {
-      if (std::find(dead.begin(), dead.end(), static_cast<int>(l)) != dead.end()) continue;
-      if (has_signal(frames[f], step) && row_at_full_scale(frames[f], l, adc, step)) {
-        char value[32];
-        std::snprintf(value, sizeof value, "%.4g", frames[f](l, l == 0 ? 1 : 0));
-        throw InvalidInput(source + ": frame " + std::to_string(first_frame + f) + ": ground " + std::to_string(l) +
-                           " reads " + value + " V (full scale) on every electrode: was electrode " +
-                           std::to_string(l) + " grounded?");
-      }
-    }
-}
-
 std::string reading_out_of_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc) {
   const double tolerance = rail_tolerance_V(adc);
   for (Index l = 0; l < frame.rows(); ++l)
     for (Index m = 0; m < frame.cols(); ++m) {
       const double v = frame(l, m);
-      if (v >= -tolerance && v <= adc.vref_V + tolerance) continue;
+      if (!std::isfinite(v) || (v >= -tolerance && v <= adc.vref_V + tolerance)) continue;  // NaN: masked
       char text[160];
       std::snprintf(text, sizeof text,
                     "ground %lld, sense %lld reads %.4g V, outside the ADC's 0 to %.4g V (sensor \"adc\")",

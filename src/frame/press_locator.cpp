@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "emit/core/errors.hpp"
+#include "emit/core/small_cholesky.hpp"
 
 namespace emit {
 
@@ -92,26 +93,13 @@ LocatedPress PressLocator::locate_change(const Eigen::Ref<const Vector>& change)
 
 double PressLocator::marginalise(Index k) {
   const Matrix& precision = response_.precision;
-  // Λ_𝓑𝓑 = LLᵀ in place (a small Cholesky of our own: Eigen's would allocate per frame).
+  // Λ_𝓑𝓑 = LLᵀ (core/small_cholesky.hpp: Eigen's would allocate per frame).
   auto L = masked_block_.topLeftCorner(k, k);
-  for (Index i = 0; i < k; ++i)
-    for (Index j = 0; j <= i; ++j) {
-      double s = precision(bad_(i), bad_(j));
-      for (Index l = 0; l < j; ++l) s -= L(i, l) * L(j, l);
-      L(i, j) = i == j ? std::sqrt(std::max(s, 1e-300)) : s / L(j, j);
-    }
+  small_cholesky(k, [&](Index i, Index j) { return precision(bad_(i), bad_(j)); }, L);
   // y = (Λd)_𝓑 (d is 0 on 𝓑), t = Λ_𝓑𝓑⁻¹ y; Λ'd = Λd − Λ_{·𝓑} t.
   auto t = masked_y_.head(k);
-  for (Index i = 0; i < k; ++i) {
-    double s = weighted_change_(bad_(i));
-    for (Index l = 0; l < i; ++l) s -= L(i, l) * t(l);
-    t(i) = s / L(i, i);
-  }
-  for (Index i = k; i-- > 0;) {
-    double s = t(i);
-    for (Index l = i + 1; l < k; ++l) s -= L(l, i) * t(l);
-    t(i) = s / L(i, i);
-  }
+  for (Index i = 0; i < k; ++i) t(i) = weighted_change_(bad_(i));
+  small_cholesky_solve(L, t);
   for (Index i = 0; i < k; ++i) weighted_change_ -= t(i) * precision.col(bad_(i));
   // Z = CL⁻ᵀ, C = WΛ_{·𝓑}: column j of Z from C's column j and Z's earlier columns.
   for (Index j = 0; j < k; ++j) {

@@ -34,9 +34,11 @@ Reconstructor::Reconstructor(const ReconstructionModel& model, LinearCalibration
       dV_(model.measurements.size()),
       dphi_(model.mesh.triangle_count()),
       pressure_(model.mesh.triangle_count()),
+      fill_(model.measurements.size(), model.measurements.size() / 2),
       selected_(static_cast<std::size_t>(model.mesh.triangle_count())),
       operator_scratch_(model.op.scratch()) {
   options.validate();
+  masked_.reserve(static_cast<std::size_t>(model.measurements.size()));
   if (linear_.force_law) {
     linear_.force_law->validate();
     image_forces_.emplace(model.mesh);
@@ -67,7 +69,7 @@ void Reconstructor::set_reference(const Reference& reference) {
   if (frame.rows() != N || frame.cols() != N)
     throw InvalidInput("reference frame has " + std::to_string(frame.size()) + " values, expected " +
                        std::to_string(N * N));
-  if (!frame.allFinite()) throw InvalidInput("reference frame has a value that is not a finite number");
+  if (!frame.array().isFinite().any()) throw InvalidInput("reference frame has no value that is a finite number");
   if (!(reference.frames >= 1))
     throw InvalidInput("reference: it stands for " + std::to_string(reference.frames) + " frames, at least 1 expected");
   for (int i = 0; i < model_.measurements.size(); ++i) reference_[i] = frame.data()[model_.measurements.frame_index[i]];
@@ -80,8 +82,18 @@ const std::vector<Contact>& Reconstructor::process(const FrameView& frame) {
   const int N = model_.measurements.electrode_count;
   if (frame.rows() != N || frame.cols() != N)
     throw InvalidInput("frame has " + std::to_string(frame.size()) + " values, expected " + std::to_string(N * N));
-  for (int i = 0; i < model_.measurements.size(); ++i)
-    dV_[i] = frame.data()[model_.measurements.frame_index[i]] - reference_[i];
+  masked_.clear();
+  for (int i = 0; i < model_.measurements.size(); ++i) {
+    const double v = frame.data()[model_.measurements.frame_index[i]];
+    dV_[i] = v - reference_[i];
+    if (!(std::isfinite(dV_[i]) && v < model_.clipped_at_V)) masked_.push_back(i), dV_[i] = 0;
+  }
+  if (!masked_.empty()) {
+    // Beyond half the readings masked, or without the operator's precision, the frame tells
+    // nothing: no change (a masked reading's 0 is its change's prior mean).
+    if (static_cast<Index>(masked_.size()) > fill_.max_masked()) dV_.setZero();
+    else if (model_.op.precision().size() > 0) fill_.fill(model_.op.precision(), masked_, dV_);
+  }
   if (fitter_ && options_.track_contacts && !previous_discs_.empty()) {
     fitter_result_ = fitter_->track(dV_, previous_discs_);
     if (fitter_result_.tracked) {

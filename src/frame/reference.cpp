@@ -1,6 +1,8 @@
 #include "emit/frame/reference.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "emit/core/errors.hpp"
@@ -18,15 +20,19 @@ std::vector<bool> frames_kept(const std::vector<Frame>& frames) {
   std::vector<bool> kept(frames.size(), true);
   if (frames.size() < 3) return kept;
   Frame median(frames[0].rows(), frames[0].cols());
-  std::vector<double> values(frames.size());
-  for (Index i = 0; i < median.size(); ++i) {
-    for (std::size_t f = 0; f < frames.size(); ++f) values[f] = frames[f].data()[i];
+  std::vector<double> values;
+  values.reserve(frames.size());
+  for (Index i = 0; i < median.size(); ++i) {  // over each reading's finite values; NaN if none
+    values.clear();
+    for (const Frame& f : frames)
+      if (std::isfinite(f.data()[i])) values.push_back(f.data()[i]);
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    median.data()[i] = *middle;
+    if (!values.empty()) std::nth_element(values.begin(), middle, values.end());
+    median.data()[i] = values.empty() ? std::numeric_limits<double>::quiet_NaN() : *middle;
   }
-  std::vector<double> distance(frames.size());
-  for (std::size_t f = 0; f < frames.size(); ++f) distance[f] = (frames[f] - median).norm();
+  std::vector<double> distance(frames.size());  // over the readings finite in both
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    distance[f] = (frames[f] - median).unaryExpr([](double d) { return std::isfinite(d) ? d : 0.0; }).norm();
   std::vector<double> sorted = distance;
   const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
   std::nth_element(sorted.begin(), middle, sorted.end());
@@ -41,9 +47,15 @@ std::vector<bool> frames_kept(const std::vector<Frame>& frames) {
 Reference average_reference(const std::vector<Frame>& frames) {
   const std::vector<bool> kept = frames_kept(frames);
   Reference reference{Frame::Zero(frames[0].rows(), frames[0].cols()), 0};
-  for (std::size_t f = 0; f < frames.size(); ++f)
-    if (kept[f]) reference.frame += frames[f], reference.frames += 1;
-  reference.frame /= reference.frames;
+  Frame counts = Frame::Zero(frames[0].rows(), frames[0].cols());  // each reading's finite values
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (!kept[f]) continue;
+    reference.frames += 1;
+    for (Index i = 0; i < counts.size(); ++i)
+      if (std::isfinite(frames[f].data()[i])) reference.frame.data()[i] += frames[f].data()[i], counts.data()[i] += 1;
+  }
+  // A reading no kept frame held is NaN: masked in every frame (frame/masked_readings.hpp).
+  reference.frame.array() /= counts.array();
   return reference;
 }
 
@@ -74,7 +86,8 @@ bool ReferenceTracker::follow(const Frame& frame, bool touched) {
     throw InvalidInput("reference: a frame of another size than the reference");
   const double r = options_.drift_rate;
   if (touched || r == 0) return false;
-  reference_.frame += r * (frame - reference_.frame);
+  for (Index i = 0; i < frame.size(); ++i)  // a reading not finite leaves its reference as it was
+    if (std::isfinite(frame.data()[i])) reference_.frame.data()[i] += r * (frame.data()[i] - reference_.frame.data()[i]);
   // Var(V_ref) ← (1 − r)² Var(V_ref) + r² σ², in units of one frame's σ²: it falls from 1/n toward
   // r/(2 − r) (199 frames' worth at r = 0.01).
   reference_.frames = 1 / ((1 - r) * (1 - r) / reference_.frames + r * r);

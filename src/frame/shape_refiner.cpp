@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <tuple>
@@ -293,7 +292,6 @@ const std::vector<RefinedContact>& ShapeRefiner::refine(const Vector& dV, const 
         trial_round.push_back(false);
         const double c = solve(dV, trial, trial_iterations, trial_round);
         trial_reach.push_back(to_ellipse(trial.back().data()).semi_major_mm());
-        std::fprintf(stderr, "merge %zu,%zu: chi2 %g -> %g (worth %g)\n", i, j, chi2, c, worth);
         if (c < chi2 + worth && (best.empty() || c < best_chi2))
           best = std::move(trial), best_round = std::move(trial_round), best_reach = std::move(trial_reach),
           best_chi2 = c;

@@ -34,15 +34,15 @@ void write_frames_csv(std::ostream& out, const std::vector<Frame>& frames) {
   }
 }
 
-FramesCsvReader::FramesCsvReader(const std::string& path, int electrode_count)
-    : lines_(path, "frames file"), electrode_count_(electrode_count) {}
+FramesCsvReader::FramesCsvReader(const std::string& path, int electrode_count, bool readings_may_be_missing)
+    : lines_(path, "frames file"), electrode_count_(electrode_count), readings_may_be_missing_(readings_may_be_missing) {}
 
 bool FramesCsvReader::next(Frame& frame) {
   do {
     if (!lines_.next(line_)) return false;
   } while (line_.find_first_not_of(" \t") == std::string::npos);
   const Index values_per_frame = static_cast<Index>(electrode_count_) * electrode_count_;
-  parse_csv_numbers(line_, lines_, values_);
+  parse_csv_numbers(line_, lines_, values_, readings_may_be_missing_);
   const auto count = static_cast<Index>(values_.size());
   if (count != values_per_frame)
     throw InvalidInput(where() + ": " + std::to_string(count) + " values, expected " +
@@ -53,8 +53,8 @@ bool FramesCsvReader::next(Frame& frame) {
   return true;
 }
 
-std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count) {
-  FramesCsvReader reader(path, electrode_count);
+std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count, bool readings_may_be_missing) {
+  FramesCsvReader reader(path, electrode_count, readings_may_be_missing);
   std::vector<Frame> frames;
   for (Frame frame; reader.next(frame);) frames.push_back(frame);
   if (frames.empty()) throw InvalidInput(path + ": no frames (an empty file?)");

@@ -17,6 +17,7 @@
 #include "emit/io/tracks_csv.hpp"
 #include "emit/pipeline/pipeline.hpp"
 #include "emit/render/pressure_map.hpp"
+#include "emit/sensor/adc.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "reconstruct_inputs.hpp"
 #include "reference_frames.hpp"
@@ -44,21 +45,29 @@ void write_image(const Reconstructor& reconstructor, const std::vector<Contact>&
 
 namespace {
 
-/// What a first pass over the frames file finds: how many frames, and the dead electrodes.
+/// What a first pass over the frames file finds: how many frames, the dead electrodes, and the
+/// readings the reconstructor will mask (not finite, or clipped: frame/masked_readings.hpp).
 struct FramesSurvey {
   long frames = 0;
   std::vector<DeadElectrode> dead;
+  long readings_masked = 0, frames_with_masked = 0;
 };
 
 /// Reads every frame once (checking every value) without keeping them: a bad value stops the run
 /// before anything is built or written, in constant memory whatever the file's length.
 FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N) {
-  FramesCsvReader reader(path, N);
+  FramesCsvReader reader(path, N, true);
   ElectrodeHealthTally health(N, sensor.adc);
   FramesSurvey survey;
+  const double clipped = clipped_at_V(sensor.adc);
   for (Frame frame; reader.next(frame); ++survey.frames) {
     check_readings_in_range(frame, sensor.adc, reader.where());
     health.add(frame);
+    long masked = 0;
+    for (Index l = 0; l < N; ++l)
+      for (Index m = 0; m < N; ++m) masked += l != m && !(std::isfinite(frame(l, m)) && frame(l, m) < clipped) ? 1 : 0;
+    survey.readings_masked += masked;
+    survey.frames_with_masked += masked > 0 ? 1 : 0;
   }
   if (survey.frames == 0) throw InvalidInput(path + ": no frames (an empty file?)");
   survey.dead = health.dead();
@@ -111,6 +120,8 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   report.lambda2 = pipeline.operator_options().lambda2;
   report.calibrated = pipeline.calibrated();
   report.frames = static_cast<std::size_t>(survey.frames);
+  report.readings_masked = survey.readings_masked;
+  report.frames_with_masked = survey.frames_with_masked;
 
   FrameOptions frame_options;
   frame_options.threshold_fraction = job.threshold_fraction;
@@ -133,14 +144,13 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   std::optional<TactileMcap> mcap;
   if (mcap_file.given()) mcap.emplace(std::move(mcap_file), sensor.name, model.mesh, start_ns);
   const auto online_start = std::chrono::steady_clock::now();
-  FramesCsvReader reader(job.frames_path, N);
+  FramesCsvReader reader(job.frames_path, N, true);
   std::vector<Frame> chunk;
   chunk.reserve(chunk_frames);
   for (std::size_t first = 0; first < report.frames; first += chunk_frames) {
     chunk.clear();
     for (Frame frame; chunk.size() < chunk_frames && reader.next(frame);) chunk.push_back(frame);
     const std::size_t count = chunk.size();
-    check_no_stuck_rows(chunk, sensor.adc, options.excluded, job.frames_path, first);
     // Each frame's contacts tracked, then written: its line (with its board time and the touches
     // that ended) and its tracks' rows.
     const auto track_and_write = [&](std::size_t index, const std::vector<Contact>& found, double misfit_mV) {

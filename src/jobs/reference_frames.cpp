@@ -9,7 +9,7 @@
 namespace emit::detail {
 
 Reference read_reference(const std::string& path, const Sensor& sensor, int electrode_count, const Progress& progress) {
-  const std::vector<Frame> frames = read_frames_csv(path, electrode_count);
+  const std::vector<Frame> frames = read_frames_csv(path, electrode_count, true);
   for (std::size_t f = 0; f < frames.size(); ++f)
     check_readings_in_range(frames[f], sensor.adc, path + ": frame " + std::to_string(f));
   Reference reference = average_reference(frames);

@@ -22,7 +22,9 @@ double LatencyStats::quantile_s(double q) const {
   std::uint64_t seen = 0;
   for (std::size_t b = 0; b < bins_.size(); ++b) {
     seen += bins_[b];
-    if (seen >= std::max<std::uint64_t>(rank, 1)) return std::min(static_cast<double>(b + 1) * bin_s, max_s_);
+    // The last bin holds every latency beyond range_s: its upper edge is the largest one seen.
+    if (seen >= std::max<std::uint64_t>(rank, 1))
+      return b + 1 == bins_.size() ? max_s_ : std::min(static_cast<double>(b + 1) * bin_s, max_s_);
   }
   return max_s_;
 }

@@ -114,7 +114,11 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   const auto reconstructing = std::chrono::steady_clock::now();
   const std::vector<Contact>& contacts = tracker_.update(reconstructor_.process(frame.volts), frame.board_time_s);
   out.ended = &tracker_.ended();
-  if (reference_.follow(frame.volts, !contacts.empty())) reconstructor_.set_reference(reference_.reference());
+  const std::size_t masked = reconstructor_.masked_readings().size();
+  stats_.readings_masked += masked;
+  stats_.frames_with_masked += masked > 0 ? 1 : 0;
+  if (reference_.follow(frame.volts, !contacts.empty() || masked > 0))  // a glitch is not drift
+    reconstructor_.set_reference(reference_.reference());
   const auto outputting = std::chrono::steady_clock::now();
   reconstructing_s_ += seconds_between(reconstructing, outputting);
   if (contacts_out_) write_contacts(out, contacts);

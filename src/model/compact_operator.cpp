@@ -7,15 +7,19 @@
 namespace emit {
 
 CompactOperator::CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound,
-                                 double largest_singular_value, double lambda2)
+                                 double largest_singular_value, double lambda2, Eigen::MatrixXf precision)
     : left_(std::move(left)),
       right_(std::move(right)),
+      precision_(std::move(precision)),
       truncation_bound_(truncation_bound),
       largest_singular_value_(largest_singular_value),
       lambda2_(lambda2) {
   if (left_.cols() != right_.rows())
     throw InvalidInput("compact operator: factors of " + std::to_string(left_.cols()) + " and " +
                        std::to_string(right_.rows()) + " singular values");
+  if (precision_.size() > 0 && (precision_.rows() != right_.cols() || precision_.cols() != right_.cols()))
+    throw InvalidInput("compact operator: a precision of " + std::to_string(precision_.rows()) + " by " +
+                       std::to_string(precision_.cols()) + " for " + std::to_string(right_.cols()) + " readings");
 }
 
 Vector CompactOperator::row_norms() const { return left_.cast<double>().rowwise().norm(); }

@@ -17,7 +17,8 @@ namespace emit {
 
 namespace {
 
-constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '3'};  // 2: compact factors in float; 3: and λ²
+// 2: compact factors in float; 3: and λ²; 4: and the measurements' precision
+constexpr char magic[8] = {'E', 'M', 'I', 'T', 'O', 'P', 'R', '4'};
 
 std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 1469598103934665603ull) {
   const auto* bytes = static_cast<const unsigned char*>(data);
@@ -55,7 +56,7 @@ std::string operator_cache_key(const Sensor& sensor, const Mesh& mesh, const Mea
                                const OperatorOptions& options) {
   std::ostringstream key;
   key.precision(17);
-  key << "emit-operator-v3|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
+  key << "emit-operator-v4|sensor:" << sensor_to_json(sensor).dump() << "|mesh:" << hex(mesh_hash(mesh))
       << "|triangles:" << mesh.triangle_count() << "|measurements:";
   for (int i : measurements.frame_index) key << i << ',';
   key << "|prior:" << prior_name(options.prior) << "|lambda2:";
@@ -103,11 +104,11 @@ std::optional<CompactOperator> load_cached_operator(const std::string& cache_dir
   double bound = 0, largest = 0, lambda2 = 0;
   if (!read_value(in, rows) || !read_value(in, cols) || !read_value(in, rank) || !read_value(in, bound) ||
       !read_value(in, largest) || !read_value(in, lambda2) || !(lambda2 > 0) || rows <= 0 || cols <= 0 || rank < 0 ||
-      rank > cols || rows > (1 << 26) || cols > (1 << 20))
+      rank > cols || rows > (1 << 26) || cols > (1 << 14))
     return std::nullopt;
-  Eigen::MatrixXf left(rows, rank), right(rank, cols);
-  if (!read_floats(in, left) || !read_floats(in, right)) return std::nullopt;
-  return CompactOperator(std::move(left), std::move(right), bound, largest, lambda2);
+  Eigen::MatrixXf left(rows, rank), right(rank, cols), precision(cols, cols);
+  if (!read_floats(in, left) || !read_floats(in, right) || !read_floats(in, precision)) return std::nullopt;
+  return CompactOperator(std::move(left), std::move(right), bound, largest, lambda2, std::move(precision));
 }
 
 void store_cached_operator(const std::string& cache_dir, const std::string& key, const CompactOperator& op) {
@@ -127,6 +128,8 @@ void store_cached_operator(const std::string& cache_dir, const std::string& key,
   write_value(out, op.lambda2());
   write_floats(out, op.left());
   write_floats(out, op.right());
+  if (op.precision().rows() != op.cols()) throw InvalidInput("operator cache: the operator has no precision to store");
+  write_floats(out, op.precision());
   file.commit();
 }
 

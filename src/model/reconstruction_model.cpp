@@ -4,6 +4,7 @@
 #include "emit/model/image_noise.hpp"
 #include "emit/model/jacobian.hpp"
 #include "emit/model/operator_cache.hpp"
+#include "emit/sensor/adc.hpp"
 
 namespace emit {
 
@@ -18,6 +19,7 @@ ReconstructionModel build_reconstruction_model(const Sensor& sensor, const Opera
   model.options = options;
   model.uncalibrated = LinearCalibration::uncalibrated(sensor);
   model.reading_noise_V = reading_noise_V(sensor.adc);
+  model.clipped_at_V = clipped_at_V(sensor.adc);
   say("meshing");
   model.mesh = generate_mesh(sensor, reconstruction_mesh_options(sensor));
   model.surface = sensor.shape;

@@ -176,8 +176,9 @@ CompactOperator OperatorFamily::compact_operator_for(double lambda2, double rela
   for (Index j = 0; j < k; ++j) V_k.col(j) = V.col(order[static_cast<std::size_t>(j)]);
   const double bound = k < M && s1 > 0 ? std::sqrt(std::max(0.0, s2[order[static_cast<std::size_t>(k)]])) / s1 : 0.0;
   const Matrix right = (U_ * V_k).transpose();
+  const Matrix precision = U_ * f.asDiagonal() * U_.transpose();  // (J Q⁻¹ Jᵀ + λ² I)⁻¹
   return CompactOperator(prior_inverse_jt_times_in_float(U_ * f.asDiagonal() * V_k), right.cast<float>(), bound, s1,
-                         lambda2);
+                         lambda2, precision.cast<float>());
 }
 
 void OperatorOptions::validate() const {

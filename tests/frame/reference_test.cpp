@@ -3,6 +3,7 @@
 #include "emit/frame/reference.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,6 +28,31 @@ TEST(ReferenceTracker, CaptureIsTheMeanOfTheFirstFrames) {
   EXPECT_EQ(tracker.captures(), 1u);
   EXPECT_EQ(tracker.reference().frame, constant_frame(2.5));
   EXPECT_EQ(tracker.reference().frames, 4.0);
+}
+
+// A board's dropped reading (NaN) is left out of its reading's mean: (1 + 3 + 4)/3 there, 2.5 V
+// elsewhere; a reading no frame held stays NaN (masked in every frame), and a NaN in a followed
+// frame leaves its reading's reference as it was.
+TEST(ReferenceTracker, AReadingNotFiniteIsLeftOutOfItsMean) {
+  std::vector<Frame> frames = {constant_frame(1), constant_frame(2), constant_frame(3), constant_frame(4)};
+  frames[1](0, 1) = std::nan("");
+  for (Frame& f : frames) f(2, 3) = std::nan("");
+  const Reference reference = average_reference(frames);
+  EXPECT_EQ(reference.frames, 4.0);
+  EXPECT_DOUBLE_EQ(reference.frame(0, 1), 8.0 / 3);
+  EXPECT_EQ(reference.frame(1, 1), 2.5);
+  EXPECT_TRUE(std::isnan(reference.frame(2, 3)));
+
+  ReferenceOptions options;
+  options.capture_frames = 1;
+  options.drift_rate = 0.5;
+  ReferenceTracker tracker(options);
+  tracker.capture(constant_frame(1.0));
+  Frame glitched = constant_frame(3.0);
+  glitched(1, 2) = std::nan("");
+  EXPECT_TRUE(tracker.follow(glitched, false));
+  EXPECT_EQ(tracker.reference().frame(1, 2), 1.0);
+  EXPECT_EQ(tracker.reference().frame(2, 1), 2.0);
 }
 
 // V_ref ← V_ref + r (V − V_ref): after n untouched frames at V the gap is (1 − r)^n of the start's.

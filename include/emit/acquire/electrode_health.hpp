@@ -4,7 +4,8 @@
 /// electrode whatever is pressed (its ADC input is pulled down); as the grounded one it grounds
 /// nothing, so the pressed sheet rises to the drive and its whole row reads full scale. Either,
 /// in every frame that has signal, marks the electrode dead: the reconstruction then leaves out
-/// all its measurements (as ground and as sense) and keeps the rest.
+/// all its measurements (as ground and as sense) and keeps the rest. Frames with a value that is
+/// not finite are not counted.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -38,16 +39,12 @@ class ElectrodeHealthTally {
 /// such frame to say anything.
 std::vector<DeadElectrode> find_dead_electrodes(const std::vector<Frame>& frames, const AdcSpec& adc);
 
-/// A frame with a whole row at full scale whose electrode is not dead overall: the grounding
-/// failed in that frame only. \throw InvalidInput "<source>: frame <i>: ground <l> reads <v> V
-/// on every electrode …".
-void check_no_stuck_rows(const std::vector<Frame>& frames, const AdcSpec& adc, const std::vector<int>& dead,
-                         const std::string& source, std::size_t first_frame = 0);
-
 /// The first reading an ADC of this spec cannot give: below 0 V or above its reference, by more
-/// than the rail tolerance (volts in another unit, another board's frames, NaN): "ground l, sense
+/// than the rail tolerance (volts in another unit, another board's frames): "ground l, sense
 /// m reads v V, outside the ADC's 0 to vref V (sensor "adc")"; empty when there is none. The one
-/// check of a frame's range, for files (check_readings_in_range) and arrays (the Python module).
+/// check of a frame's range, for files (check_readings_in_range) and arrays (the Python module). A
+/// value that is not finite is no range error: the reconstructor masks it (frame/masked_readings.hpp).
+/// (A grounding that fails in one frame, its row at full scale, is masked there too: clipped.)
 std::string reading_out_of_range(const Eigen::Ref<const Frame>& frame, const AdcSpec& adc);
 
 /// \throw InvalidInput "<where>: " + reading_out_of_range(frame, adc) when that is not empty.

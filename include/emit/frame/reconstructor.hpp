@@ -12,6 +12,7 @@
 #include "emit/frame/contact_fitter.hpp"
 #include "emit/frame/contacts.hpp"
 #include "emit/frame/image_forces.hpp"
+#include "emit/frame/masked_readings.hpp"
 #include "emit/frame/reference.hpp"
 #include "emit/frame/shape_refiner.hpp"
 #include "emit/model/calibration.hpp"
@@ -72,18 +73,24 @@ class Reconstructor {
                 FrameOptions options = {});
 
   /// The no-contact reference (frame/reference.hpp); how many frames' noise it holds sets the
-  /// significance floor (its noise adds to every δV: model/image_noise.hpp).
-  /// \throw InvalidInput if its frame is not N×N or not finite, or its count is below 1.
+  /// significance floor (its noise adds to every δV: model/image_noise.hpp). A value that is not
+  /// finite (a reading no reference frame held) masks its reading in every frame.
+  /// \throw InvalidInput if its frame is not N×N or has no finite value, or its count is below 1.
   void set_reference(const Reference& reference);
 
   /// The last frame's fit (null for a linear method).
   const FitResult* fit_result() const { return fitter_ ? &fitter_result_ : nullptr; }
 
-  /// One frame → contacts (valid until the next call). \throw InvalidInput if the frame is not
-  /// N×N; the frame's values are not checked here (the readers check them).
+  /// One frame → contacts (valid until the next call). Readings not finite or clipped at the ADC's
+  /// top code (ReconstructionModel::clipped_at_V) are masked: filled by their mean given the others
+  /// (frame/masked_readings.hpp), so the image is the one the other readings give. A frame with
+  /// more than half its readings masked tells nothing: no contacts. \throw InvalidInput if the
+  /// frame is not N×N.
   const std::vector<Contact>& process(const FrameView& frame);
   const std::vector<Contact>& process(const Frame& frame) { return process(frame_view(frame)); }
 
+  /// The last frame's masked readings (their indices in the model's measurement set).
+  const std::vector<Index>& masked_readings() const { return masked_; }
   const Vector& image() const { return dphi_; }         ///< δφ per element [V] (0 while tracking holds)
   const Vector& pressure() const { return pressure_; }  ///< per element [N/mm²], 0 below threshold
   /// Per element, the image value a contact must exceed somewhere (−∞ without the test).
@@ -103,6 +110,8 @@ class Reconstructor {
   ContactFinder finder_;
   std::optional<ImageForces> image_forces_;  ///< with linear_.force_law
   Vector reference_, dV_, dphi_, pressure_;
+  std::vector<Index> masked_;  ///< capacity M, kept
+  MaskedReadingFill fill_;
   Vector noise_per_volt_;  ///< ‖row k of R‖ times the significance's k
   Vector floor_;
   std::vector<std::uint8_t> selected_;

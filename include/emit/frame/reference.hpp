@@ -24,7 +24,9 @@ struct Reference {
 
 /// The mean of `frames`, robust to a bad one: frames whose RMS distance from the per-reading
 /// median exceeds 3× the median of those distances (a glitch, a touch, a burst of noise) are left
-/// out; with one or two frames, the plain mean. `frames` is the count kept.
+/// out; with one or two frames, the plain mean. `frames` is the count kept. Values that are not
+/// finite (a board's dropped reading, a file's `nan`) are left out of their reading's mean; a
+/// reading with none is NaN (the reconstructor masks it in every frame).
 /// \throw InvalidInput if there are none or their sizes differ.
 Reference average_reference(const std::vector<Frame>& frames);
 

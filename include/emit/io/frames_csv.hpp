@@ -21,10 +21,13 @@ void write_frames_csv(std::ostream& out, const std::vector<Frame>& frames);
 /// Frames one at a time, so a file of any length is read in constant memory.
 class FramesCsvReader {
  public:
+  /// `readings_may_be_missing`: `nan` and `inf` are read as values (a board's dropped or broken
+  /// reading, masked by the reconstructor: frame/masked_readings.hpp); else they are errors.
   /// \throw IoError if the file cannot be opened.
-  FramesCsvReader(const std::string& path, int electrode_count);
+  FramesCsvReader(const std::string& path, int electrode_count, bool readings_may_be_missing = false);
   /// The next frame into `frame` (resized to N×N). \return false at the end of the file.
-  /// \throw InvalidInput naming the line and value for a wrong value count, text, NaN or infinity.
+  /// \throw InvalidInput naming the line and value for a wrong value count, text, or (unless
+  /// readings may be missing) NaN or infinity.
   bool next(Frame& frame);
   std::string where() const { return lines_.where(); }  ///< "<path>:<line>" of the last frame
   long frames_read() const { return frames_read_; }
@@ -32,6 +35,7 @@ class FramesCsvReader {
  private:
   LineReader lines_;
   int electrode_count_;
+  bool readings_may_be_missing_;
   std::string line_;
   std::vector<double> values_;  ///< the line's numbers, kept between lines
   long frames_read_ = 0;
@@ -39,6 +43,6 @@ class FramesCsvReader {
 
 /// Read all frames of `electrode_count` electrodes. \throw IoError if unreadable; InvalidInput
 /// as FramesCsvReader::next, or "<path>: no frames" for a file without any.
-std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count);
+std::vector<Frame> read_frames_csv(const std::string& path, int electrode_count, bool readings_may_be_missing = false);
 
 }  // namespace emit

@@ -43,6 +43,9 @@ struct ReconstructReport {
   double lambda2 = 0;  ///< the linear operator's
   bool calibrated = false;
   std::vector<int> dead_electrodes;  ///< left out (each also told to progress.warning)
+  /// Readings masked (a value `nan`/`inf`, or at the ADC's top code: frame/masked_readings.hpp) and
+  /// the frames that had any, dead electrodes' readings included.
+  long readings_masked = 0, frames_with_masked = 0;
 };
 
 /// \throw InvalidInput, IoError, SolverError with one-line messages naming the file.

@@ -18,6 +18,7 @@ class LatencyStats {
   double mean_s() const { return count_ ? sum_s_ / static_cast<double>(count_) : 0; }
   double max_s() const { return max_s_; }
   /// The q-quantile (q in [0, 1]) to within bin_s: the upper edge of the bin holding it; 0 if empty.
+  /// Beyond range_s, an upper bound: the largest latency seen.
   double quantile_s(double q) const;
 
  private:

@@ -67,6 +67,9 @@ struct LiveStats {
   /// Frames the source numbered but never handed out: the sum of the gaps between consecutive
   /// sequence numbers (a number at or behind the last one, a source that started again, is no gap).
   std::uint64_t frames_missed = 0;
+  /// Readings masked (not finite, or clipped at the ADC's top code: frame/masked_readings.hpp), and
+  /// the reconstructed frames that had any. Such a frame does not move the reference's drift.
+  std::uint64_t readings_masked = 0, frames_with_masked = 0;
   double seconds = 0;  ///< from the first reconstructed frame to the last
   double frames_per_s = 0;
   LatencyStats latency;  ///< end to end, per reconstructed frame

@@ -7,6 +7,11 @@
 /// values fall fast (the regularisation filters the data's small ones): on the default sensor k is
 /// about 100 of M = 240. The products run in BLAS (sgemv), which picks the CPU's widest vector
 /// instructions at run time.
+///
+/// Beside the factors it keeps P = (J Q⁻¹ Jᵀ + λ² I)⁻¹ (M by M, float), the precision of the
+/// operator's Gaussian prior on δV: readings a frame cannot be trusted with are filled by their
+/// mean given the others under it (frame/masked_readings.hpp), which makes the image exactly the
+/// one an operator built without them would give.
 #include <Eigen/Core>
 
 #include "emit/core/types.hpp"
@@ -23,8 +28,9 @@ class CompactOperator {
   CompactOperator() = default;
   /// From its factors, as OperatorFamily::compact_operator_for builds them (without forming R)
   /// and the cache stores them. \throw InvalidInput if their sizes do not match.
+  /// `precision`: P above, M by M, or empty (no reading can then be masked).
   CompactOperator(Eigen::MatrixXf left, Eigen::MatrixXf right, double truncation_bound, double largest_singular_value,
-                  double lambda2 = 0);
+                  double lambda2 = 0, Eigen::MatrixXf precision = {});
 
   /// Scratch already sized for this operator.
   CompactOperatorScratch scratch() const;
@@ -45,10 +51,13 @@ class CompactOperator {
   Vector row_norms() const;
   const Eigen::MatrixXf& left() const { return left_; }    ///< A, #F by k
   const Eigen::MatrixXf& right() const { return right_; }  ///< B, k by M
+  /// P = (J Q⁻¹ Jᵀ + λ² I)⁻¹, M by M; empty when not built with it.
+  const Eigen::MatrixXf& precision() const { return precision_; }
 
  private:
   Eigen::MatrixXf left_;   ///< A = U_k S_k, column-major #F by k
   Eigen::MatrixXf right_;  ///< B = V_kᵀ, column-major k by M
+  Eigen::MatrixXf precision_;
   double truncation_bound_ = 0, largest_singular_value_ = 0, lambda2_ = 0;
 };
 

@@ -3,6 +3,7 @@
 /// The offline half of reconstruction (docs/architecture.md, the offline line): sensor → mesh → Jacobian → operator,
 /// built once per sensor and method, with the operator cached on disk.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct ReconstructionModel {
   /// One reading's noise σ [V] (model/image_noise.hpp): contacts are reported only where the
   /// image stands out from the noise this puts in it. 0: no such test.
   double reading_noise_V = 0;
+  /// Readings at or above this [V] are clipped (sensor/adc.hpp's clipped_at_V), so masked
+  /// (frame/masked_readings.hpp). +∞: none is.
+  double clipped_at_V = std::numeric_limits<double>::infinity();
   bool loaded_from_cache = false;
 };
 

@@ -15,6 +15,10 @@ std::uint16_t adc_code(const AdcSpec& adc, double volts);
 /// One ADC step [V].
 double adc_step_V(const AdcSpec& adc);
 
+/// Readings at or above this [V] are at the ADC's top code (within half a step of vref): clipped,
+/// the true value unknown above it (frame/masked_readings.hpp masks them).
+double clipped_at_V(const AdcSpec& adc);
+
 /// The noise of one reading [V]: the ADC's Gaussian noise and its quantisation (step²/12).
 double reading_noise_V(const AdcSpec& adc);
 
