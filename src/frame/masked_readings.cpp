@@ -9,8 +9,7 @@
 namespace emit {
 
 MaskedReadingFill::MaskedReadingFill(Index readings, Index max_masked)
-    : factor_(std::min(max_masked, readings), std::min(max_masked, readings)),
-      rhs_(std::min(max_masked, readings)) {}
+    : factor_(std::min(max_masked, readings), std::min(max_masked, readings)), rhs_(std::min(max_masked, readings)) {}
 
 void MaskedReadingFill::fill(const Eigen::MatrixXf& precision, const std::vector<Index>& masked, Vector& dV) {
   const auto k = static_cast<Index>(masked.size());

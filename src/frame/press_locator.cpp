@@ -95,7 +95,8 @@ double PressLocator::marginalise(Index k) {
   const Matrix& precision = response_.precision;
   // Λ_𝓑𝓑 = LLᵀ (core/small_cholesky.hpp: Eigen's would allocate per frame).
   auto L = masked_block_.topLeftCorner(k, k);
-  small_cholesky(k, [&](Index i, Index j) { return precision(bad_(i), bad_(j)); }, L);
+  small_cholesky(
+      k, [&](Index i, Index j) { return precision(bad_(i), bad_(j)); }, L);
   // y = (Λd)_𝓑 (d is 0 on 𝓑), t = Λ_𝓑𝓑⁻¹ y; Λ'd = Λd − Λ_{·𝓑} t.
   auto t = masked_y_.head(k);
   for (Index i = 0; i < k; ++i) t(i) = weighted_change_(bad_(i));

@@ -87,7 +87,8 @@ bool ReferenceTracker::follow(const Frame& frame, bool touched) {
   const double r = options_.drift_rate;
   if (touched || r == 0) return false;
   for (Index i = 0; i < frame.size(); ++i)  // a reading not finite leaves its reference as it was
-    if (std::isfinite(frame.data()[i])) reference_.frame.data()[i] += r * (frame.data()[i] - reference_.frame.data()[i]);
+    if (std::isfinite(frame.data()[i]))
+      reference_.frame.data()[i] += r * (frame.data()[i] - reference_.frame.data()[i]);
   // Var(V_ref) ← (1 − r)² Var(V_ref) + r² σ², in units of one frame's σ²: it falls from 1/n toward
   // r/(2 − r) (199 frames' worth at r = 0.01).
   reference_.frames = 1 / ((1 - r) * (1 - r) / reference_.frames + r * r);

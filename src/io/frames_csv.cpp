@@ -35,7 +35,9 @@ void write_frames_csv(std::ostream& out, const std::vector<Frame>& frames) {
 }
 
 FramesCsvReader::FramesCsvReader(const std::string& path, int electrode_count, bool readings_may_be_missing)
-    : lines_(path, "frames file"), electrode_count_(electrode_count), readings_may_be_missing_(readings_may_be_missing) {}
+    : lines_(path, "frames file"),
+      electrode_count_(electrode_count),
+      readings_may_be_missing_(readings_may_be_missing) {}
 
 bool FramesCsvReader::next(Frame& frame) {
   do {

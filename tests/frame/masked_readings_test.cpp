@@ -1,8 +1,8 @@
 // Readings a frame cannot be trusted with: filled by their mean given the others under the
 // operator's prior, the image is exactly that of the operator built without them (the identity
-// and the Laplacian prior: a Q that does not depend on J's rows, as NOSER's does); the reconstructor masks a board's glitches (a dropped reading, a clipped
-// one, a grounding that failed for one frame) and places the press as in the clean frame,
-// allocating nothing.
+// and the Laplacian prior: a Q that does not depend on J's rows, as NOSER's does); the reconstructor masks a board's
+// glitches (a dropped reading, a clipped one, a grounding that failed for one frame) and places the press as in the
+// clean frame, allocating nothing.
 #include "emit/frame/masked_readings.hpp"
 
 #include <algorithm>
@@ -73,7 +73,7 @@ TEST(MaskedReadings, TheImageIsThatOfTheOperatorWithoutThem) {
   MaskedReadingFill small(10, 2);
   Vector v = Vector::Zero(10);
   EXPECT_THROW(small.fill(Eigen::MatrixXf::Identity(10, 10), {1, 2, 3}, v), InvalidInput);  // beyond its scratch
-  EXPECT_THROW(small.fill(Eigen::MatrixXf::Identity(9, 9), {1}, v), InvalidInput);         // another size
+  EXPECT_THROW(small.fill(Eigen::MatrixXf::Identity(9, 9), {1}, v), InvalidInput);          // another size
 }
 
 // A board's glitches in one frame of a press: two dropped readings (NaN), two clipped at the top
