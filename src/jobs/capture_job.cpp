@@ -135,7 +135,11 @@ CaptureReport run_capture_job(const CaptureJob& job, const std::atomic<bool>& st
                            report.truth_path + " --out " + job.calibrate.out_path;
   const Sensor sensor = load_sheet_sensor(job.calibrate.sensor_path);
   require_emit_protocol(sensor, job.calibrate.sensor_path.empty() ? "the built-in sensor" : job.calibrate.sensor_path);
-  const std::unique_ptr<FrameSource> source = open_source(job.source_spec, sensor, job.source);
+  // The twin (sim:…) stays untouched for the reference's frames and a few more whatever its pace:
+  // its script's quiet second is fewer frames than step 1 reads when a slow machine lowers the pace.
+  SourceOptions source_options = job.source;
+  source_options.untouched_frames = std::max(source_options.untouched_frames, job.quiet_frames + 5);
+  const std::unique_ptr<FrameSource> source = open_source(job.source_spec, sensor, source_options);
   line("source: " + source->description());
   progress.say("preparing the nominal contact fit for the coverage map");
   const Pipeline pipeline(sensor, PipelineOptions{Method::fit, 0, job.calibrate.options.cache_dir, {}}, {},

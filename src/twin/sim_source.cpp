@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <utility>
+#include <vector>
 
 #include "emit/core/errors.hpp"
 
@@ -63,11 +64,14 @@ SimSource::~SimSource() {
 
 void SimSource::produce() {
   const auto start = std::chrono::steady_clock::now();
+  bool pressed_yet = false;
   try {
     for (std::uint64_t sequence = 0;; ++sequence) {
       SourceFrame frame;
       const auto making = std::chrono::steady_clock::now();
-      frame.volts = twin_.frame(presses_of(sequence), &frame.raw.counts);
+      const std::vector<Press> presses = presses_of(sequence);
+      pressed_yet = pressed_yet || !presses.empty();
+      frame.volts = twin_.frame(presses, &frame.raw.counts);
       const double made_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - making).count();
       frame.sequence = sequence;
       const double due_s = frames_per_s_ > 0 ? static_cast<double>(sequence) / frames_per_s_ : 0;
@@ -85,7 +89,10 @@ void SimSource::produce() {
       frame.raw.electrode_count = static_cast<int>(frame.volts.rows());
       frame.raw.adc_bits = sensor_.adc.bits;
       frame.raw.oversampling = 1;
-      if (frames_per_s_ == 0) {  // unpaced: the twin waits for the reader, so every frame is read
+      // Unpaced, the twin waits for the reader, so every frame is read; paced, so do the frames
+      // before its first press: the reference is captured from them, and a person presses once
+      // the program is ready, so a reader stalled by a loaded machine must not capture a press.
+      if (frames_per_s_ == 0 || !pressed_yet) {
         ready_.wait(lock, [this] { return stop_ || queue_.size() < queue_limit; });
         if (stop_) return;
       } else if (queue_.size() >= queue_limit) {  // paced like a board: its frames come whether read or not

@@ -50,7 +50,9 @@ class SimSource : public FrameSource {
   /// The mean time the twin has taken per frame since the source started [s] (0 before a frame).
   double frame_cost_s() const override;
   /// Frames the twin made that were dropped because the reader fell more than `queue_limit` behind
-  /// (paced only: unpaced, frames_per_s = 0, the twin waits for the reader and drops none).
+  /// (paced only, and from the script's first press on: unpaced, frames_per_s = 0, and for the
+  /// untouched frames before it, from which the reference is captured, the twin waits for the
+  /// reader and drops none, as a person waits for the program before pressing).
   std::uint64_t dropped() const;
 
   static constexpr std::size_t queue_limit = 8;
