@@ -17,7 +17,8 @@ std::string shape_text(const py::array& array) {
 
 }  // namespace
 
-FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what) {
+FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what,
+                       bool readings_may_be_missing) {
   const py::array given = py::array::ensure(frames);
   if (!given) throw InvalidInput(what + ": expected a numpy array (or a nested list) of numbers");
   const py::ssize_t n = electrodes;
@@ -35,7 +36,7 @@ FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec
   if (!stack.array) throw InvalidInput(what + ": could not be read as float64");
   const auto per_frame = static_cast<std::size_t>(n * n);
   const double* values = stack.array.data();
-  for (std::size_t i = 0; i < stack.count * per_frame; ++i)
+  for (std::size_t i = 0; i < stack.count * per_frame && !readings_may_be_missing; ++i)
     if (!std::isfinite(values[i])) {
       const std::size_t f = i / per_frame, l = i % per_frame / static_cast<std::size_t>(n),
                         m = i % static_cast<std::size_t>(n);

@@ -37,10 +37,12 @@ struct FrameStack {
 };
 
 /// \throw InvalidInput "<what>: expected an (N, N) or (frames, N, N) array with N = 16, got shape (3, 4)",
-/// or naming the first value that is not a finite number, or the first reading the sensor's ADC
+/// or naming the first value that is not a finite number (unless `readings_may_be_missing`: then
+/// NaN and inf are a board's lost readings, which the reconstructor masks), or the first reading the sensor's ADC
 /// cannot give, as the commands say it of a frames file ("frames: frame 2: ground 0, sense 5
 /// reads 1200 V, outside the ADC's 0 to 3.3 V (sensor "adc")"; acquire/electrode_health.hpp).
-FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what);
+FrameStack frame_stack(const py::handle& frames, Index electrodes, const AdcSpec& adc, const std::string& what,
+                       bool readings_may_be_missing = false);
 
 /// The values of `vector`, moved into a numpy array that owns them (no copy).
 py::array_t<double> to_numpy(Vector&& vector);

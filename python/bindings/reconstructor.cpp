@@ -271,17 +271,19 @@ set_reference(untouched frames), and reconstruct(frames) per frame or per stack.
       .def(
           "set_reference",
           [](PythonReconstructor& self, const py::handle& frames) {
-            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "reference");
+            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "reference", true);
             const EmitCall call;
             const std::lock_guard lock(self.mutex());
             self.set_reference(stack);
           },
-          py::arg("frames"), "The untouched sheet: one frame (N, N), or (K, N, N) averaged (outliers left out).")
+          py::arg("frames"),
+          "The untouched sheet: one frame (N, N), or (K, N, N) averaged (outliers left out; a reading NaN or inf "
+          "is left out of its mean, and masked in every frame if no frame holds it).")
       .def(
           "reconstruct",
           [](PythonReconstructor& self, const py::handle& frames, int threads, bool pressure) -> py::object {
             limits::check_thread_count("threads", threads);
-            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "frames");
+            const FrameStack stack = frame_stack(frames, self.electrodes(), self.adc(), "frames", true);
             if (stack.single) {
               std::vector<Contact> found;
               Vector image;
@@ -315,7 +317,9 @@ frames (N, N): a list of Contact, strongest first. frames (F, N, N): one structu
 frame's contacts (CONTACT_DTYPE; its 'frame' field says whose), the linear methods split across
 `threads`; contact fitting goes in order, tracking from frame to frame, or with threads > 1 fits
 each frame on its own, split across them (the same contacts for any count). pressure=True also returns
-the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangles).)")
+the pressure image per triangle of `mesh` [N/mm^2]: (triangles,) or (F, triangles). A reading that
+is NaN or inf (a board's dropped reading) or at the ADC's top code (clipped) is masked in its frame,
+as `emit reconstruct` masks it (docs/physics.md, "Bad readings").)")
       .def(
           "cpp_seconds_per_frame",
           [](PythonReconstructor& self, const py::handle& frames, bool batch, int threads, int repeats) {
