@@ -4,6 +4,7 @@
 // contact's patch against the sparse forward model on the same mesh (the baseline it replaces),
 // in the same run. Contact fitting on the curved sheets (the 25 mm dome, the sleeve) beside the
 // flat sheet's.
+#include <cmath>
 #include <numbers>
 
 #include <benchmark/benchmark.h>
@@ -86,6 +87,23 @@ void BM_PaperFrame(benchmark::State& state) {
   std::size_t f = 0;
   for ([[maybe_unused]] auto _ : state)
     benchmark::DoNotOptimize(reconstructor.process(b.frames[f++ % b.frames.size()]).size());
+}
+
+/// BM_PaperFrame's frames with state.range(0) readings lost (NaN), spread over the frame: each masked
+/// reading filled by its mean given the others (frame/masked_readings.hpp), k·M + k³/3 more work.
+/// /0 is BM_PaperFrame; the ratio /k : /0 is the masking's cost.
+void BM_PaperFrameMasked(benchmark::State& state) {
+  Bench& b = bench();
+  Reconstructor reconstructor(b.model, LinearCalibration::uncalibrated(b.sensor));
+  reconstructor.set_reference({b.reference, 1});
+  std::vector<Frame> frames = b.frames;
+  const auto lost = state.range(0);
+  for (Frame& frame : frames)  // distinct readings off the diagonal: ground l, sense l + 1 (+ 7 a round)
+    for (Index i = 0; i < lost; ++i) frame(i % 16, (i % 16 + 1 + 7 * (i / 16)) % 16) = std::nan("");
+  std::size_t f = 0;
+  for ([[maybe_unused]] auto _ : state)
+    benchmark::DoNotOptimize(reconstructor.process(frames[f++ % frames.size()]).size());
+  state.counters["masked"] = static_cast<double>(reconstructor.masked_readings().size());
 }
 
 /// The same frames as the paper method first reconstructed them (Bench::before).
@@ -305,6 +323,7 @@ void BM_PredictSparse(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PaperFrame)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperFrameMasked)->Arg(0)->Arg(4)->Arg(16)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperFrameBefore)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperOutline)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperImageCompact)->Unit(benchmark::kMicrosecond);
