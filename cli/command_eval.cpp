@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "commands.hpp"
+#include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/jobs/eval_job.hpp"
 #include "emit/jobs/real_eval_job.hpp"
@@ -37,6 +38,7 @@ struct EvalArgs {
   std::vector<double> separation_mm;  ///< --separation-mm MIN,MAX
   TrackerOptions tracker;             ///< --track-gate-mm, --track-coast-frames
   long long test_from = -1;
+  int calibration_presses = 0;     ///< --calibration-presses (0: the evaluation's own)
   std::vector<std::string> curve;  ///< --curve: numbers, or "none"
   MeritEvalArgs merit;             ///< --figures-of-merit, --resolvability
 };
@@ -48,6 +50,13 @@ void run_realistic(EvalArgs& args) {
   o.mesh_seed = args.options.mesh_seed;
   if (args.seed->count() > 0) o.seed = args.options.seed;
   if (args.options.quick) o.counts = quick_realistic_counts();
+  if (args.calibration_presses > 0) {
+    if (args.calibration_presses < least_calibration_presses)
+      throw InvalidInput("--calibration-presses: a sheet's calibration takes " +
+                         std::to_string(least_calibration_presses) + " presses or more, got " +
+                         std::to_string(args.calibration_presses));
+    o.counts.calibration_presses = args.calibration_presses;
+  }
   o.validate();
   const std::vector<EvalSheet> sheets = eval_sheets(examples_dir(), args.sheet.empty() ? "60" : args.sheet);
   std::printf(
@@ -134,6 +143,7 @@ void run_real(EvalArgs& args) {
   RealEvalJob& job = args.real;
   if (job.sensor_path.empty()) throw InvalidInput("--real: give the skin's description with --sensor FILE");
   job.options.test_from = static_cast<Index>(args.test_from);
+  if (args.calibration_presses > 0) job.options.calibration_presses = args.calibration_presses;
   if (!args.curve.empty()) job.options.curve.clear();
   if (args.curve != std::vector<std::string>{"none"})
     for (std::string n : args.curve) {
@@ -146,6 +156,8 @@ void run_real(EvalArgs& args) {
 }
 
 void run_eval(EvalArgs args) {
+  if (args.calibration_presses > 0 && args.real.folder.empty() && args.realistic->count() == 0)
+    throw InvalidInput("--calibration-presses: give it with --real or --realistic");
   if (!args.real.folder.empty()) return run_real(args);
   if (args.realistic->count() > 0) return run_realistic(args);
   if (args.outlines || args.indenters) return run_outlines(args);
@@ -241,11 +253,10 @@ void add_eval_command(CLI::App& app) {
   cmd->add_option("--sensor", a->real.sensor_path, "With --real: the skin's description, with its \"excitation\"")
       ->type_name("FILE")
       ->needs(real);
-  cmd->add_option("--calibration-presses", a->real.options.calibration_presses,
-                  "With --real: calibrate on this many first presses")
-      ->check(press_count())
-      ->capture_default_str()
-      ->needs(real);
+  cmd->add_option("--calibration-presses", a->calibration_presses,
+                  "With --real: calibrate on this many first presses (default 100); with --realistic: this many "
+                  "presses calibrate the sheet (default 40, at least 8)")
+      ->check(press_count());
   cmd->add_option("--test-from", a->test_from, "With --real: the held-out presses begin here (default: the last fifth)")
       ->check(press_count())
       ->needs(real);

@@ -643,8 +643,9 @@ SensorCalibration calibrate_sensor(const Sensor& sensor, const Mesh& fit_mesh, c
                                    const std::function<void(const std::string&)>& progress) {
   options.validate();
   if (dV.size() != centres_mm.size()) throw InvalidInput("sensor calibration: one centre per press is needed");
-  if (dV.size() < 8)
-    throw InvalidInput("sensor calibration: " + std::to_string(dV.size()) + " presses; at least 8 are needed");
+  if (dV.size() < static_cast<std::size_t>(least_calibration_presses))
+    throw InvalidInput("sensor calibration: " + std::to_string(dV.size()) + " presses; at least " +
+                       std::to_string(least_calibration_presses) + " are needed");
   for (const Vector& d : dV)
     if (d.size() != measurements.size() || !d.allFinite())
       throw InvalidInput("sensor calibration: a press has a wrong count of readings or a non-finite one");

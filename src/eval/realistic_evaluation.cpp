@@ -7,6 +7,7 @@
 #include <optional>
 #include <variant>
 
+#include "emit/calibrate/sensor_calibration.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/model/fit_model.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -38,7 +39,7 @@ void RealisticEvalOptions::validate() const {
                          " or more, got " + std::to_string(value));
   };
   at_least(counts.reference_frames, 1, "reference_frames");
-  at_least(counts.calibration_presses, 8, "calibration_presses");  // calibrate_sensor's least
+  at_least(counts.calibration_presses, least_calibration_presses, "calibration_presses");
   at_least(counts.test_presses, 1, "test_presses");
   at_least(counts.presses_per_indenter, 1, "presses_per_indenter");
   at_least(counts.multi_press_frames, 1, "multi_press_frames");

@@ -40,6 +40,11 @@
 namespace emit {
 
 /// One fitted parameter with its uncertainty.
+/// The fewest presses calibrate_sensor takes. Eight place a press as well as forty on the
+/// realistic 60 mm sheet (README, "A realistic sheet"): the presses fit a few dozen parameters of
+/// the physics, not a response per place.
+constexpr int least_calibration_presses = 8;
+
 struct CalibratedParameter {
   std::string name;  ///< "sheet θ_u", "drive_voltage_V", "series_resistance_ohm[3]"
   double value = 0;  ///< in the unit its name says

@@ -32,7 +32,7 @@ namespace emit {
 /// How many frames of each kind.
 struct RealisticEvalCounts {
   int reference_frames = 10;      ///< no-press frames, averaged into the reference
-  int calibration_presses = 40;   ///< the calibration's (calibrate_sensor needs 8 or more)
+  int calibration_presses = 40;   ///< the calibration's (least_calibration_presses or more)
   int test_presses = 60;          ///< of the calibration's indenter
   int presses_per_indenter = 10;  ///< each other indenter: 5 radii × 2 profiles
   int multi_press_frames = 20;    ///< of three presses, and as many of four
