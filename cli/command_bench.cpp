@@ -110,7 +110,8 @@ void run_bench(BenchArgs args) {
 void add_bench_command(CLI::App& app) {
   auto a = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Time every stage, offline and per frame, at several mesh sizes");
-  cmd->footer("Single thread unless 'emit --threads N bench'. Example:\n  emit bench --sizes 6k,24k --electrodes 16");
+  cmd->footer(
+      "Example:\n  emit bench --sizes 6k,24k --electrodes 16\nOne thread unless 'emit --threads N bench' says more.");
   cmd->add_option("--sensor", a->job.sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--sizes", a->sizes, "Triangle counts, about (default 1.5k,6k,24k,100k)")->delimiter(',');

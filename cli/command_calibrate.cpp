@@ -113,7 +113,12 @@ void run_calibrate(CalibrateArgs args) {
 void add_calibrate_command(CLI::App& app) {
   auto a = std::make_shared<CalibrateArgs>();
   CalibrateJob& job = a->job;
-  CLI::App* cmd = app.add_subcommand("calibrate", "Fit the pressure calibration (paper eq. 8) from known presses");
+  CLI::App* cmd =
+      app.add_subcommand("calibrate",
+                         "Calibrate a sensor from presses: fit its sheet, electrodes and contact law (or, for the "
+                         "paper's "
+                         "linear methods, their pressure scale), from presses of known place and force or guided live "
+                         "(--capture)");
   cmd->footer(
       "Example:\n  emit calibrate --reference ref.csv --frames presses.csv --truth presses_presses.csv --out "
       "calib.json");
@@ -126,7 +131,8 @@ void add_calibrate_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", job.out_path, "Calibration to write (JSON)");
   cmd->add_option("--contact-law", job.contact_law_path,
-                  "Also fit eq. 2 from pairs (CSV: pressure_N_per_mm2,resistance_ohm)")
+                  "Also fit the contact law (contact resistance against pressure, paper eq. 2) from measured "
+                  "pairs (CSV: pressure_N_per_mm2,resistance_ohm)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--method", a->method, "Reconstruction method the calibration is for")
       ->check(CLI::IsMember(method_names()))

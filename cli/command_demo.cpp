@@ -85,6 +85,7 @@ void add_demo_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("demo",
                                      "Simulate presses on the built-in 60 mm sensor, calibrate, reconstruct and draw "
                                      "them, then go live in the browser");
+  cmd->footer("Example:\n  emit demo --out emit-demo --seconds 30");
   cmd->add_option("--out", a->out_dir, "Folder for the frames, presses, contacts, images and the live recording")
       ->capture_default_str();
   cmd->add_option("--serve", a->serve, "Where the live viewer is served (HOST:PORT; port 0 picks a free one)")

@@ -186,7 +186,12 @@ void run_eval(EvalArgs args) {
 void add_eval_command(CLI::App& app) {
   auto a = std::make_shared<EvalArgs>();
   EvalOptions& o = a->options;
-  CLI::App* cmd = app.add_subcommand("eval", "Measure reconstruction accuracy on the digital twin");
+  CLI::App* cmd = app.add_subcommand(
+      "eval", "Measure how well emit images presses: on the digital twin, its realistic sheets, or a real skin's data");
+  cmd->footer(
+      "Examples:\n  emit eval --quick                  every method on every sheet, a few presses each\n"
+      "  emit eval --realistic 3            calibrate and image a realistic sheet, beside the targets\n"
+      "  emit eval --real DIR --sensor SKIN.json   a real skin's presses (README, \"Your own board\")");
   cmd->add_option("--methods", a->methods, "Methods to evaluate")
       ->delimiter(',')
       ->check(CLI::IsMember(method_names()))

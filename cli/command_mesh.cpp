@@ -9,6 +9,7 @@ namespace emit::cli {
 void add_mesh_command(CLI::App& app) {
   auto job = std::make_shared<MeshJob>();
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh a sensor's sheet with Gmsh and write a .msh file");
+  cmd->footer("Example:\n  emit mesh --sensor examples/sensors/circle40.json --out circle.msh");
   cmd->add_option("--sensor", job->sensor_path, "Sensor description (JSON); default: the built-in 60 mm sensor")
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", job->out_path, "Mesh file to write (.msh)")->required();

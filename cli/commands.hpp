@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -87,9 +88,15 @@ std::uint64_t parse_seed(const std::string& option, const std::string& text);
 /// One value (a, a) or two (a range). \throw InvalidInput naming the option for another count.
 std::array<double, 2> pair_or_single(const std::vector<double>& values, const std::string& option);
 
-/// The one-line message for a command line CLI11 refused: CLI11's own, except for a command that
-/// does not exist ("unknown command \"reconstuct\" (did you mean \"reconstruct\"?)").
+/// The one-line message for a command line CLI11 refused, pointing to the command's own help: an
+/// option the command does not take named first, with the one meant ("emit reconstruct has no
+/// option \"--referense\" (did you mean --reference? see 'emit reconstruct --help')"), a command that
+/// does not exist likewise ("unknown command \"reconstuct\" (did you mean \"reconstruct\"?)"),
+/// else CLI11's own.
 std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, char** argv);
+/// The help's layout: each option's value kind and default, without CLI11's checks' names and its
+/// "Needs:"/"Excludes:" lists. Set on the app before its commands are added (they copy it).
+std::shared_ptr<CLI::Formatter> help_formatter();
 
 /// The operator cache: none with --no-cache, else --cache or the default folder.
 std::string cache_dir_option(const std::string& cache_dir, bool no_cache);

@@ -23,9 +23,11 @@ void add_merit_eval_options(CLI::App* cmd, MeritEvalArgs& args) {
       ->capture_default_str()
       ->needs(figures);
   cmd->add_option("--radius-mm", args.figure_options.radius_mm, "With --figures-of-merit: the presses' radius")
+      ->check(checked_by(&FiguresOfMeritOptions::radius_mm))
       ->capture_default_str()
       ->needs(figures);
   cmd->add_option("--force-N", args.figure_options.force_N, "With --figures-of-merit: the presses' force")
+      ->check(checked_by(&FiguresOfMeritOptions::force_N))
       ->capture_default_str()
       ->needs(figures);
 }

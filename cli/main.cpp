@@ -24,6 +24,7 @@ int run(int argc, char** argv) {
       "emit: pressure images from soft tactile sensors by electromechanical impedance tomography.\n"
       "Run 'emit demo' to see it work on the built-in 60 x 60 mm sensor."};
   app.name("emit");
+  app.formatter(emit::cli::help_formatter());
   app.set_version_flag("--version", std::string("emit ") + emit::version());
   app.require_subcommand(1);
   app.fallthrough();  // --threads after the command, too
@@ -54,7 +55,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "emit: %s (see 'emit --help')\n", emit::cli::parse_error_message(app, e, argc, argv).c_str());
+    std::fprintf(stderr, "emit: %s\n", emit::cli::parse_error_message(app, e, argc, argv).c_str());
     return 2;
   } catch (const emit::Error& e) {
     std::fprintf(stderr, "emit: %s\n", e.what());

@@ -82,7 +82,14 @@ CLI::Validator checked_by(const std::string& name, const std::function<void(doub
         try {
           check(value);
         } catch (const InvalidInput& e) {
-          return e.what();
+          // The library names its field ("PipelineOptions::lambda2 must be ..."); the option's
+          // name stands before the message already.
+          std::string message = e.what();
+          if (const std::size_t scope = message.find("::"); scope != std::string::npos)
+            if (const std::size_t space = message.find(' ', scope);
+                space != std::string::npos && message.find(' ') == space)
+              message.erase(0, space + 1);
+          return message;
         }
         return {};
       },

@@ -204,7 +204,8 @@ TEST(CliLiveFailure, AReconnectionTimeMustBePositive) {
   for (const std::string value : {"0", "-1", "x"}) {
     const auto r = run_emit("live --source sim --reconnect-s " + value);
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_EQ(r.err, "emit: --reconnect-s: must be a positive number, got \"" + value + "\" (see 'emit --help')\n");
+    EXPECT_EQ(r.err,
+              "emit: --reconnect-s: must be a positive number, got \"" + value + "\" (see 'emit live --help')\n");
   }
 }
 
