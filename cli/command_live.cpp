@@ -122,6 +122,10 @@ void add_live_command(CLI::App& app) {
                   "Publish on DDS as ROS 2 does: topics rt/PREFIX/contacts, /frames, /pressure, /mesh (a ROS 2 node "
                   "with the Cyclone DDS RMW subscribes to /PREFIX/contacts)");
   cmd->add_option("--dds-domain", job.dds_domain, "The DDS domain (ROS_DOMAIN_ID), 0 to 232")->capture_default_str();
+  cmd->add_option("--frame-id", job.frame_id,
+                  "The ROS frame of the sheet in --dds and --mcap messages' headers; place it in your robot with a "
+                  "static transform (README, \"ROS 2\")")
+      ->capture_default_str();
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--contacts", job.contacts_path,
                   "Contacts out as JSON Lines: a file (FILE.partial until the end), a FIFO (readers may come and go), "

@@ -1,11 +1,14 @@
 #include "emit/io/ros2_messages.hpp"
 
 #include <bit>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <numbers>
 #include <type_traits>
+
+#include "emit/core/errors.hpp"
 
 namespace emit {
 
@@ -173,6 +176,14 @@ const Ros2MessageType& pressure_image_message() {
 const Ros2MessageType& mesh_message() {
   static const Ros2MessageType type{"shape_msgs/msg/Mesh", std::string(mesh_fields)};
   return type;
+}
+
+void check_ros2_frame_id(const std::string& frame_id, const std::string& option) {
+  bool ok = !frame_id.empty() && frame_id.front() != '/';
+  for (const char c : frame_id) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '/');
+  if (!ok)
+    throw InvalidInput(option + " \"" + frame_id +
+                       "\": a frame id is letters, digits, _ and /, not starting with / (as tf2 takes it)");
 }
 
 std::uint64_t unix_time_ns() {

@@ -64,7 +64,8 @@ struct LiveSession::Impl {
 LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
-  if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain}.validate();
+  if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain, job.frame_id}.validate();
+  check_ros2_frame_id(job.frame_id);
   LiveOptions live_options;
   live_options.frame.contact_radius_mm = job.contact_radius_mm;
   live_options.tracking = job.tracking;
@@ -107,10 +108,11 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   }
   if (contacts.given()) s.loop->write_contacts_to(&contacts);
   if (tracks.given()) s.loop->write_tracks_to(&tracks);
-  if (mcap.given()) s.loop->add_publisher(&s.mcap.emplace(std::move(mcap), s.sensor.name, s.pipeline->model().mesh));
+  if (mcap.given())
+    s.loop->add_publisher(&s.mcap.emplace(std::move(mcap), s.sensor.name, s.pipeline->model().mesh, job.frame_id));
   if (!job.dds_prefix.empty())
-    s.loop->add_publisher(
-        &s.dds.emplace(DdsOptions{job.dds_prefix, job.dds_domain}, s.sensor.name, s.pipeline->model().mesh));
+    s.loop->add_publisher(&s.dds.emplace(DdsOptions{job.dds_prefix, job.dds_domain, job.frame_id}, s.sensor.name,
+                                         s.pipeline->model().mesh));
   // Last: a Recorder's destructor renames its file into place, so nothing may fail after it.
   if (record.given()) s.loop->record_to(&s.recorder.emplace(std::move(record), s.sensor));
 }

@@ -96,6 +96,7 @@ void DdsOptions::validate() const {
     throw InvalidInput("--dds \"" + p +
                        "\": a topic prefix is a ROS name: letters, digits, _ and /, not starting with a digit, "
                        "without // or a trailing /");
+  check_ros2_frame_id(frame_id);
 }
 
 struct DdsPublisher::Impl {
@@ -132,6 +133,7 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
   options.validate();
   Impl& s = *impl_;
   s.sensor_name = sensor_name;
+  s.frame_id = options.frame_id;
   s.participant = checked(dds_create_participant(static_cast<dds_domainid_t>(options.domain), nullptr, nullptr),
                           "joining domain " + std::to_string(options.domain));
   const std::string root = "rt/" + (options.prefix[0] == '/' ? options.prefix.substr(1) : options.prefix);

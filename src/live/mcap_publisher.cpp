@@ -4,8 +4,9 @@
 
 namespace emit {
 
-McapPublisher::McapPublisher(OutputFile file, const std::string& sensor_name, const Mesh& mesh)
-    : mcap_(std::move(file), sensor_name, mesh, unix_time_ns()) {}
+McapPublisher::McapPublisher(OutputFile file, const std::string& sensor_name, const Mesh& mesh,
+                             const std::string& frame_id)
+    : mcap_(std::move(file), sensor_name, mesh, unix_time_ns(), frame_id) {}
 
 void McapPublisher::publish(const LiveFrame& frame) {
   if (frame.capturing_reference || frame.volts == nullptr) return;

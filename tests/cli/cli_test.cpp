@@ -1058,6 +1058,8 @@ INSTANTIATE_TEST_SUITE_P(
                "--realistic: the seed must be a whole number 0 or larger, got \"x\""},
         BadRun{"realistic eval on no sheet", "eval --realistic --sheet 45 --quick",
                "--sheet \"45\": no sheet's name begins with it (60, 30, circle, 120, dome, sleeve, fingertip)"},
+        BadRun{"frame id tf2 refuses", "live --source sim --frames 1 --frame-id /palm --mcap OUT",
+               "--frame-id \"/palm\": a frame id is letters, digits, _ and /, not starting with / (as tf2 takes it)"},
         BadRun{"calibration presses with neither data set", "eval --calibration-presses 8 --quick",
                "--calibration-presses: give it with --real or --realistic"},
         BadRun{"too few presses to calibrate a realistic sheet", "eval --realistic --calibration-presses 7 --quick",

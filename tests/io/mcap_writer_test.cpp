@@ -87,5 +87,26 @@ TEST(TactileMcap, AFrameIsWrittenWithoutAllocatingOnceWarm) {
   EXPECT_TRUE(fs::exists(folder + "/run.mcap"));
 }
 
+// The messages' header frame is the one named (`emit live --frame-id`), in every frame's three
+// messages (MCAP stores them uncompressed: the CDR string is in the file's bytes as written); a
+// name tf2 refuses is refused before the file is made.
+TEST(TactileMcap, TheHeadersCarryTheFrameNamed) {
+  const std::string folder = test::temp_folder("tactile_mcap_frame");
+  const Mesh mesh = test::strip_mesh(60, 60, 20, 20);
+  TactileMcap mcap(folder + "/run.mcap", "default 60 mm", mesh, 0, "left_palm");
+  const Frame volts = Frame::Constant(16, 16, 0.5);
+  const Vector pressure = Vector::Zero(mesh.triangle_count());
+  for (std::uint64_t f = 0; f < 2; ++f) mcap.write(f, f * 20'000'000, frame_view(volts), {}, pressure);
+  mcap.close();
+  const std::string bytes = test::read_text(folder + "/run.mcap");
+  std::size_t named = 0;
+  for (std::size_t at = bytes.find("left_palm"); at != std::string::npos; at = bytes.find("left_palm", at + 1)) ++named;
+  EXPECT_EQ(named, 6u) << "two frames of three stamped messages";
+  EXPECT_EQ(bytes.find("emit_sheet"), std::string::npos);
+  for (const char* refused : {"/left_palm", "", "left palm"})
+    EXPECT_THROW(TactileMcap(folder + "/bad.mcap", "default 60 mm", mesh, 0, refused), InvalidInput) << refused;
+  EXPECT_FALSE(fs::exists(folder + "/bad.mcap.partial"));
+}
+
 }  // namespace
 }  // namespace emit

@@ -179,6 +179,10 @@ int main(int argc, char** argv) {
     if (end == argv[rest + 1] || *end != '\0') return fail(std::string("not an angle: \"") + argv[rest + 1] + "\"");
     rest += 2;
   }
+  // The header's frame: emit live's --frame-id among its arguments, else its default.
+  std::string frame_id = "emit_sheet";
+  for (int i = rest; i + 1 < argc; ++i)
+    if (std::string(argv[i]) == "--frame-id") frame_id = argv[i + 1];
   // The JSON Lines emit writes beside DDS, to compare every field with.
   char json_path[] = "/tmp/emit_dds_check_XXXXXX";
   const int json_file = mkstemp(json_path);
@@ -237,7 +241,7 @@ int main(int argc, char** argv) {
       received_board_times[m->frame] = m->board_time;
       std::vector<Fields>& kept = received_contacts[m->frame];
       for (std::uint32_t c = 0; c < m->contacts._length; ++c) kept.push_back(fields_of(m->contacts._buffer[c]));
-      if (problem.empty() && std::string(m->header.frame_id) != "emit_sheet") problem = "header.frame_id";
+      if (problem.empty() && std::string(m->header.frame_id) != frame_id) problem = "header.frame_id";
       // The twin's first 15 frames are untouched; the press is found within the paper method's
       // p95 on this sheet, 8.05 mm (README).
       if (m->frame < 15 && m->contacts._length != 0 && problem.empty())

@@ -33,8 +33,13 @@
 
 namespace emit {
 
-/// The messages' header frame: the sheet's coordinate frame in a ROS graph.
+/// The messages' header frame by default: the sheet's coordinate frame in a ROS graph (`emit live
+/// --frame-id` names another; a static transform places it, README "ROS 2").
 inline constexpr std::string_view ros2_frame_id = "emit_sheet";
+
+/// \throw InvalidInput naming `option` unless `frame_id` is a tf2 frame id: letters, digits, _ and
+/// /, not empty, not starting with / (tf2 refuses a leading slash).
+void check_ros2_frame_id(const std::string& frame_id, const std::string& option = "--frame-id");
 
 /// Nanoseconds since the Unix epoch, now (the host's system clock).
 std::uint64_t unix_time_ns();

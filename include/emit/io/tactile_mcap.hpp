@@ -19,6 +19,7 @@
 #include "emit/core/types.hpp"
 #include "emit/frame/contacts.hpp"
 #include "emit/io/mcap_writer.hpp"
+#include "emit/io/ros2_messages.hpp"
 #include "emit/mesh/mesh.hpp"
 
 namespace emit {
@@ -27,9 +28,12 @@ class TactileMcap {
  public:
   /// Into an output opened with OutputOptions::partial (core/output_paths.hpp's open_outputs);
   /// the mesh is written at `start_time_ns`. \throw IoError naming it.
-  TactileMcap(OutputFile file, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
+  /// `frame_id`: the messages' header frame (io/ros2_messages.hpp).
+  TactileMcap(OutputFile file, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns,
+              std::string frame_id = std::string(ros2_frame_id));
   /// Opens PATH first. \throw IoError naming the file (a missing folder: before anything is written).
-  TactileMcap(const std::string& path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns);
+  TactileMcap(const std::string& path, std::string sensor_name, const Mesh& mesh, std::uint64_t start_time_ns,
+              const std::string& frame_id = std::string(ros2_frame_id));
 
   /// One frame's three messages, at `time_ns` (ns since the Unix epoch: when the frame reached
   /// the host; the messages' header stamps and MCAP log times), taken by the board at
@@ -47,7 +51,7 @@ class TactileMcap {
 
  private:
   McapWriter mcap_;
-  std::string sensor_name_;
+  std::string sensor_name_, frame_id_;
   std::uint16_t frames_channel_ = 0, contacts_channel_ = 0, pressure_channel_ = 0;
   std::vector<std::uint8_t> message_;
   std::uint64_t frames_ = 0;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "emit/core/progress.hpp"
+#include "emit/io/ros2_messages.hpp"
 #include "emit/live/live_loop.hpp"
 #include "emit/model/method.hpp"
 
@@ -32,6 +33,8 @@ struct LiveJob {
   std::string record_path;     ///< empty: no recording
   std::string mcap_path;       ///< empty: no MCAP recording (live/mcap_publisher.hpp)
   std::string dds_prefix;      ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
+  /// The ROS messages' header frame, on DDS and in the MCAP file (io/ros2_messages.hpp).
+  std::string frame_id{ros2_frame_id};
   int dds_domain = 0;
   std::string sensor_path;       ///< empty: the built-in default sensor
   std::string calibration_path;  ///< empty: uncalibrated

@@ -13,14 +13,16 @@
 #include <memory>
 #include <string>
 
+#include "emit/io/ros2_messages.hpp"
 #include "emit/live/live_loop.hpp"
 #include "emit/mesh/mesh.hpp"
 
 namespace emit {
 
 struct DdsOptions {
-  std::string prefix = "emit";  ///< a ROS name: letters, digits, _ and /, not starting with a digit
-  int domain = 0;               ///< the DDS domain (ROS_DOMAIN_ID): 0 to 232
+  std::string prefix = "emit";          ///< a ROS name: letters, digits, _ and /, not starting with a digit
+  int domain = 0;                       ///< the DDS domain (ROS_DOMAIN_ID): 0 to 232
+  std::string frame_id{ros2_frame_id};  ///< the messages' header frame (io/ros2_messages.hpp)
   /// \throw InvalidInput naming the option when the prefix is not a ROS name or the domain is out
   /// of range.
   void validate() const;

@@ -15,7 +15,8 @@ namespace emit {
 class McapPublisher : public FramePublisher {
  public:
   /// Into an output opened with OutputOptions::partial. \throw IoError naming it.
-  McapPublisher(OutputFile file, const std::string& sensor_name, const Mesh& mesh);
+  McapPublisher(OutputFile file, const std::string& sensor_name, const Mesh& mesh,
+                const std::string& frame_id = std::string(ros2_frame_id));
   void publish(const LiveFrame& frame) override;
   /// Renames PATH.partial to PATH (io/mcap_writer.hpp). \throw IoError.
   void close() { mcap_.close(); }
