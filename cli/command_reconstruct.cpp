@@ -1,7 +1,9 @@
 // emit reconstruct: frames → contacts (JSON Lines) and, on request, a pressure map per frame.
+#include <cmath>
 #include <cstdio>
 
 #include "commands.hpp"
+#include "emit/core/errors.hpp"
 #include "emit/core/threads.hpp"
 #include "emit/jobs/reconstruct_job.hpp"
 #include "emit/pipeline/pipeline.hpp"
@@ -78,7 +80,22 @@ void add_reconstruct_command(CLI::App& app) {
          "fit and shapes: the indenter's radius, declared (a 3 mm stylus, a 10 mm finger pad): every contact's "
          "area held at pi R^2 (5 % on R) instead of the calibration indenter's, its force and pressure from it")
       ->check(checked_by(&FrameOptions::contact_radius_mm));
-  cmd->add_option("--images", job.images_dir, "Write a pressure map per frame (PNG) into this folder");
+  cmd->add_option("--images", job.images_dir,
+                  "Write a pressure map per frame (PNG, frame_000000.png on) into this folder");
+  cmd->add_option("--pressure-range", job.images.max_pressure_N_per_mm2,
+                  "With --images: the colour bar's top in N/mm2, the same for every frame so that frames compare "
+                  "(default: each frame's own largest pressure)")
+      ->type_name("MAX")
+      ->check(checked_by(&PressureMapOptions::max_pressure_N_per_mm2));
+  cmd->add_option("--image-width", job.images.width_px, "With --images: the pictures' width in pixels, 160 to 8192")
+      ->type_name("PX")
+      ->capture_default_str()
+      ->check(checked_by("--image-width", [](double px) {
+        PressureMapOptions o;
+        if (px != std::floor(px) || std::abs(px) > 1e9) throw InvalidInput("must be a whole number of pixels");
+        o.width_px = static_cast<int>(px);
+        o.validate();
+      }));
   cmd->add_option("--mcap", job.mcap_path,
                   "Also record the frames, contacts and pressure images as ROS 2 messages in an MCAP file (a bag)");
   cmd->add_option("--cache", job.cache_dir, "Operator cache folder (default: $EMIT_CACHE_DIR or ~/.cache/emit)");

@@ -76,7 +76,7 @@ DemoReport run_demo_reconstruction(const std::string& out_dir, const std::string
     for (const Press& p : report.presses[f]) outlines.push_back({Vector2(p.x_mm, p.y_mm), p.radius_mm, p.z_mm});
     write_pressure_map(fit_reconstructor.mesh(), fit_reconstructor.pressure(), outlines,
                        "frame " + std::to_string(f) + ": pressure by contact fitting (circles: the true presses)",
-                       out_dir + "/frame_" + std::to_string(f) + ".png");
+                       out_dir + "/" + frame_image_name(f));
   }
   contacts_file.commit();
   write_frames_csv(out_dir + "/frames.csv", frames);

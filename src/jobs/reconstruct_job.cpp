@@ -31,14 +31,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 void write_image(const Reconstructor& reconstructor, const std::vector<Contact>& contacts, std::size_t frame,
-                 Method method, const std::string& dir) {
+                 Method method, const std::string& dir, const PressureMapOptions& options) {
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
   for (const Contact& c : contacts) outlines.push_back(contact_outline(c, reconstructor.surface()));
   const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
                             std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,
-                     dir + "/frame_" + std::to_string(frame) + ".png");
+                     dir + "/" + frame_image_name(frame), options);
 }
 
 }  // namespace
@@ -91,6 +91,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
                                OutputRequest{{"--mcap", job.mcap_path}, {.partial = true}}});
   OutputFile &contacts_file = outputs[0], &tracks_file = outputs[1], &mcap_file = outputs[2];
   job.tracking.validate();  // checked before anything is read
+  job.images.validate();
   option_check::positive("ReconstructJob", "frames_per_s", job.frames_per_s);
   FrameOptions declared;
   declared.contact_radius_mm = job.contact_radius_mm;
@@ -170,7 +171,8 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
         const FitResult* fitted = reconstructor->fit_result();
         const std::vector<Contact>& contacts =
             *track_and_write(first + f, found, fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
-        if (!job.images_dir.empty()) write_image(*reconstructor, contacts, first + f, job.method, job.images_dir);
+        if (!job.images_dir.empty())
+          write_image(*reconstructor, contacts, first + f, job.method, job.images_dir, job.images);
         if (mcap)
           mcap->write(first + f, start_ns + (first + f) * frame_ns, frame_view(chunk[f]), contacts,
                       reconstructor->pressure(), static_cast<double>(first + f) * frame_s, &tracker.ended());

@@ -60,7 +60,7 @@ void write_potential_images(Twin& twin, const PressSequence& sequence, const std
     FieldImageOptions image;
     image.title = "frame " + std::to_string(f) + ": probing-layer potential, electrode 0 grounded";
     write_png(render_sheet_field(twin.mesh(), twin.potentials(sequence[f]).col(0), outlines, image),
-              dir + "/frame_" + std::to_string(f) + ".png");
+              dir + "/" + frame_image_name(f));
   }
 }
 

@@ -1,9 +1,12 @@
 #include "emit/render/pressure_map.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
+#include "emit/core/option_check.hpp"
 #include "emit/mesh/element_to_node.hpp"
 #include "emit/mesh/flatness.hpp"
 #include "emit/render/image.hpp"
@@ -31,13 +34,27 @@ Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std
   return render_shaded_surface(mesh, nodal_values, outlines, options);
 }
 
+void PressureMapOptions::validate() const {
+  option_check::non_negative("PressureMapOptions", "max_pressure_N_per_mm2", max_pressure_N_per_mm2);
+  option_check::within("PressureMapOptions", "width_px", width_px, 160, 8192);
+}
+
 void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const std::vector<Circle>& outlines,
-                        const std::string& title, const std::string& path) {
+                        const std::string& title, const std::string& path, const PressureMapOptions& options) {
+  options.validate();
   FieldImageOptions image;
   image.title = title;
   image.unit = "N/mm2";
+  image.width_px = options.width_px;
   image.min_value = 0;
+  if (options.max_pressure_N_per_mm2 > 0) image.max_value = options.max_pressure_N_per_mm2;
   write_png(render_sheet_field(mesh, element_to_node(mesh, element_pressure), outlines, image), path);
+}
+
+std::string frame_image_name(std::size_t frame) {
+  std::array<char, 32> name{};
+  std::snprintf(name.data(), name.size(), "frame_%06zu.png", frame);
+  return name.data();
 }
 
 }  // namespace emit

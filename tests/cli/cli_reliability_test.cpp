@@ -120,7 +120,7 @@ TEST(CliReliability, CtrlCDuringReconstructLeavesNoTemporaryFile) {
   posix_spawn_file_actions_destroy(&actions);
   // Wait for the first pictures: the model is built and the temporary contacts file is half written.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(dir + "/images/frame_3.png") && std::chrono::steady_clock::now() < deadline)
+  while (!fs::exists(dir + "/images/frame_000003.png") && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_EQ(hidden_files(dir).size(), 1u) << "the temporary contacts file should exist mid-run";
   ::kill(child, SIGINT);

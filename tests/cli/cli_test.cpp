@@ -106,7 +106,7 @@ TEST(Cli, TwoFingerAndMovingScripts) {
                dir + "/img");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_frames_csv(dir + "/move.csv", 16).size(), 5u);
-  EXPECT_GT(read_png(dir + "/img/frame_4.png").width(), 100);
+  EXPECT_GT(read_png(dir + "/img/frame_000004.png").width(), 100);
 }
 
 // A realistic sheet with three spherical fingers, and what it drew beside the frames.
@@ -165,7 +165,7 @@ TEST(Cli, SimulatesASphericalCap) {
                "/f.csv --images " + dir + "/img");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The potential drawn as the curved sheet's shaded two-panel picture, not the flat one (640 px).
-  EXPECT_EQ(read_png(dir + "/img/frame_0.png").width(), shaded_pressure_map_width_px);
+  EXPECT_EQ(read_png(dir + "/img/frame_000000.png").width(), shaded_pressure_map_width_px);
   const PressSequence truth = read_presses_csv(dir + "/f_presses.csv");
   ASSERT_EQ(truth.size(), 1u);
   EXPECT_NEAR(truth[0][0].z_mm, 6.650635, 1e-4);  // the conformance file's, to the 4 decimals written
@@ -300,7 +300,7 @@ TEST(Cli, ImagesOfTheDomeAreTheShadedTwoPanelPicture) {
   const auto r = run_emit("reconstruct --sensor " + dome + "_sensor.json --reference " + dir + "/zero.csv --frames " +
                           dome + "_frames.csv --contacts " + dir + "/c.jsonl --no-cache --images " + dir + "/img");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const Image image = read_png(dir + "/img/frame_0.png");
+  const Image image = read_png(dir + "/img/frame_000000.png");
   const Sensor sensor = load_sensor(dome + "_sensor.json");
   FieldImageOptions options;
   options.width_px = shaded_pressure_map_width_px;
@@ -309,7 +309,50 @@ TEST(Cli, ImagesOfTheDomeAreTheShadedTwoPanelPicture) {
   const ShadedLayout layout = plan_shaded_layout(generate_mesh(sensor, reconstruction_mesh_options(sensor)), options);
   EXPECT_EQ(image.width(), layout.width_px);
   EXPECT_EQ(image.height(), layout.height_px);
-  EXPECT_TRUE(fs::exists(dir + "/img/frame_2.png"));
+  EXPECT_TRUE(fs::exists(dir + "/img/frame_000002.png"));
+}
+
+// Pictures of one run that compare (--pressure-range): a light press (3 N on a 5 mm disc) and a
+// strong one (20 N) at one place, uncalibrated (the nominal contact law puts them at 0.13 and 0.90
+// N/mm2 on 18 mm2), drawn to 0.3 N/mm2. The colour bar's top colour (colormap(1)) then marks
+// pressure at or past 0.3: the strong press's picture holds it on the sheet as well as in the bar
+// (about 160 pixels of its disc at 400 px), the light one's only in the bar. Drawn each to its own largest
+// pressure (no --pressure-range), the light press reaches the top colour too: the two pictures
+// did not compare. Names sort in frame order; --image-width sets the width.
+TEST(Cli, ImagesOfARunShareTheirScaleWhenAskedAndSortInOrder) {
+  const std::string dir = test::temp_folder("cli_image_scale");
+  ASSERT_EQ(run_emit("simulate --script none --frames 3 --out " + dir + "/ref.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --press 30,30,5,3 --out " + dir + "/light.csv").exit_code, 0);
+  ASSERT_EQ(run_emit("simulate --press 30,30,5,20 --out " + dir + "/strong.csv").exit_code, 0);
+  std::ofstream(dir + "/both.csv") << test::read_text(dir + "/light.csv") << test::read_text(dir + "/strong.csv");
+  const auto top_coloured = [](const Image& image) {
+    const Rgb top = colormap(1);
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const Rgb p = image.get(x, y);
+        n += std::abs(p.r - top.r) + std::abs(p.g - top.g) + std::abs(p.b - top.b) <= 6 ? 1 : 0;
+      }
+    return n;
+  };
+  const std::string run = "reconstruct --reference " + dir + "/ref.csv --frames " + dir + "/both.csv --contacts " +
+                          dir + "/c.jsonl --no-cache --images ";
+  auto r = run_emit(run + dir + "/fixed --pressure-range 0.3 --image-width 400");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image light = read_png(dir + "/fixed/frame_000000.png"), strong = read_png(dir + "/fixed/frame_000001.png");
+  EXPECT_EQ(light.width(), 400);
+  EXPECT_EQ(strong.width(), 400);
+  const int bar_only = top_coloured(light);
+  EXPECT_GT(bar_only, 0) << "the colour bar's top";
+  EXPECT_GT(top_coloured(strong), bar_only + 50) << "the strong press past the range, on the sheet";
+  r = run_emit(run + dir + "/own");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_png(dir + "/own/frame_000000.png").width(), 640);
+  EXPECT_GT(top_coloured(read_png(dir + "/own/frame_000000.png")), bar_only + 5) << "the light press at its own top";
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir + "/own")) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"frame_000000.png", "frame_000001.png"}));
 }
 
 // Four fingers, with the realistic sheet's sizes set one by one.
@@ -370,7 +413,7 @@ TEST(Cli, CalibrateThenReconstruct) {
   const auto misfit_at = line.find("\"fit_misfit_mV\": ");
   ASSERT_NE(misfit_at, std::string::npos) << line;
   EXPECT_LT(std::stod(line.substr(misfit_at + 17)), 3.0) << line;
-  EXPECT_GT(read_png(d + "/img/frame_0.png").width(), 100);
+  EXPECT_GT(read_png(d + "/img/frame_000000.png").width(), 100);
   // A second run loads the (seeding) operator from the cache.
   r = run_emit("reconstruct --reference " + d + "/ref.csv --frames " + d + "/one.csv --contacts " + d + "/c2.jsonl" +
                cache);
@@ -791,7 +834,8 @@ TEST(Cli, DemoWritesFramesAndPicturesThenGoesLive) {
   EXPECT_FALSE(test::read_text(dir + "/demo/live_contacts.jsonl").empty());
   EXPECT_TRUE(std::filesystem::exists(dir + "/demo/live.emitrec"));
   EXPECT_EQ(read_frames_csv(dir + "/demo/frames.csv", 16).size(), 4u);
-  for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/demo/frame_" + std::to_string(f) + ".png").height(), 100);
+  for (int f = 0; f < 4; ++f)
+    EXPECT_GT(read_png(dir + "/demo/" + frame_image_name(static_cast<std::size_t>(f))).height(), 100);
   // It found every press, two fingers included, within the target (p95 0.6 mm).
   const PressSequence truth = read_presses_csv(dir + "/demo/presses.csv");
   std::istringstream lines(test::read_text(dir + "/demo/contacts.jsonl"));

@@ -2,6 +2,7 @@
 // method's batch split across threads writes the very same contacts as one thread (its frames
 // are independent), and as the frame-by-frame path that draws the pressure maps.
 #include "emit/jobs/reconstruct_job.hpp"
+#include "emit/render/pressure_map.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -58,7 +59,8 @@ TEST(ReconstructJob, ThreadsAndImagesChangeNoContact) {
   long frame = -1;
   EXPECT_FALSE(parse_contacts_line(contacts.substr(0, contacts.find('\n')), &frame).empty());  // the 5 N press
   EXPECT_EQ(frame, 0);
-  for (int f = 0; f < 4; ++f) EXPECT_GT(read_png(dir + "/maps/frame_" + std::to_string(f) + ".png").width(), 100) << f;
+  for (int f = 0; f < 4; ++f)
+    EXPECT_GT(read_png(dir + "/maps/" + frame_image_name(static_cast<std::size_t>(f))).width(), 100) << f;
 }
 
 }  // namespace

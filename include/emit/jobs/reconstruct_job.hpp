@@ -10,6 +10,7 @@
 #include "emit/core/progress.hpp"
 #include "emit/frame/contact_tracker.hpp"
 #include "emit/model/method.hpp"
+#include "emit/render/pressure_map.hpp"
 
 namespace emit {
 
@@ -21,6 +22,7 @@ struct ReconstructJob {
   std::string tracks_path;       ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
   std::string calibration_path;  ///< empty: uncalibrated
   std::string images_dir;        ///< empty: no pictures
+  PressureMapOptions images;     ///< how they are drawn
   std::string mcap_path;         ///< empty: no MCAP recording (io/tactile_mcap.hpp)
   Method method = Method::fit;
   double lambda2 = 0;  ///< 0: the method's

@@ -26,8 +26,21 @@ Circle contact_outline(const Contact& contact, const Shape& surface = {});
 Image render_sheet_field(const Mesh& mesh, const Vector& nodal_values, const std::vector<Circle>& outlines,
                          FieldImageOptions options);
 
+/// How a run's pressure maps are drawn (`--images`, `--pressure-range`, `--image-width`).
+struct PressureMapOptions {
+  /// The colour bar's top [N/mm²], the same for every frame of a run so that frames compare;
+  /// 0: each frame's own largest pressure.
+  double max_pressure_N_per_mm2 = 0;
+  int width_px = 640;     ///< a curved sheet's picture is at least shaded_pressure_map_width_px
+  void validate() const;  ///< \throw InvalidInput naming the option (core/option_check.hpp)
+};
+
 /// Writes the PNG (atomically). \param element_pressure  #F values [N/mm²]. \throw IoError.
 void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const std::vector<Circle>& outlines,
-                        const std::string& title, const std::string& path);
+                        const std::string& title, const std::string& path, const PressureMapOptions& options = {});
+
+/// A frame's picture's name, its number zero-padded to six digits so that names sort in frame
+/// order ("frame_000042.png"; a run holds at most 131,072 frames: core/limits.hpp).
+std::string frame_image_name(std::size_t frame);
 
 }  // namespace emit
