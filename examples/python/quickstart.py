@@ -29,7 +29,10 @@ for axis, method in zip(axes, ["fit", "paper"]):
     reconstructor = emit.Reconstructor(sensor, method=method)
     reconstructor.set_reference(reference)
     contacts, pressure = reconstructor.reconstruct(frame, pressure=True)
-    print(f"{method}:")
+    # Uncalibrated, forces come from the sensor file's nominal contact law, not from presses of
+    # known force: their scale is off (emit.calibrate fits it; README "Calibration").
+    state = "calibrated" if reconstructor.calibrated else "uncalibrated: forces from the nominal contact law"
+    print(f"{method} ({state}):")
     for c in contacts:
         print(f"  contact at ({c.x_mm:5.1f}, {c.y_mm:5.1f}) mm, {c.force_N:5.2f} N, {c.area_mm2:5.1f} mm^2")
 
@@ -40,10 +43,12 @@ for axis, method in zip(axes, ["fit", "paper"]):
     axis.add_collection(cells)
     figure.colorbar(cells, ax=axis, label=label)
     axis.scatter([p.x_mm for p in presses], [p.y_mm for p in presses], marker="+", s=200, c="cyan",
-                 label="pressed")
+                 label="pressed (8 N, 14 N)")
     axis.scatter([c.x_mm for c in contacts], [c.y_mm for c in contacts], marker="x", s=120, c="lime",
                  label="found")
-    axis.set(title=f"method {method}", xlabel="x [mm]", ylabel="y [mm]", aspect="equal")
+    title = {"fit": "contact fitting: pressure (uncalibrated)",
+             "paper": "the paper's method (eq. 7): its image δφ,\none blur over both presses"}[method]
+    axis.set(title=title, xlabel="x [mm]", ylabel="y [mm]", aspect="equal")
     axis.autoscale_view()
     axis.legend(loc="upper right")
 

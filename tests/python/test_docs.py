@@ -70,7 +70,10 @@ def test_the_quickstart_draws_its_picture(tmp_path):
     out = tmp_path / "quickstart.png"
     result = subprocess.run([sys.executable, SOURCE_DIR / "examples" / "python" / "quickstart.py", out],
                             check=True, capture_output=True, text=True)
-    fit = result.stdout.split("paper:")[0]
+    fit = result.stdout.split("paper (")[0]
+    # Forces printed without a calibration say so.
+    assert "fit (uncalibrated: forces from the nominal contact law):" in result.stdout
+    assert "paper (uncalibrated: forces from the nominal contact law):" in result.stdout
     found = [tuple(map(float, m)) for m in re.findall(r"contact at \(\s*(\S+),\s*(\S+)\) mm", fit)]
     # Contact fitting finds both presses, (18, 40) and (42, 22), within 0.5 mm (README p95: 0.13 mm).
     assert len(found) == 2
