@@ -58,7 +58,7 @@ if(EMIT_BUILD_PYTHON)
 python3 (<< ${EMIT_PYTHON_VERSION_MAJOR}.${next_minor}), python3-numpy")
 endif()
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "libeigen3-dev (>= 3.4), nlohmann-json3-dev (>= 3.10), libopenblas-dev${EMIT_DEB_PYTHON_DEPENDS}")
+    "libeigen3-dev (>= 3.4), nlohmann-json3-dev (>= 3.10), libopenblas-dev, fonts-dejavu-core${EMIT_DEB_PYTHON_DEPENDS}")
 # The library is in a folder of ldconfig's: the ldconfig trigger, as Debian's policy asks (CPack
 # also writes a postinst and postrm calling ldconfig; cmake/debian/lintian-overrides).
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/cmake/debian/triggers)

@@ -13,6 +13,7 @@ packages=(
   libeigen3-dev                         # dense and sparse linear algebra
   libcli11-dev nlohmann-json3-dev       # command line, JSON
   libpng-dev                            # images
+  libfreetype-dev fonts-dejavu-core     # their labels in a real font (DejaVu Sans)
   libceres-dev                          # nonlinear least squares (calibration)
   libsuitesparse-dev                    # CHOLMOD: the Jacobian's supernodal Cholesky
   libopenblas-dev                       # BLAS for the per-frame products

@@ -116,7 +116,8 @@ int utf8_sequence_length(unsigned char lead) {
   return 0;
 }
 
-/// Code points of a UTF-8 string; malformed bytes become U+FFFD (drawn as '?').
+}  // namespace
+
 std::u32string decode_utf8(std::string_view text) {
   std::u32string out;
   for (std::size_t i = 0; i < text.size();) {
@@ -140,6 +141,8 @@ std::u32string decode_utf8(std::string_view text) {
   return out;
 }
 
+namespace {
+
 void draw_glyph(Image& image, int x, int y, const Glyph& glyph, Rgb colour, int scale) {
   for (int row = 0; row < glyph_height; ++row)
     for (int column = 0; column < glyph_width; ++column) {
@@ -151,12 +154,12 @@ void draw_glyph(Image& image, int x, int y, const Glyph& glyph, Rgb colour, int 
 
 }  // namespace
 
-int text_width_px(std::string_view utf8, int scale) {
+int bitmap_text_width_px(std::string_view utf8, int scale) {
   const int count = static_cast<int>(decode_utf8(utf8).size());
   return count == 0 ? 0 : (count * (glyph_width + 1) - 1) * scale;
 }
 
-void draw_text(Image& image, int x, int y, std::string_view utf8, Rgb colour, int scale) {
+void draw_bitmap_text(Image& image, int x, int y, std::string_view utf8, Rgb colour, int scale) {
   for (char32_t code : decode_utf8(utf8)) {
     draw_glyph(image, x, y, glyph_for(code), colour, scale);
     x += (glyph_width + 1) * scale;

@@ -5,8 +5,8 @@
 #include <limits>
 #include <sstream>
 
-#include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
+#include "text.hpp"
 
 namespace emit::detail {
 

@@ -6,10 +6,10 @@
 #include <numbers>
 #include <utility>
 
-#include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
 #include "field_drawing.hpp"
+#include "text.hpp"
 
 namespace emit {
 

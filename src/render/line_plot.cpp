@@ -7,9 +7,9 @@
 #include <initializer_list>
 #include <limits>
 
-#include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/core/option_check.hpp"
+#include "text.hpp"
 
 namespace emit {
 
@@ -268,7 +268,7 @@ int widest_label_px(const std::vector<Tick>& ticks) {
 int line_height_px() { return detail::text_height_px(font_scale); }
 
 /// Height of capitals and digits (the font's descender row left out), for centring labels.
-int cap_height_px(int scale) { return (detail::glyph_height - 1) * scale; }
+int cap_height_px(int scale) { return 7 * scale; }  // text.hpp: capitals end 7 × scale below a line's top
 
 void check_room(int plot_side_px, const PlotOptions& options) {
   if (plot_side_px < min_plot_side_px)

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "bitmap_font.hpp"
 #include "emit/core/errors.hpp"
 #include "field_drawing.hpp"
+#include "text.hpp"
 
 namespace emit {
 

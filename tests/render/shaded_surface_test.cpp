@@ -33,7 +33,10 @@ Vector3 node(const Mesh& mesh, Index i) { return mesh.nodes_mm.row(i).transpose(
 double distance_from_yellow(Rgb c) {
   const Rgb top = colormap(1);
   const double sum = c.r + c.g + c.b, top_sum = top.r + top.g + top.b;
-  if (sum == 0) return 1;
+  // A pixel darker than half the map's top is none of its colours, whatever its hue: the
+  // anti-aliased edge of a label's dark text over an electrode's orange ((113, 56, 10), (71, 40,
+  // 15)) comes near yellow's.
+  if (2 * sum < top_sum) return 1;
   return std::hypot(c.r / sum - top.r / top_sum, c.g / sum - top.g / top_sum, c.b / sum - top.b / top_sum);
 }
 
