@@ -75,7 +75,20 @@ void draw_title(Image& image, const std::vector<std::string>& title_lines) {
               font_scale);
 }
 
-void draw_colour_bar(Image& image, const Box& bar, const std::string& min_label, const std::string& max_label) {
+namespace {
+
+/// A round step near `span` / 4: 1, 2, 2.5 or 5 × 10^k.
+double round_step(double span) {
+  const double raw = span / 4, decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double m : {1.0, 2.0, 2.5, 5.0})
+    if (m * decade >= raw) return m * decade;
+  return 10 * decade;
+}
+
+}  // namespace
+
+void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit) {
+  const std::string min_label = value_label(min_value, unit), max_label = value_label(max_value, unit);
   for (int row = 0; row < bar.height; ++row) {
     const Rgb colour = colormap(1.0 - (row + 0.5) / bar.height);  // top is the maximum
     for (int x = bar.x; x < bar.x + bar.width; ++x) image.set(x, bar.y + row, colour);
@@ -88,6 +101,37 @@ void draw_colour_bar(Image& image, const Box& bar, const std::string& min_label,
   const int text_x = bar.x + bar.width + bar_label_gap_px;
   draw_text(image, text_x, bar.y, max_label, text_colour, font_scale);
   draw_text(image, text_x, bar.y + bar.height - text_height_px(font_scale), min_label, text_colour, font_scale);
+  const double span = max_value - min_value;
+  if (!(span > 0) || !std::isfinite(span)) return;
+  const double step = round_step(span);
+  const auto first = static_cast<long>(std::ceil(min_value / step)),
+             last = static_cast<long>(std::floor(max_value / step));
+  for (long k = first; k <= last && k - first < 100; ++k) {
+    const double value = static_cast<double>(k) * step;
+    const int row = bar.y + static_cast<int>(std::lround((max_value - value) / span * bar.height));
+    // Clear of the end labels (a line from the top, one from the bottom).
+    if (row - text_height_px(font_scale) / 2 < bar.y + line_height_px() ||
+        row + text_height_px(font_scale) / 2 > bar.y + bar.height - line_height_px())
+      continue;
+    draw_segment(image, {bar.x + bar.width - 4.0, row + 0.5}, {bar.x + bar.width + 3.0, row + 0.5}, 0.5, border_colour);
+    draw_text(image, text_x, row - text_height_px(font_scale) / 2, value_label(value, ""), text_colour, font_scale);
+  }
+}
+
+void draw_scale_bar(Image& image, int x, int y, double px_per_mm, int max_width_px) {
+  double length_mm = 0;
+  for (int power = -3; power <= 4; ++power)
+    for (const double m : {1.0, 2.0, 5.0}) {
+      const double length = m * std::pow(10.0, power);
+      if (length * px_per_mm + bar_label_gap_px + text_width_px(value_label(length, "mm"), font_scale) <= max_width_px)
+        length_mm = length;
+    }
+  if (length_mm == 0) return;
+  const double right = x + length_mm * px_per_mm, middle = y + 0.5 * text_height_px(font_scale);
+  draw_segment(image, {x + 0.0, middle}, {right, middle}, 1.0, text_colour);
+  for (const double end : {x + 0.0, right}) draw_segment(image, {end, middle - 4}, {end, middle + 4}, 0.5, text_colour);
+  draw_text(image, static_cast<int>(std::ceil(right)) + bar_label_gap_px, y, value_label(length_mm, "mm"), text_colour,
+            font_scale);
 }
 
 PixelRange pixels_within(const Image& image, double x_min, double x_max, double y_min, double y_max) {

@@ -66,8 +66,14 @@ int title_height_px(const std::vector<std::string>& title_lines);
 /// Draws the title's lines at the top left.
 void draw_title(Image& image, const std::vector<std::string>& title_lines);
 
-/// The colour map in `bar` (its maximum at the top), framed, with the labels to its right.
-void draw_colour_bar(Image& image, const Box& bar, const std::string& min_label, const std::string& max_label);
+/// The colour map in `bar` (its maximum at the top), framed, labelled to its right: its ends with
+/// the unit, and between them ticks at round values (1, 2, 2.5 or 5 × 10^k apart, three to
+/// five of them) where their labels clear the ends'.
+void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit);
+
+/// A scale bar of a round length (1, 2 or 5 × 10^k mm, the longest within `max_width_px` with
+/// its label) at (x, y), labelled "L mm" to its right: a flat picture's distances read off it.
+void draw_scale_bar(Image& image, int x, int y, double px_per_mm, int max_width_px);
 
 /// The pixels (inclusive bounds) whose centres may lie in [x_min, x_max] × [y_min, y_max],
 /// clipped to the image. Clamping happens in double so far-off shapes cannot overflow an int.

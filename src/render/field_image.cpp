@@ -212,7 +212,10 @@ Image render_field(const Mesh& mesh, const Vector& nodal_values, const std::vect
   draw_edges(image, canvas.layout, mesh, mesh.border_edges(), detail::border_half_width_px, detail::border_colour);
   draw_electrodes(image, canvas.layout, mesh, sheet);
   draw_outlines(image, canvas.layout, outlines);
-  detail::draw_colour_bar(image, canvas.bar, canvas.min_label, canvas.max_label);
+  detail::draw_colour_bar(image, canvas.bar, range.min, range.max, options.unit);
+  // Below the colour bar, in the bottom margin the electrode numbers leave it.
+  detail::draw_scale_bar(image, canvas.bar.x, canvas.bar.y + canvas.bar.height + detail::label_margin_px / 3,
+                         canvas.layout.scale_px_per_mm, canvas.width - canvas.bar.x - detail::padding_px);
   detail::draw_title(image, canvas.title_lines);
   if (layout) *layout = canvas.layout;
   return image;

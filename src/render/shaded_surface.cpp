@@ -529,8 +529,7 @@ Image render_shaded_surface(const Mesh& mesh, const Vector& nodal_values, const 
   const SurfaceView& last = *panels.back().first;
   const detail::Box bar{last.left_px + last.size_px + detail::label_margin_px, last.top_px, detail::bar_width_px,
                         last.size_px};
-  detail::draw_colour_bar(image, bar, detail::value_label(range.min, options.unit),
-                          detail::value_label(range.max, options.unit));
+  detail::draw_colour_bar(image, bar, range.min, range.max, options.unit);
   detail::draw_title(image, title_lines(options));
   if (layout) *layout = plan;
   return image;

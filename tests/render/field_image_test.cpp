@@ -2,6 +2,7 @@
 #include "emit/render/field_image.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -166,6 +167,51 @@ TEST(RenderField, LinearFieldFollowsTheColourMap) {
   EXPECT_TRUE(colours_near(right, colormap(0.8), pixel_quantisation_tolerance));
   EXPECT_TRUE(colours_near(pixel_at(image, layout, 4.4, 3.3), colormap(0.44), pixel_quantisation_tolerance));
   EXPECT_LT(luminance(left), luminance(right));
+}
+
+// The colour bar reads as a scale: besides its ends (with the unit), ticks at round values between
+// them, each labelled (a field 0 to 1: 0.25, 0.5 and 0.75, whose text's dark pixels lie right of
+// the bar at the rows those values take); and a scale bar below it: a dark horizontal line of a
+// round length in mm (1, 2 or 5 × 10^k: 0.5 mm, 23 px, on this 10 mm sheet drawn 45 px/mm),
+// labelled beside it.
+TEST(RenderField, TheColourBarHasLabelledTicksAndAScaleBarIsBelow) {
+  const Mesh mesh = square_sheet();
+  FieldImageOptions options;
+  options.min_value = 0;
+  options.max_value = 1;
+  options.unit = "N/mm2";
+  FieldLayout layout;
+  const Image image = render_field(mesh, mesh.nodes_mm.col(0) / 10, {}, options, &layout);
+  const int labels_from = layout.pixel_x(10) + 40 + 18 + 6;  // the sheet, the margin, the bar, the gap
+  const auto dark_in = [&](int x0, int x1, int y0, int y1) {
+    int n = 0;
+    for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y)
+      for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) n += luminance(image.get(x, y)) < 100;
+    return n;
+  };
+  for (const double value : {0.25, 0.5, 0.75}) {
+    const int row = layout.pixel_y(10 * value);  // the bar spans the sheet's height, its top the maximum
+    EXPECT_GT(dark_in(labels_from, image.width() - 1, row - 6, row + 6), 15) << value << "'s label";
+  }
+  // No label between the ticks (0.375 lies halfway between two).
+  const int between = layout.pixel_y(3.75);
+  EXPECT_EQ(dark_in(labels_from, image.width() - 1, between - 2, between + 2), 0);
+  // The scale bar: a row below the colour bar with a dark run of at least 40 pixels.
+  int longest = 0;
+  for (int y = layout.pixel_y(0) + 1; y < image.height(); ++y) {
+    int run = 0;
+    for (int x = labels_from - 24; x < image.width(); ++x) {
+      run = luminance(image.get(x, y)) < 100 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+  }
+  // Its length, in mm at the picture's scale, is a round one (within its two end pixels).
+  const double length_mm = longest / layout.scale_px_per_mm, decade = std::pow(10.0, std::floor(std::log10(length_mm)));
+  double nearest_round = 1e9;
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    nearest_round = std::min(nearest_round, std::abs(length_mm - m * decade));
+  EXPECT_LE(nearest_round * layout.scale_px_per_mm, 2.0) << length_mm << " mm";
+  EXPECT_GE(longest, 20);
 }
 
 TEST(RenderField, ExplicitRangeIsUsedAndUniformFieldsAreOneColour) {
