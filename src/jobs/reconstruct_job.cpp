@@ -31,12 +31,17 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 void write_image(const Reconstructor& reconstructor, const std::vector<Contact>& contacts, std::size_t frame,
-                 Method method, const std::string& dir, const PressureMapOptions& options) {
+                 Method method, bool calibrated, const std::string& dir, const PressureMapOptions& options) {
   std::vector<Circle> outlines;
   outlines.reserve(contacts.size());
-  for (const Contact& c : contacts) outlines.push_back(contact_outline(c, reconstructor.surface()));
-  const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) + "), " +
-                            std::to_string(contacts.size()) + (contacts.size() == 1 ? " contact" : " contacts");
+  for (const Contact& c : contacts) {
+    outlines.push_back(contact_outline(c, reconstructor.surface()));
+    outlines.back().label = contact_label(c);
+  }
+  // Uncalibrated pressures are the sensor file's nominal contact law's: the picture says so.
+  const std::string title = "frame " + std::to_string(frame) + ": pressure (" + method_name(method) +
+                            (calibrated ? "" : ", uncalibrated") + "), " + std::to_string(contacts.size()) +
+                            (contacts.size() == 1 ? " contact" : " contacts");
   write_pressure_map(reconstructor.mesh(), reconstructor.pressure(), outlines, title,
                      dir + "/" + frame_image_name(frame), options);
 }
@@ -172,7 +177,7 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
         const std::vector<Contact>& contacts =
             *track_and_write(first + f, found, fitted != nullptr ? 1e3 * fitted->rms_misfit_V : -1);
         if (!job.images_dir.empty())
-          write_image(*reconstructor, contacts, first + f, job.method, job.images_dir, job.images);
+          write_image(*reconstructor, contacts, first + f, job.method, report.calibrated, job.images_dir, job.images);
         if (mcap)
           mcap->write(first + f, start_ns + (first + f) * frame_ns, frame_view(chunk[f]), contacts,
                       reconstructor->pressure(), static_cast<double>(first + f) * frame_s, &tracker.ended());

@@ -172,6 +172,18 @@ void draw_ellipse(Image& image, const FieldLayout& layout, const Circle& ellipse
 
 /// White rings 2 px wide, with a 1 px dark ring either side so they show on the bright end of the
 /// map as well as on the dark one; an ellipse the same way.
+/// A mark's label, up and right of its circle (its semi-major axis on the diagonal), white with a
+/// dark edge so that it reads on every colour of the map.
+void draw_label(Image& image, const FieldLayout& layout, const Circle& circle) {
+  const double reach = std::max(circle.radius_mm * layout.scale_px_per_mm, 4.0) * std::numbers::sqrt2 / 2 + 3;
+  const Vector2 centre = to_px(layout, circle.center_mm.x(), circle.center_mm.y());
+  const int x = static_cast<int>(std::lround(centre.x() + reach)),
+            y = static_cast<int>(std::lround(centre.y() - reach)) - detail::text_height_px(detail::font_scale);
+  for (const auto& [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
+    detail::draw_text(image, x + dx, y + dy, circle.label, detail::outline_shadow, detail::font_scale);
+  detail::draw_text(image, x, y, circle.label, detail::white, detail::font_scale);
+}
+
 void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Circle>& outlines) {
   for (const Circle& circle : outlines) {
     if (!circle.center_mm.allFinite() || !std::isfinite(circle.radius_mm)) continue;  // nothing sensible to draw
@@ -195,6 +207,9 @@ void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Ci
     detail::draw_ring(image, centre, radius, 2.0, detail::outline_shadow);
     detail::draw_ring(image, centre, radius, 1.0, detail::white);
   }
+  for (const Circle& circle : outlines)  // over every mark
+    if (!circle.label.empty() && circle.center_mm.allFinite() && std::isfinite(circle.radius_mm))
+      draw_label(image, layout, circle);
 }
 
 }  // namespace

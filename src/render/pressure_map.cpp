@@ -51,6 +51,14 @@ void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const 
   write_png(render_sheet_field(mesh, element_to_node(mesh, element_pressure), outlines, image), path);
 }
 
+std::string contact_label(const Contact& contact) {
+  std::array<char, 64> text{};
+  if (contact.id >= 0)
+    std::snprintf(text.data(), text.size(), "#%lld  %.1f N", static_cast<long long>(contact.id), contact.force_N);
+  else std::snprintf(text.data(), text.size(), "%.1f N", contact.force_N);
+  return text.data();
+}
+
 std::string frame_image_name(std::size_t frame) {
   std::array<char, 32> name{};
   std::snprintf(name.data(), name.size(), "frame_%06zu.png", frame);

@@ -304,7 +304,7 @@ TEST(Cli, ImagesOfTheDomeAreTheShadedTwoPanelPicture) {
   const Sensor sensor = load_sensor(dome + "_sensor.json");
   FieldImageOptions options;
   options.width_px = shaded_pressure_map_width_px;
-  options.title = "frame 0: pressure (fit), 1 contact";  // as reconstruct titles it (one line)
+  options.title = "frame 0: pressure (fit, uncalibrated), 1 contact";  // as reconstruct titles it
   options.unit = "N/mm2";
   const ShadedLayout layout = plan_shaded_layout(generate_mesh(sensor, reconstruction_mesh_options(sensor)), options);
   EXPECT_EQ(image.width(), layout.width_px);

@@ -214,6 +214,30 @@ TEST(RenderField, TheColourBarHasLabelledTicksAndAScaleBarIsBelow) {
   EXPECT_GE(longest, 20);
 }
 
+// A mark's label (a contact's id and force) is written up and right of it, white on a dark edge
+// over the field: white pixels there with the label, none without; the mark's other sides clear.
+TEST(RenderField, AMarksLabelIsWrittenBesideIt) {
+  const Mesh mesh = square_sheet();
+  FieldLayout layout;
+  Circle mark{Vector2(3, 3), 1.0};
+  const auto white_in = [&](const Image& image, double x0_mm, double x1_mm, double y0_mm, double y1_mm) {
+    int n = 0;
+    for (int y = layout.pixel_y(y1_mm); y <= layout.pixel_y(y0_mm); ++y)
+      for (int x = layout.pixel_x(x0_mm); x <= layout.pixel_x(x1_mm); ++x) {
+        const Rgb p = image.get(x, y);
+        n += p.r > 230 && p.g > 230 && p.b > 230 ? 1 : 0;
+      }
+    return n;
+  };
+  const Vector field = Vector::Zero(mesh.node_count());  // the map's darkest colour everywhere
+  const Image plain = render_field(mesh, field, {mark}, {}, &layout);
+  mark.label = "#7  12.5 N";
+  const Image labelled = render_field(mesh, field, {mark}, {}, &layout);
+  EXPECT_EQ(white_in(plain, 3.9, 9.5, 3.75, 4.5), 0);
+  EXPECT_GT(white_in(labelled, 3.9, 9.5, 3.75, 4.5), 100) << "the label's white text";
+  EXPECT_EQ(white_in(labelled, 0.2, 1.6, 0.2, 1.6), 0) << "down and left of the mark: nothing";
+}
+
 TEST(RenderField, ExplicitRangeIsUsedAndUniformFieldsAreOneColour) {
   const Mesh mesh = square_sheet();
   FieldLayout layout;

@@ -29,6 +29,9 @@ struct Circle {
   /// frame/contact_outline.hpp, placed on the sheet): render_field draws its (x, y),
   /// render_shaded_surface its points as they are.
   std::vector<Vector3> polygon_mm{};
+  /// Written beside the mark, up and right of it, white on a dark edge (a contact's id and force;
+  /// render_field only). Empty: none.
+  std::string label{};
 };
 
 struct FieldImageOptions {

@@ -39,6 +39,10 @@ struct PressureMapOptions {
 void write_pressure_map(const Mesh& mesh, const Vector& element_pressure, const std::vector<Circle>& outlines,
                         const std::string& title, const std::string& path, const PressureMapOptions& options = {});
 
+/// A contact's label on a map: its id when tracked and its force to 0.1 N, "#3  4.2 N", or the
+/// force alone.
+std::string contact_label(const Contact& contact);
+
 /// A frame's picture's name, its number zero-padded to six digits so that names sort in frame
 /// order ("frame_000042.png"; a run holds at most 131,072 frames: core/limits.hpp).
 std::string frame_image_name(std::size_t frame);
