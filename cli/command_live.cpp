@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "emit/render/pressure_map.hpp"
 #include "stop_on_signals.hpp"
 
 namespace emit::cli {
@@ -127,6 +128,10 @@ void add_live_command(CLI::App& app) {
                   "static transform (README, \"ROS 2\")")
       ->capture_default_str();
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
+  cmd->add_option("--pressure-range", job.pressure_range_N_per_mm2,
+                  "With --serve: the viewer's colour bar top in N/mm2, fixed (default: the largest pressure seen so far)")
+      ->type_name("MAX")
+      ->check(checked_by(&PressureMapOptions::max_pressure_N_per_mm2));
   cmd->add_option("--contacts", job.contacts_path,
                   "Contacts out as JSON Lines: a file (FILE.partial until the end), a FIFO (readers may come and go), "
                   "or - for stdout (the run ends when its reader goes)");

@@ -47,6 +47,12 @@ void ElectrodeHealthTally::add(const Frame& frame) {
   }
 }
 
+void ElectrodeHealthTally::reset() {
+  with_signal_ = 0;
+  std::fill(zero_columns_.begin(), zero_columns_.end(), 0);
+  std::fill(full_rows_.begin(), full_rows_.end(), 0);
+}
+
 std::vector<DeadElectrode> ElectrodeHealthTally::dead() const {
   std::vector<DeadElectrode> dead;
   if (with_signal_ == 0) return dead;

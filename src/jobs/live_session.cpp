@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "emit/acquire/recorder.hpp"
+#include "emit/core/option_check.hpp"
 #include "emit/core/output_paths.hpp"
 #include "emit/io/calibration_json.hpp"
 #include "emit/live/dds_publisher.hpp"
@@ -65,6 +66,7 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   Impl& s = *impl_;
   const std::string source_file = job.source.rfind("file:", 0) == 0 ? job.source.substr(5) : "";
   if (!job.dds_prefix.empty()) DdsOptions{job.dds_prefix, job.dds_domain, job.frame_id}.validate();
+  option_check::non_negative("LiveJob", "pressure_range_N_per_mm2", job.pressure_range_N_per_mm2);
   check_ros2_frame_id(job.frame_id);
   LiveOptions live_options;
   live_options.frame.contact_radius_mm = job.contact_radius_mm;
@@ -102,7 +104,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   live_options.max_seconds = job.seconds;
   s.loop.emplace(*s.source, *s.pipeline, live_options);
   if (!job.serve.empty()) {
-    s.server.emplace(job.serve, s.pipeline->model().mesh, s.sensor.name,
+    s.server.emplace(job.serve, s.pipeline->model().mesh,
+                     ViewerSheet{s.sensor.name, s.pipeline->calibrated(), job.pressure_range_N_per_mm2, s.sensor.adc.vref_V},
                      [&loop = *s.loop](const std::string& command) { loop.command(command); });
     s.loop->add_publisher(&*s.server);
   }

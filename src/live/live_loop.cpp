@@ -25,6 +25,9 @@ std::uint64_t unix_time_ns_at(std::chrono::steady_clock::time_point at) {
 constexpr double rate_smoothing = 0.1;  // weight of each frame's interval in the displayed rate
 /// The most contacts tracked a frame (the tracker's limit; a linear method's further regions pass untracked).
 constexpr int live_max_contacts = 64;
+/// Frames with signal per verdict on the electrodes' health: half a second of pressing at 50
+/// frames/s, enough that a press anywhere has moved every electrode's readings.
+constexpr int health_window_frames = 25;
 
 }  // namespace
 
@@ -34,7 +37,8 @@ LiveLoop::LiveLoop(FrameSource& source, Pipeline& pipeline, const LiveOptions& o
       reconstructor_(pipeline.reconstructor(options.frame)),
       tracker_(options.tracking, live_max_contacts, pipeline.model().surface),
       reference_(options.reference),
-      no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())) {}
+      no_pressure_(Vector::Zero(pipeline.model().mesh.triangle_count())),
+      health_(pipeline.sensor().electrode_count(), pipeline.sensor().adc) {}
 
 bool LiveLoop::command(const std::string& name) {
   if (name != "recapture") return false;
@@ -115,7 +119,13 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   const std::vector<Contact>& contacts = tracker_.update(reconstructor_.process(frame.volts), frame.board_time_s);
   out.ended = &tracker_.ended();
   const std::size_t masked = reconstructor_.masked_readings().size();
+  out.readings_masked = masked;
   stats_.readings_masked += masked;
+  health_.add(frame.volts);
+  if (health_.frames_with_signal() >= health_window_frames) {
+    dead_electrodes_ = health_.dead();
+    health_.reset();
+  }
   stats_.frames_with_masked += masked > 0 ? 1 : 0;
   if (reference_.follow(frame.volts, !contacts.empty() || masked > 0))  // a glitch is not drift
     reconstructor_.set_reference(reference_.reference());
@@ -174,6 +184,10 @@ void LiveLoop::publish(LiveFrame& frame) {
   frame.frames_per_s = mean_interval_s_ > 0 ? 1 / mean_interval_s_ : 0;
   frame.latency_s = last_latency_s_;
   frame.reference_captures = reference_.captures();
+  frame.frames_missed = stats_.frames_missed;
+  const FitResult* fitted = reconstructor_.fit_result();
+  frame.misfit_mV = fitted && !frame.capturing_reference ? 1e3 * fitted->rms_misfit_V : -1;
+  frame.dead_electrodes = &dead_electrodes_;
   for (FramePublisher* publisher : publishers_) publisher->publish(frame);
 }
 

@@ -235,11 +235,11 @@ tcp::endpoint parse_address(const std::string& address, std::string& host) {
 
 }  // namespace
 
-LiveServer::LiveServer(const std::string& address, const Mesh& mesh, const std::string& sheet_name,
+LiveServer::LiveServer(const std::string& address, const Mesh& mesh, const ViewerSheet& sheet,
                        std::function<void(const std::string&)> on_command)
     : impl_(std::make_unique<Impl>()) {
   const tcp::endpoint endpoint = parse_address(address, impl_->host);
-  impl_->state.mesh = std::make_shared<const Message>(Message{mesh_message(mesh, sheet_name), false});
+  impl_->state.mesh = std::make_shared<const Message>(Message{mesh_message(mesh, sheet), false});
   impl_->curved = viewer_draws_in_3d(mesh);
   impl_->state.on_command = std::move(on_command);
   beast::error_code ec;

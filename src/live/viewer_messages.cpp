@@ -28,7 +28,7 @@ void append_segment_z(json& out, const Mesh& mesh, const std::array<int, 2>& edg
 
 bool viewer_draws_in_3d(const Mesh& mesh) { return !is_flat(mesh); }
 
-std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
+std::string mesh_message(const Mesh& mesh, const ViewerSheet& sheet) {
   const bool curved = viewer_draws_in_3d(mesh);
   json nodes = json::array(), triangles = json::array(), outline = json::array(), electrodes = json::array();
   json nodes_z = json::array(), outline_z = json::array();
@@ -59,8 +59,15 @@ std::string mesh_message(const Mesh& mesh, const std::string& sheet_name) {
     }
     electrodes.push_back(std::move(electrode));
   }
-  json message = {{"type", "mesh"},         {"name", sheet_name},    {"nodes_mm", nodes},
-                  {"triangles", triangles}, {"outline_mm", outline}, {"electrodes", electrodes}};
+  json message = {{"type", "mesh"},
+                  {"name", sheet.name},
+                  {"calibrated", sheet.calibrated},
+                  {"pressure_range_N_per_mm2", sheet.pressure_range_N_per_mm2},
+                  {"adc_reference_V", sheet.adc_reference_V},
+                  {"nodes_mm", nodes},
+                  {"triangles", triangles},
+                  {"outline_mm", outline},
+                  {"electrodes", electrodes}};
   if (curved) {
     message["nodes_z_mm"] = nodes_z;
     message["outline_z_mm"] = outline_z;
@@ -72,7 +79,8 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
   static_assert(std::endian::native == std::endian::little, "the frame message is little-endian");
   json contacts = json::array();
   for (const Contact& c : *frame.contacts) {
-    json contact = {{"x_mm", c.x_mm},
+    json contact = {{"id", c.id},
+                    {"x_mm", c.x_mm},
                     {"y_mm", c.y_mm},
                     {"area_mm2", c.area_mm2},
                     {"pressure_N_per_mm2", c.pressure_N_per_mm2},
@@ -96,28 +104,41 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
     }
     contacts.push_back(std::move(contact));
   }
+  json dead = json::array();
+  if (frame.dead_electrodes)
+    for (const DeadElectrode& d : *frame.dead_electrodes) dead.push_back({{"electrode", d.electrode}, {"reason", d.reason}});
   const Vector& pressure = *frame.pressure_N_per_mm2;
+  const Index readings = frame.volts ? frame.volts->size() : 0;
   std::string header = json{{"type", "frame"},
                             {"index", frame.index},
                             {"sequence", frame.sequence},
+                            {"board_time_s", frame.board_time_s},
                             {"capturing_baseline", frame.capturing_reference},
                             {"baseline_captures", frame.reference_captures},
                             {"commands", commands},
                             {"frames_per_s", frame.frames_per_s},
                             {"latency_ms", 1e3 * frame.latency_s},
+                            {"frames_missed", frame.frames_missed},
+                            {"misfit_mV", frame.misfit_mV},
+                            {"readings_masked", frame.readings_masked},
+                            {"dead_electrodes", dead},
+                            {"electrode_count", frame.volts ? frame.volts->rows() : 0},
                             {"max_pressure_N_per_mm2", pressure.size() ? pressure.maxCoeff() : 0.0},
                             {"contacts", contacts}}
                            .dump();
   header.append((4 - header.size() % 4) % 4, ' ');
   const auto header_bytes = static_cast<std::uint32_t>(header.size());
-  std::string message(4 + header.size() + 4 * static_cast<std::size_t>(pressure.size()), '\0');
+  std::string message(4 + header.size() + 4 * static_cast<std::size_t>(pressure.size() + readings), '\0');
   std::memcpy(message.data(), &header_bytes, 4);
   std::memcpy(message.data() + 4, header.data(), header.size());
   char* values = message.data() + 4 + header.size();
-  for (Index t = 0; t < pressure.size(); ++t) {
-    const auto value = static_cast<float>(pressure[t]);
-    std::memcpy(values + 4 * t, &value, 4);
-  }
+  const auto put = [&values](double v) {
+    const auto value = static_cast<float>(v);
+    std::memcpy(values, &value, 4);
+    values += 4;
+  };
+  for (Index t = 0; t < pressure.size(); ++t) put(pressure[t]);
+  for (Index k = 0; k < readings; ++k) put(frame.volts->data()[k]);  // row-major: ground l, sense m
   return message;
 }
 

@@ -241,6 +241,65 @@ TEST(LiveLoop, CountsGapsInTheSourcesNumbersAsMissedFrames) {
   EXPECT_EQ(stats.frames_missed, 2u + 2u + 3u);
 }
 
+/// Hands out `untouched` `capture` times, then `pressed` `pressed_count` times, then ends.
+class TwoFrameSource : public FrameSource {
+ public:
+  TwoFrameSource(Frame untouched, Frame pressed, int capture, int pressed_count)
+      : untouched_(std::move(untouched)), pressed_(std::move(pressed)), capture_(capture), total_(capture + pressed_count) {}
+  bool next(SourceFrame& frame, std::chrono::milliseconds) override {
+    if (finished()) throw IoError("two frames: end");
+    frame.volts = next_ < capture_ ? untouched_ : pressed_;
+    frame.sequence = static_cast<std::uint64_t>(next_++);
+    frame.received = std::chrono::steady_clock::now();
+    return true;
+  }
+  bool finished() const override { return next_ == total_; }
+  std::string description() const override { return "two frames"; }
+
+ private:
+  Frame untouched_, pressed_;
+  int capture_, total_, next_ = 0;
+};
+
+/// What the viewer's server would be told, frame by frame.
+struct HealthWatcher : FramePublisher {
+  std::vector<std::vector<DeadElectrode>> dead;
+  std::vector<double> misfit_mV;
+  void publish(const LiveFrame& frame) override {
+    dead.push_back(*frame.dead_electrodes);
+    misfit_mV.push_back(frame.misfit_mV);
+  }
+};
+
+// Electrode 5 disconnected (its column reads 0 V: electrode_health.hpp) under a held press: the
+// frames published name it once a window of 25 pressed frames is full, and not before. The
+// paper's method (contact fitting on such frames takes seconds each under the sanitizers), so no
+// misfit is published: it has no fit.
+TEST(LiveLoop, PublishesADeadElectrodeOnceAWindowOfPressedFramesShowsIt) {
+  const Sensor sensor = default_sensor();
+  Pipeline paper(sensor, {.method = Method::paper, .cache_dir = test::temp_folder("live_cache"), .excluded = {}});
+  SimSource twin(sensor, parse_sim_script("sim:fixed:20,40"), unpaced());
+  SourceFrame frame, untouched;
+  ASSERT_TRUE(twin.next(untouched, std::chrono::seconds(30)));
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(twin.next(frame, std::chrono::seconds(30)));  // past the untouched frames
+  Frame pressed = frame.volts;
+  pressed.col(5).setZero();
+  constexpr int capture = 40, pressed_count = 30;
+  TwoFrameSource source(untouched.volts, pressed, capture, pressed_count);
+  LiveLoop loop(source, paper);
+  HealthWatcher watcher;
+  loop.add_publisher(&watcher);
+  const std::atomic<bool> stop{false};
+  const LiveStats stats = loop.run(stop);
+  ASSERT_EQ(watcher.dead.size(), static_cast<std::size_t>(capture + pressed_count));
+  const auto first_reconstructed = static_cast<std::size_t>(stats.capture_frames);
+  EXPECT_TRUE(watcher.dead[first_reconstructed + 23].empty());  // 24 pressed frames: the window is not full
+  ASSERT_EQ(watcher.dead.back().size(), 1u);
+  EXPECT_EQ(watcher.dead.back()[0].electrode, 5);
+  EXPECT_NE(watcher.dead.back()[0].reason.find("reads 0 V as the sensed electrode"), std::string::npos);
+  EXPECT_LT(watcher.misfit_mV.back(), 0);
+}
+
 // A WebSocket client as the page is one: the mesh first, then frames (binary: header + one float
 // per triangle); its "recapture" reaches the loop, which captures the baseline again.
 TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
@@ -249,7 +308,7 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
   LiveBench& b = bench();
   SimSource source(b.sensor, parse_sim_script("sim:fixed:20,40"), unpaced());
   LiveLoop loop(source, b.pipeline);
-  LiveServer server("127.0.0.1:0", b.pipeline.model().mesh, b.sensor.name,
+  LiveServer server("127.0.0.1:0", b.pipeline.model().mesh, {b.sensor.name},
                     [&](const std::string& c) { loop.command(c); });
   loop.add_publisher(&server);
   std::atomic<bool> stop{false};
@@ -279,7 +338,7 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
     ws.write(net::buffer(std::string("ack")));  // the next frame may come
     std::uint32_t header = 0;
     std::memcpy(&header, bytes.data(), 4);
-    EXPECT_EQ(bytes.size(), 4 + header + 4 * triangles);
+    EXPECT_EQ(bytes.size(), 4 + header + 4 * (triangles + 16 * 16));  // pressure, then the 16 × 16 readings
     return nlohmann::json::parse(bytes.substr(4, header));
   };
   nlohmann::json frame;
@@ -288,6 +347,10 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
   EXPECT_NEAR(frame["contacts"][0]["x_mm"].get<double>(), 20, live_fit_tolerance_mm);
   EXPECT_NEAR(frame["contacts"][0]["y_mm"].get<double>(), 40, live_fit_tolerance_mm);
   EXPECT_EQ(frame["baseline_captures"], 1);
+  // The fit's misfit: the twin's ADC noise (1 mV: sensor "adc") and the twin's other mesh, a few mV at most.
+  EXPECT_GE(frame["misfit_mV"].get<double>(), 0);
+  EXPECT_LT(frame["misfit_mV"].get<double>(), 5);
+  EXPECT_EQ(frame["contacts"][0]["id"], 0);  // the tracker's first touch
 
   ws.write(net::buffer(std::string("recapture")));
   do frame = read_frame();
@@ -306,15 +369,15 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
 
 TEST(LiveServer, PortInUseIsAClearError) {
   const Mesh& mesh = bench().pipeline.model().mesh;
-  LiveServer first("127.0.0.1:0", mesh, "a", {});
+  LiveServer first("127.0.0.1:0", mesh, {"a"}, {});
   try {
-    LiveServer second("127.0.0.1:" + std::to_string(first.port()), mesh, "b", {});
+    LiveServer second("127.0.0.1:" + std::to_string(first.port()), mesh, {"b"}, {});
     FAIL() << "a second server on the same port";
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("in use"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(LiveServer("127.0.0.1", mesh, "c", {}), InvalidInput);
-  EXPECT_THROW(LiveServer("127.0.0.1:99999", mesh, "c", {}), InvalidInput);
+  EXPECT_THROW(LiveServer("127.0.0.1", mesh, {"c"}, {}), InvalidInput);
+  EXPECT_THROW(LiveServer("127.0.0.1:99999", mesh, {"c"}, {}), InvalidInput);
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST(LiveServer, ServesThreeJs) {
   EXPECT_NE(three_module_js().find("from './three.core.js'"), std::string_view::npos);
   EXPECT_NE(three_orbit_controls_js().find("from 'three'"), std::string_view::npos);
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
-  LiveServer server("127.0.0.1:0", mesh, "strip", {});
+  LiveServer server("127.0.0.1:0", mesh, {"strip"}, {});
   const std::pair<const char*, std::string_view> files[] = {{"/three/three.module.js", three_module_js()},
                                                             {"/three/three.core.js", three_core_js()},
                                                             {"/three/addons/controls/OrbitControls.js",
@@ -69,7 +69,7 @@ TEST(LiveServer, ServesThreeJs) {
 // raw bytes the server sends.
 TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
-  LiveServer server("localhost:0", mesh, "strip", {});
+  LiveServer server("localhost:0", mesh, {"strip"}, {});
   EXPECT_EQ(server.url(), "http://localhost:" + std::to_string(server.port()) + "/");
   net::io_context io;
   tcp::socket socket(io);
@@ -100,7 +100,7 @@ TEST(LiveServer, ServesThePageAndNotFoundOnOneConnection) {
 // scheduling may cost half of the 500).
 TEST(LiveServer, AViewerThatAcknowledgesAtOnceKeepsUpWithTheLoop) {
   const Mesh mesh = test::strip_mesh(60, 60, 40, 40);  // 3200 triangles: 12.8 kB of pressure a frame
-  LiveServer server("127.0.0.1:0", mesh, "strip", {});
+  LiveServer server("127.0.0.1:0", mesh, {"strip"}, {});
   net::io_context io;
   tcp::socket socket(io);
   socket.connect({net::ip::make_address("127.0.0.1"), static_cast<unsigned short>(server.port())});
@@ -141,7 +141,7 @@ TEST(LiveServer, AViewerThatAcknowledgesAtOnceKeepsUpWithTheLoop) {
 TEST(LiveServer, OneFrameInFlightAndTheNewestWaiting) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
   std::atomic<int> commands{0};
-  LiveServer server("127.0.0.1:0", mesh, "strip", [&](const std::string& command) {
+  LiveServer server("127.0.0.1:0", mesh, {"strip"}, [&](const std::string& command) {
     ++commands;
     if (command == "fail") throw std::runtime_error("a command that fails");
   });
@@ -153,7 +153,7 @@ TEST(LiveServer, OneFrameInFlightAndTheNewestWaiting) {
   beast::flat_buffer buffer;
   ws.read(buffer);
   EXPECT_TRUE(ws.got_text());
-  EXPECT_EQ(beast::buffers_to_string(buffer.data()), mesh_message(mesh, "strip"));
+  EXPECT_EQ(beast::buffers_to_string(buffer.data()), mesh_message(mesh, {"strip"}));
   buffer.consume(buffer.size());
   EXPECT_EQ(server.clients(), 1u);  // counted before the mesh was sent
 
@@ -199,7 +199,7 @@ TEST(LiveServer, AddressErrorsNameThePart) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
   auto error_of = [&](const std::string& address) -> std::string {
     try {
-      LiveServer server(address, mesh, "strip", {});
+      LiveServer server(address, mesh, {"strip"}, {});
     } catch (const InvalidInput& e) {
       return e.what();
     }

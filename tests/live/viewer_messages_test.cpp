@@ -18,7 +18,7 @@ namespace {
 // bottom side (nodes 0..2, centre (2, 0)), electrode 1 the top (centre (2, 2)).
 TEST(ViewerMessages, MeshMessageHoldsTheMeshAndItsBorder) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
-  const auto j = nlohmann::json::parse(mesh_message(mesh, "strip"));
+  const auto j = nlohmann::json::parse(mesh_message(mesh, {"strip"}));
   EXPECT_EQ(j["type"], "mesh");
   EXPECT_EQ(j["name"], "strip");
   ASSERT_EQ(j["nodes_mm"].size(), 12u);
@@ -32,16 +32,28 @@ TEST(ViewerMessages, MeshMessageHoldsTheMeshAndItsBorder) {
   EXPECT_EQ(j["electrodes"][0]["y_mm"], 0.0);
   EXPECT_EQ(j["electrodes"][1]["y_mm"], 2.0);
   EXPECT_EQ(j["electrodes"][1]["segments_mm"].size(), 2u * 4);  // the top side's two edges
+  EXPECT_EQ(j["calibrated"], false);  // the page's "uncalibrated" badge
+  EXPECT_EQ(j["pressure_range_N_per_mm2"], 0.0);
+}
+
+// What the page says about the sheet: calibrated or not, its colour bar's top, the ADC's full scale.
+TEST(ViewerMessages, MeshMessageSaysWhetherCalibratedAndTheScales) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
+  const auto j = nlohmann::json::parse(mesh_message(mesh, {"strip", true, 0.25, 3.3}));
+  EXPECT_EQ(j["calibrated"], true);
+  EXPECT_EQ(j["pressure_range_N_per_mm2"], 0.25);
+  EXPECT_EQ(j["adc_reference_V"], 3.3);
 }
 
 // A flat sheet's message is as it was before curved sheets: no heights, no 3D view.
 TEST(ViewerMessages, FlatMeshHasNoHeights) {
   const Mesh mesh = test::strip_mesh(4, 2, 2, 1);
   EXPECT_FALSE(viewer_draws_in_3d(mesh));
-  const auto j = nlohmann::json::parse(mesh_message(mesh, "strip"));
+  const auto j = nlohmann::json::parse(mesh_message(mesh, {"strip"}));
   std::vector<std::string> keys;
   for (const auto& [key, value] : j.items()) keys.push_back(key);
-  EXPECT_EQ(keys, (std::vector<std::string>{"electrodes", "name", "nodes_mm", "outline_mm", "triangles", "type"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"adc_reference_V", "calibrated", "electrodes", "name", "nodes_mm",
+                                            "outline_mm", "pressure_range_N_per_mm2", "triangles", "type"}));
   for (const auto& electrode : j["electrodes"]) EXPECT_EQ(electrode.size(), 3u);  // segments_mm, x_mm, y_mm
 }
 
@@ -50,7 +62,7 @@ TEST(ViewerMessages, CurvedMeshCarriesTheHeights) {
   Mesh mesh = test::strip_mesh(4, 2, 2, 1);
   mesh.nodes_mm.col(2) = 0.5 * mesh.nodes_mm.col(0);
   EXPECT_TRUE(viewer_draws_in_3d(mesh));
-  const auto j = nlohmann::json::parse(mesh_message(mesh, "ramp"));
+  const auto j = nlohmann::json::parse(mesh_message(mesh, {"ramp"}));
   ASSERT_EQ(j["nodes_z_mm"].size(), 6u);
   for (std::size_t v = 0; v < 6; ++v) EXPECT_EQ(j["nodes_z_mm"][v], 0.5 * j["nodes_mm"][2 * v].get<double>());
   ASSERT_EQ(j["outline_z_mm"].size(), j["outline_mm"].size() / 2);
@@ -83,7 +95,7 @@ TEST(ViewerMessages, CurvedFrameContactsCarryHeightAndNormal) {
   const auto flat = header_of(frame_message(frame, 0))["contacts"][0];
   EXPECT_FALSE(flat.contains("z_mm"));
   EXPECT_FALSE(flat.contains("normal"));
-  EXPECT_EQ(flat.size(), 5u);
+  EXPECT_EQ(flat.size(), 6u);  // id, x_mm, y_mm, area_mm2, pressure_N_per_mm2, force_N
 }
 
 // A contact with an outline carries its ellipse under the JSON Lines' names; one without, none.
@@ -110,16 +122,25 @@ TEST(ViewerMessages, AContactsOutlineIsItsEllipse) {
   }
   EXPECT_FALSE(listed[1].contains("outline_mm"));
   EXPECT_FALSE(listed[1].contains("semi_major_mm"));
-  EXPECT_EQ(listed[1].size(), 5u);
+  EXPECT_EQ(listed[1].size(), 6u);
 }
 
 TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   std::vector<Contact> contacts(1);
   contacts[0].x_mm = 12.5;
   contacts[0].force_N = 3.25;
+  contacts[0].id = 4;
   Vector pressure(3);
   pressure << 0.0, 0.125, 0.1;
+  Frame volts(2, 2);  // ground l (row), sense m (column)
+  volts << 0.0, 1.5, 0.25, 0.0;
+  const std::vector<DeadElectrode> dead{{1, "reads 0 V as the sensed electrode in all 25 frames with signal"}};
   LiveFrame frame;
+  frame.volts = &volts;
+  frame.dead_electrodes = &dead;
+  frame.frames_missed = 3;
+  frame.misfit_mV = 0.75;
+  frame.board_time_s = 12.5;
   frame.index = 41;
   frame.sequence = 1234;
   frame.reference_captures = 1;
@@ -131,7 +152,7 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   std::uint32_t header_bytes = 0;
   std::memcpy(&header_bytes, message.data(), 4);
   EXPECT_EQ(header_bytes % 4, 0u);
-  ASSERT_EQ(message.size(), 4 + header_bytes + 4 * 3u);
+  ASSERT_EQ(message.size(), 4 + header_bytes + 4 * (3u + 4u));  // 3 triangles, 2 × 2 readings
   const auto header = nlohmann::json::parse(message.substr(4, header_bytes));  // trailing spaces are JSON whitespace
   EXPECT_EQ(header["type"], "frame");
   EXPECT_EQ(header["index"], 41);
@@ -143,11 +164,23 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   ASSERT_EQ(header["contacts"].size(), 1u);
   EXPECT_EQ(header["contacts"][0]["x_mm"], 12.5);
   EXPECT_EQ(header["contacts"][0]["force_N"], 3.25);
-  float values[3];
+  EXPECT_EQ(header["contacts"][0]["id"], 4);
+  EXPECT_EQ(header["board_time_s"], 12.5);
+  EXPECT_EQ(header["frames_missed"], 3);
+  EXPECT_EQ(header["misfit_mV"], 0.75);
+  EXPECT_EQ(header["electrode_count"], 2);
+  ASSERT_EQ(header["dead_electrodes"].size(), 1u);
+  EXPECT_EQ(header["dead_electrodes"][0]["electrode"], 1);
+  EXPECT_EQ(header["dead_electrodes"][0]["reason"], dead[0].reason);
+  float values[7];
   std::memcpy(values, message.data() + 4 + header_bytes, sizeof values);
   EXPECT_EQ(values[0], 0.0f);
   EXPECT_EQ(values[1], 0.125f);
   EXPECT_EQ(values[2], 0.1f);  // float32: the value rounded once
+  EXPECT_EQ(values[3], 0.0f);  // then the readings, row by row
+  EXPECT_EQ(values[4], 1.5f);
+  EXPECT_EQ(values[5], 0.25f);
+  EXPECT_EQ(values[6], 0.0f);
 }
 
 }  // namespace

@@ -26,6 +26,10 @@ class ElectrodeHealthTally {
   ElectrodeHealthTally(int electrode_count, const AdcSpec& adc);
   void add(const Frame& frame);
   std::vector<DeadElectrode> dead() const;
+  /// The frames with signal added since construction or the last reset().
+  int frames_with_signal() const { return with_signal_; }
+  /// Forget what was added (a window of frames: the live viewer's health). Allocates nothing.
+  void reset();
 
  private:
   AdcSpec adc_;

@@ -28,6 +28,8 @@ namespace emit {
 struct LiveJob {
   std::string source = "sim";  ///< live/open_source.hpp
   std::string serve;           ///< HOST:PORT for the viewer; empty: none
+  /// The viewer's colour bar top [N/mm²], fixed; 0: the page's own (the largest pressure seen).
+  double pressure_range_N_per_mm2 = 0;
   std::string contacts_path;   ///< JSON Lines; "-": standard output; a FIFO: readers may come and go; empty: none
   std::string tracks_path;     ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
   std::string record_path;     ///< empty: no recording

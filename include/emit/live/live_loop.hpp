@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "emit/acquire/electrode_health.hpp"
 #include "emit/acquire/frame_source.hpp"
 #include "emit/acquire/recorder.hpp"
 #include "emit/core/output_file.hpp"
@@ -37,6 +38,11 @@ struct LiveFrame {
   const Vector* pressure_N_per_mm2 = nullptr;  ///< per triangle of the reconstruction mesh
   double frames_per_s = 0;                     ///< recent rate (over about the last second)
   double latency_s = 0;                        ///< the previous frame's end-to-end latency
+  std::uint64_t frames_missed = 0;             ///< so far in the run (LiveStats::frames_missed)
+  double misfit_mV = -1;                       ///< the contact fit's RMS misfit; < 0: no fit (a linear method)
+  std::size_t readings_masked = 0;             ///< in this frame (LiveStats::readings_masked)
+  /// Electrodes dead in the last window of frames with signal (LiveLoop's health window); never null.
+  const std::vector<DeadElectrode>* dead_electrodes = nullptr;
 };
 
 /// Receives every frame the loop handles (the viewer's server). Called on the loop's thread; it
@@ -162,6 +168,10 @@ class LiveLoop {
   SourceFrame frame_;
   Vector no_pressure_;
   const std::vector<Contact> no_contacts_;
+  /// The electrodes' health over windows of frames with signal: each full window's verdict is
+  /// published until the next window is full.
+  ElectrodeHealthTally health_;
+  std::vector<DeadElectrode> dead_electrodes_;
   LiveStats stats_;
   std::uint64_t handled_ = 0;
   std::uint64_t last_sequence_ = 0;  ///< of the last frame handled (valid once handled_ > 0)

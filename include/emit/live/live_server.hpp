@@ -15,6 +15,7 @@
 #include <string>
 
 #include "emit/live/live_loop.hpp"
+#include "emit/live/viewer_messages.hpp"
 #include "emit/mesh/mesh.hpp"
 
 namespace emit {
@@ -24,7 +25,7 @@ class LiveServer : public FramePublisher {
   /// Listens on `address` ("HOST:PORT"; port 0 picks a free one) and starts serving.
   /// `on_command` is called on the server's thread with each command a client sends.
   /// \throw InvalidInput for a malformed address, IoError if it cannot listen (e.g. the port is in use).
-  LiveServer(const std::string& address, const Mesh& mesh, const std::string& sheet_name,
+  LiveServer(const std::string& address, const Mesh& mesh, const ViewerSheet& sheet,
              std::function<void(const std::string&)> on_command);
   ~LiveServer() override;
   LiveServer(const LiveServer&) = delete;

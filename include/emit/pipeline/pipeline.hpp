@@ -68,6 +68,8 @@ class Pipeline {
   Method method() const { return method_; }
   bool calibrated() const { return calibrated_; }
   const ReconstructionModel& model() const { return model_; }
+  /// The sensor it was built for (for contact fitting, with the calibrated contact law).
+  const Sensor& sensor() const { return fit_sensor_; }
   const OperatorOptions& operator_options() const { return model_.options; }
   /// The linear method's calibration (the uncalibrated eq. 8 until calibrated). \pre is_linear(method()).
   const LinearCalibration& linear_calibration() const { return linear_; }
