@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <numbers>
+#include <span>
 #include <type_traits>
 
 #include "emit/core/errors.hpp"
@@ -109,6 +110,35 @@ constexpr std::string_view mesh_fields =
     "float64 y\n"
     "float64 z\n";
 
+constexpr std::string_view point_cloud_fields =
+    "# This message holds a collection of N-dimensional points, which may\n"
+    "# contain additional information such as normals, intensity, etc. The\n"
+    "# point data is stored as a binary blob, its layout described by the\n"
+    "# contents of the \"fields\" array.\n"
+    "std_msgs/Header header\n"
+    "uint32 height\n"
+    "uint32 width\n"
+    "PointField[] fields\n"
+    "bool    is_bigendian # Is this data bigendian?\n"
+    "uint32  point_step   # Length of a point in bytes\n"
+    "uint32  row_step     # Length of a row in bytes\n"
+    "uint8[] data         # Actual point data, size is (row_step*height)\n"
+    "bool is_dense        # True if there are no invalid points\n"
+    "================================================================================\n"
+    "MSG: sensor_msgs/PointField\n"
+    "uint8 INT8    = 1\n"
+    "uint8 UINT8   = 2\n"
+    "uint8 INT16   = 3\n"
+    "uint8 UINT16  = 4\n"
+    "uint8 INT32   = 5\n"
+    "uint8 UINT32  = 6\n"
+    "uint8 FLOAT32 = 7\n"
+    "uint8 FLOAT64 = 8\n"
+    "string name      # Name of field\n"
+    "uint32 offset    # Offset from start of point struct\n"
+    "uint8  datatype  # Datatype enumeration, see above\n"
+    "uint32 count     # How many elements in the field\n";
+
 /// A stamped message's definition: its fields, then the header's types.
 std::string with_header(std::string_view fields) {
   return std::string(fields) + std::string(separator) + std::string(header_types);
@@ -171,6 +201,10 @@ const Ros2MessageType& tactile_contacts_message() {
 }
 const Ros2MessageType& pressure_image_message() {
   static const Ros2MessageType type{"emit_msgs/msg/PressureImage", with_header(pressure_image_fields)};
+  return type;
+}
+const Ros2MessageType& pressure_cloud_message() {
+  static const Ros2MessageType type{"sensor_msgs/msg/PointCloud2", with_header(point_cloud_fields)};
   return type;
 }
 const Ros2MessageType& mesh_message() {
@@ -279,6 +313,50 @@ void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std:
   cdr.put(frame);
   cdr.count(static_cast<std::size_t>(pressure_N_per_mm2.size()));
   for (Index k = 0; k < pressure_N_per_mm2.size(); ++k) cdr.put(static_cast<float>(1e6 * pressure_N_per_mm2[k]));
+}
+
+std::vector<float> pressure_cloud_points_m(const Mesh& mesh) {
+  std::vector<float> points(3 * static_cast<std::size_t>(mesh.triangle_count()));
+  for (Index t = 0; t < mesh.triangle_count(); ++t) {
+    Vector3 centroid = Vector3::Zero();
+    for (int corner = 0; corner < 3; ++corner) centroid += mesh.nodes_mm.row(mesh.triangles(t, corner)).transpose();
+    for (int axis = 0; axis < 3; ++axis)
+      points[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(axis)] = static_cast<float>(1e-3 / 3 * centroid[axis]);
+  }
+  return points;
+}
+
+void fill_pressure_cloud_data(std::span<std::uint8_t> data, std::span<const float> points_m,
+                              const Vector& pressure_N_per_mm2) {
+  for (std::size_t k = 0; k < points_m.size() / 3; ++k) {
+    const std::array<float, 4> point{points_m[3 * k], points_m[3 * k + 1], points_m[3 * k + 2],
+                                     static_cast<float>(1e6 * pressure_N_per_mm2[static_cast<Index>(k)])};
+    std::memcpy(data.data() + pressure_cloud_point_bytes * k, point.data(), pressure_cloud_point_bytes);
+  }
+}
+
+void encode_pressure_cloud(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                           std::span<const float> points_m, const Vector& pressure_N_per_mm2) {
+  const std::size_t width = points_m.size() / 3;
+  CdrWriter cdr(out);
+  cdr.header(stamp, frame_id);
+  cdr.put(std::uint32_t{1});  // height: an unordered cloud
+  cdr.count(width);
+  cdr.count(pressure_cloud_fields.size());
+  for (const PointFieldLayout& field : pressure_cloud_fields) {
+    cdr.string(field.name);
+    cdr.put(field.offset);
+    cdr.put(field.datatype);
+    cdr.put(field.count);
+  }
+  cdr.put(std::uint8_t{0});  // is_bigendian
+  cdr.put(static_cast<std::uint32_t>(pressure_cloud_point_bytes));
+  cdr.count(pressure_cloud_point_bytes * width);  // row_step
+  cdr.count(pressure_cloud_point_bytes * width);  // data's length, then its bytes
+  const std::size_t at = out.size();
+  out.resize(at + pressure_cloud_point_bytes * width);
+  fill_pressure_cloud_data({out.data() + at, pressure_cloud_point_bytes * width}, points_m, pressure_N_per_mm2);
+  cdr.put(std::uint8_t{1});  // is_dense
 }
 
 void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh) {

@@ -36,6 +36,8 @@ TactileMcap::TactileMcap(OutputFile file, std::string sensor_name, const Mesh& m
   frames_channel_ = add_topic(mcap_, prefix + "/frames", tactile_state_message());
   contacts_channel_ = add_topic(mcap_, prefix + "/contacts", tactile_contacts_message());
   pressure_channel_ = add_topic(mcap_, prefix + "/pressure", pressure_image_message());
+  cloud_channel_ = add_topic(mcap_, prefix + "/pressure_cloud", pressure_cloud_message());
+  cloud_points_m_ = pressure_cloud_points_m(mesh);
   encode_mesh(message_, mesh);
   mcap_.write_message(mesh_channel, 0, start_time_ns, start_time_ns, message_);
 }
@@ -51,6 +53,8 @@ void TactileMcap::write(std::uint64_t frame, std::uint64_t time_ns, const FrameV
   mcap_.write_message(contacts_channel_, sequence, time_ns, time_ns, message_);
   encode_pressure_image(message_, stamp, frame_id_, frame, pressure_N_per_mm2);
   mcap_.write_message(pressure_channel_, sequence, time_ns, time_ns, message_);
+  encode_pressure_cloud(message_, stamp, frame_id_, cloud_points_m_, pressure_N_per_mm2);
+  mcap_.write_message(cloud_channel_, sequence, time_ns, time_ns, message_);
   ++frames_;
 }
 

@@ -101,10 +101,13 @@ void DdsOptions::validate() const {
 
 struct DdsPublisher::Impl {
   dds_entity_t participant = 0;
-  dds_entity_t frames = 0, contacts = 0, pressure = 0;
+  dds_entity_t frames = 0, contacts = 0, pressure = 0, cloud = 0;
   std::string sensor_name, frame_id{ros2_frame_id};  // mutable: the C types hold char*
   ContactMessages contacts_now, contacts_ended;
   std::vector<float> pressure_Pa;
+  std::vector<float> cloud_points_m;  ///< each triangle's centroid (pressure_cloud_points_m)
+  std::vector<std::uint8_t> cloud_data;
+  std::array<sensor_msgs_msg_dds__PointField_, pressure_cloud_fields.size()> cloud_fields{};
 
   Impl() = default;
   ~Impl() {
@@ -141,6 +144,7 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
   s.frames = s.writer(root + "/frames", &emit_msgs_msg_dds__TactileState__desc, 100);
   s.contacts = s.writer(root + "/contacts", &emit_msgs_msg_dds__TactileContacts__desc, 100);
   s.pressure = s.writer(root + "/pressure", &emit_msgs_msg_dds__PressureImage__desc, 100);
+  s.cloud = s.writer(root + "/pressure_cloud", &sensor_msgs_msg_dds__PointCloud2__desc, 10);
 
   std::vector<shape_msgs_msg_dds__MeshTriangle_> triangles(static_cast<std::size_t>(mesh.triangle_count()));
   for (Index t = 0; t < mesh.triangle_count(); ++t)
@@ -157,6 +161,12 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
   if (const dds_return_t r = dds_write(mesh_writer, &message); r < 0)
     throw IoError(std::string("dds: publishing the mesh: ") + dds_strretcode(r));
   s.pressure_Pa.resize(static_cast<std::size_t>(mesh.triangle_count()));
+  s.cloud_points_m = pressure_cloud_points_m(mesh);
+  s.cloud_data.resize(pressure_cloud_point_bytes * static_cast<std::size_t>(mesh.triangle_count()));
+  for (std::size_t f = 0; f < pressure_cloud_fields.size(); ++f) {
+    const PointFieldLayout& field = pressure_cloud_fields[f];
+    s.cloud_fields[f] = {const_cast<char*>(field.name), field.offset, field.datatype, field.count};  // read, not written
+  }
 }
 
 DdsPublisher::~DdsPublisher() = default;
@@ -191,12 +201,28 @@ void DdsPublisher::publish(const LiveFrame& frame) {
   image.frame = frame.sequence;
   image.pressure = borrowed<dds_sequence_float>(s.pressure_Pa.data(), triangles);
 
+  const bool whole_image = static_cast<std::size_t>(pressure.size()) == s.pressure_Pa.size();
+  if (whole_image) fill_pressure_cloud_data(s.cloud_data, s.cloud_points_m, pressure);
+  sensor_msgs_msg_dds__PointCloud2_ cloud{};
+  cloud.header = header;
+  cloud.height = 1;
+  cloud.width = static_cast<std::uint32_t>(s.pressure_Pa.size());
+  cloud.fields = borrowed<dds_sequence_sensor_msgs_msg_dds__PointField_>(s.cloud_fields.data(), s.cloud_fields.size());
+  cloud.is_bigendian = false;
+  cloud.point_step = static_cast<std::uint32_t>(pressure_cloud_point_bytes);
+  cloud.row_step = static_cast<std::uint32_t>(s.cloud_data.size());
+  cloud.data = borrowed<dds_sequence_uint8>(s.cloud_data.data(), s.cloud_data.size());
+  cloud.is_dense = true;
+
   for (const auto& [writer, sample, topic] :
        {std::tuple{s.frames, static_cast<const void*>(&state), "frames"},
         std::tuple{s.contacts, static_cast<const void*>(&contacts_message), "contacts"},
-        std::tuple{s.pressure, static_cast<const void*>(&image), "pressure"}})
+        std::tuple{s.pressure, static_cast<const void*>(&image), "pressure"},
+        std::tuple{whole_image ? s.cloud : 0, static_cast<const void*>(&cloud), "pressure_cloud"}}) {
+    if (writer == 0) continue;
     if (const dds_return_t r = dds_write(writer, sample); r < 0)
       throw IoError(std::string("dds: publishing ") + topic + ": " + dds_strretcode(r));
+  }
 }
 
 }  // namespace emit

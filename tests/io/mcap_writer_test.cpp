@@ -101,7 +101,7 @@ TEST(TactileMcap, TheHeadersCarryTheFrameNamed) {
   const std::string bytes = test::read_text(folder + "/run.mcap");
   std::size_t named = 0;
   for (std::size_t at = bytes.find("left_palm"); at != std::string::npos; at = bytes.find("left_palm", at + 1)) ++named;
-  EXPECT_EQ(named, 6u) << "two frames of three stamped messages";
+  EXPECT_EQ(named, 8u) << "two frames of four stamped messages (frames, contacts, pressure, its cloud)";
   EXPECT_EQ(bytes.find("emit_sheet"), std::string::npos);
   for (const char* refused : {"/left_palm", "", "left palm"})
     EXPECT_THROW(TactileMcap(folder + "/bad.mcap", "default 60 mm", mesh, 0, refused), InvalidInput) << refused;

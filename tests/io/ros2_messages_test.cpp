@@ -92,13 +92,59 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
   EXPECT_NE(tactile_contacts_message().definition.find("float64 orientation_rad "), std::string::npos);
   // Every definition names the types it uses once each, as ROS 2 bags carry them.
   for (const Ros2MessageType* type :
-       {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(), &mesh_message()}) {
+       {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(), &mesh_message(),
+        &pressure_cloud_message()}) {
     EXPECT_NE(type->name.find("/msg/"), std::string::npos);
     if (type != &mesh_message()) {
       EXPECT_NE(type->definition.find("MSG: std_msgs/Header"), std::string::npos) << type->name;
       EXPECT_NE(type->definition.find("MSG: builtin_interfaces/Time"), std::string::npos) << type->name;
     }
   }
+}
+
+// The pressure as RViz draws it, a sensor_msgs/PointCloud2: a point per triangle at its centroid
+// [m] with its pressure [Pa], fields x, y, z, pressure as float32 (datatype 7) at 0, 4, 8, 12.
+TEST(Ros2Messages, APressureCloudIsAPointPerTriangleAtItsCentroid) {
+  const Mesh mesh = test::strip_mesh(4, 2, 2, 1);  // 4 triangles
+  Vector pressure(4);
+  pressure << 0, 0.25, 0, 1e-6;
+  std::vector<std::uint8_t> out;
+  encode_pressure_cloud(out, {}, "f", pressure_cloud_points_m(mesh), pressure);
+  // After the header (16 bytes): height 16, width 20, the fields' count 24, then each field's
+  // name (length and text), offset (aligned to 4), datatype (1 byte) and count (aligned to 4):
+  // "x" 28..47, "y" 48..67, "z" 68..87, "pressure" 88..115; is_bigendian 116, point_step 120,
+  // row_step 124, the data's count 128 and its bytes from 132, is_dense after them.
+  ASSERT_EQ(out.size(), 4u + 132u + 16u * 4u + 1u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 16), 1u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 20), 4u);
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 24), 4u);
+  const std::array<std::pair<std::size_t, const char*>, 4> names{{{28, "x"}, {48, "y"}, {68, "z"}, {88, "pressure"}}};
+  for (std::size_t f = 0; f < 4; ++f) {
+    const auto [at, name] = names[f];
+    EXPECT_EQ(read_at<std::uint32_t>(out, 4 + at), std::strlen(name) + 1);
+    EXPECT_STREQ(reinterpret_cast<const char*>(out.data() + 4 + at + 4), name);
+    const std::size_t offset_at = (at + 4 + std::strlen(name) + 1 + 3) / 4 * 4;
+    EXPECT_EQ(read_at<std::uint32_t>(out, 4 + offset_at), 4 * f);
+    EXPECT_EQ(out[4 + offset_at + 4], 7);  // FLOAT32
+    EXPECT_EQ(read_at<std::uint32_t>(out, 4 + offset_at + 8), 1u);
+  }
+  EXPECT_EQ(out[4 + 116], 0);                              // little-endian
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 120), 16u);    // point_step
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 124), 64u);    // row_step
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 128), 64u);    // the data's bytes
+  for (Index t = 0; t < 4; ++t) {
+    const Vector3 centroid_m = 1e-3 / 3 *
+                               (mesh.nodes_mm.row(mesh.triangles(t, 0)) + mesh.nodes_mm.row(mesh.triangles(t, 1)) +
+                                mesh.nodes_mm.row(mesh.triangles(t, 2)))
+                                   .transpose();
+    const std::size_t at = 4 + 132 + 16 * static_cast<std::size_t>(t);
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_EQ(read_at<float>(out, at + 4 * static_cast<std::size_t>(axis)), static_cast<float>(centroid_m[axis]));
+    EXPECT_EQ(read_at<float>(out, at + 12), static_cast<float>(1e6 * pressure[t]));  // Pa
+  }
+  EXPECT_EQ(out.back(), 1);  // is_dense
+  EXPECT_EQ(pressure_cloud_message().name, "sensor_msgs/msg/PointCloud2");
+  EXPECT_NE(pressure_cloud_message().definition.find("MSG: sensor_msgs/PointField\n"), std::string::npos);
 }
 
 // A tracked touch (frame/contact_tracker.hpp) is named by its id, which stays while the touch
@@ -128,13 +174,15 @@ TEST(Ros2Messages, EncodingAFrameAllocatesNothingOnceWarm) {
   Frame volts = Frame::Constant(16, 16, 0.5);
   std::vector<Contact> contacts(3);
   const Vector pressure = Vector::Constant(5000, 0.01);
+  const std::vector<float> cloud_points(3 * 5000, 0.01f);
   std::vector<std::uint8_t> out;
   encode_tactile_state(out, {}, "emit_sheet", "default 60 mm", frame_view(volts));
-  encode_pressure_image(out, {}, "emit_sheet", 1, pressure);  // the largest: the buffer grows to it
+  encode_pressure_cloud(out, {}, "emit_sheet", cloud_points, pressure);  // the largest: the buffer grows to it
   const test::AllocationCounter counter;
   encode_tactile_state(out, {}, "emit_sheet", "default 60 mm", frame_view(volts));
   encode_tactile_contacts(out, {}, "emit_sheet", 1, contacts);
   encode_pressure_image(out, {}, "emit_sheet", 1, pressure);
+  encode_pressure_cloud(out, {}, "emit_sheet", cloud_points, pressure);
   EXPECT_EQ(counter.count(), 0);
 }
 

@@ -107,7 +107,8 @@ const { channels, topics } = decode(whole.records);
 const names = [...channels.values()].map((c) => `${c.topic} ${c.schema.name} ${c.schema.encoding} ${c.channel.messageEncoding}`);
 check(JSON.stringify(names.sort()) === JSON.stringify([
   "/emit/contacts emit_msgs/msg/TactileContacts ros2msg cdr", "/emit/frames emit_msgs/msg/TactileState ros2msg cdr",
-  "/emit/mesh shape_msgs/msg/Mesh ros2msg cdr", "/emit/pressure emit_msgs/msg/PressureImage ros2msg cdr"]),
+  "/emit/mesh shape_msgs/msg/Mesh ros2msg cdr", "/emit/pressure emit_msgs/msg/PressureImage ros2msg cdr",
+  "/emit/pressure_cloud sensor_msgs/msg/PointCloud2 ros2msg cdr"]),
   `topics and types: ${names}`);
 
 // The mesh: the 60 x 60 mm sheet's triangles cover 3.6e-3 m^2.
@@ -181,6 +182,28 @@ topics["/emit/pressure"].forEach((p, f) => {
   check(p.pressure.length === mesh.triangles.length, `pressure ${f}: one value per triangle`);
   const peak = Math.max(...p.pressure), expected = Math.max(...contacts[f].contacts.map((c) => c.peak_pressure));
   check(close(peak, expected, 1e-6), `pressure ${f}: peak ${peak} Pa against the contacts' ${expected}`);
+});
+
+// The pressure as RViz draws it: a PointCloud2 of a point per triangle, at its centroid [m], its
+// pressure [Pa] the image's, bit for bit (float32 both).
+const clouds = topics["/emit/pressure_cloud"];
+check(clouds.length === topics["/emit/pressure"].length, `${clouds.length} pressure clouds for ${topics["/emit/pressure"].length} images`);
+clouds.forEach((cloud, f) => {
+  const image = topics["/emit/pressure"][f].pressure, n = mesh.triangles.length;
+  check(cloud.height === 1 && cloud.width === n && cloud.point_step === 16 && cloud.row_step === 16 * n &&
+        cloud.data.length === 16 * n && !cloud.is_bigendian && cloud.is_dense, `cloud ${f}: its layout`);
+  check(JSON.stringify(cloud.fields.map((p) => [p.name, p.offset, p.datatype, p.count])) ===
+        JSON.stringify([["x", 0, 7, 1], ["y", 4, 7, 1], ["z", 8, 7, 1], ["pressure", 12, 7, 1]]), `cloud ${f}: its fields`);
+  const view = new DataView(cloud.data.buffer, cloud.data.byteOffset, cloud.data.byteLength);
+  let same = 0, placed = 0;
+  for (let t = 0; t < n; ++t) {
+    same += view.getFloat32(16 * t + 12, true) === Math.fround(image[t]);
+    const corners = Array.from(mesh.triangles[t].vertex_indices, (v) => mesh.vertices[v]);
+    const centroid = ["x", "y", "z"].map((axis) => corners.reduce((sum, p) => sum + p[axis], 0) / 3);
+    placed += centroid.every((v, axis) => Math.abs(view.getFloat32(16 * t + 4 * axis, true) - v) <= 1e-7);
+  }
+  check(same === n, `cloud ${f}: ${same} of ${n} pressures are the image's`);
+  check(placed === n, `cloud ${f}: ${placed} of ${n} points at their triangles' centroids`);
 });
 
 // Cut short anywhere, the file is reported incomplete, and what was read is what was written.

@@ -1,5 +1,6 @@
 // A Cyclone DDS subscriber, as a ROS 2 node with the Cyclone RMW subscribes, for `emit live --dds`:
-// it joins the domain, subscribes to rt/PREFIX/contacts and rt/PREFIX/mesh with ROS 2's type
+// it joins the domain, subscribes to every topic emit publishes (rt/PREFIX/contacts, /mesh, /frames,
+// /pressure, /pressure_cloud) with ROS 2's type
 // names, starts `emit live … --dds PREFIX --dds-domain D` and checks what arrives: every frame's
 // contacts, in order, none lost (the source's frame numbers run on by one), with the right
 // contents (a held press found where it is; nothing on the twin's untouched frames; every field of
@@ -22,11 +23,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -194,7 +197,12 @@ int main(int argc, char** argv) {
   const dds_entity_t contacts =
       reader(participant, "rt/" + prefix + "/contacts", &emit_msgs_msg_dds__TactileContacts__desc);
   const dds_entity_t mesh = reader(participant, "rt/" + prefix + "/mesh", &shape_msgs_msg_dds__Mesh__desc);
-  if (contacts < 0 || mesh < 0) return fail("creating the readers");
+  const dds_entity_t states = reader(participant, "rt/" + prefix + "/frames", &emit_msgs_msg_dds__TactileState__desc);
+  const dds_entity_t images =
+      reader(participant, "rt/" + prefix + "/pressure", &emit_msgs_msg_dds__PressureImage__desc);
+  const dds_entity_t clouds =
+      reader(participant, "rt/" + prefix + "/pressure_cloud", &sensor_msgs_msg_dds__PointCloud2__desc);
+  if (contacts < 0 || mesh < 0 || states < 0 || images < 0 || clouds < 0) return fail("creating the readers");
 
   std::vector<std::string> args = {emit,           "live",
                                    "--dds",        prefix,
@@ -286,13 +294,69 @@ int main(int argc, char** argv) {
   }
   if (!exited) waitpid(child, &status, 0);
 
+  // The other types published every frame, decoded: the raw frame (N × N volts), the pressure
+  // image (a float per triangle) and its cloud (a point per triangle, the image's pressure), each
+  // frame's three matched by their header's stamp.
+  std::map<std::uint64_t, std::vector<float>> image_of, cloud_of;  // by stamp [ns]
+  long state_count = 0;
+  const auto stamp_of = [](const std_msgs_msg_dds__Header_& h) {
+    return static_cast<std::uint64_t>(h.stamp.sec) * 1'000'000'000u + h.stamp.nanosec;
+  };
+  for (auto waited = std::chrono::steady_clock::now();
+       (state_count < frames || static_cast<long>(image_of.size()) < frames ||
+        static_cast<long>(cloud_of.size()) < frames) &&
+       std::chrono::steady_clock::now() - waited < std::chrono::seconds(5);) {
+    void* samples[16] = {};
+    dds_sample_info_t infos[16];
+    int n = dds_take(states, samples, infos, 16, 16);
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      const auto* m = static_cast<const emit_msgs_msg_dds__TactileState_*>(samples[i]);
+      ++state_count;
+      if (problem.empty() && (m->sensors._length != 1 || m->sensors._buffer[0].values._length != 16 * 16))
+        problem = "a raw frame without one sensor's 16 x 16 readings";
+    }
+    if (n > 0) dds_return_loan(states, samples, n);
+    n = dds_take(images, samples, infos, 16, 16);
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      const auto* m = static_cast<const emit_msgs_msg_dds__PressureImage_*>(samples[i]);
+      image_of[stamp_of(m->header)].assign(m->pressure._buffer, m->pressure._buffer + m->pressure._length);
+    }
+    if (n > 0) dds_return_loan(images, samples, n);
+    n = dds_take(clouds, samples, infos, 16, 16);
+    for (int i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      const auto* m = static_cast<const sensor_msgs_msg_dds__PointCloud2_*>(samples[i]);
+      const bool laid_out = m->height == 1 && m->point_step == 16 && m->row_step == 16 * m->width &&
+                            m->data._length == 16 * m->width && !m->is_bigendian && m->fields._length == 4 &&
+                            std::string(m->fields._buffer[3].name) == "pressure" && m->fields._buffer[3].offset == 12 &&
+                            m->fields._buffer[3].datatype == 7;
+      if (!laid_out && problem.empty()) problem = "a pressure cloud not laid out as x, y, z, pressure float32";
+      std::vector<float>& pressure = cloud_of[stamp_of(m->header)];
+      pressure.resize(m->width);
+      for (std::uint32_t k = 0; laid_out && k < m->width; ++k)
+        std::memcpy(&pressure[k], m->data._buffer + 16 * k + 12, 4);
+    }
+    if (n > 0) dds_return_loan(clouds, samples, n);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  long clouds_matched = 0;
+  for (const auto& [stamp, pressure] : cloud_of) {
+    const auto image = image_of.find(stamp);
+    if (image != image_of.end() && image->second == pressure && !pressure.empty()) ++clouds_matched;
+    else if (problem.empty()) problem = "a pressure cloud whose pressures are not its frame's image's";
+  }
+
   // The mesh, kept for late subscribers (transient-local): the 60 × 60 mm sheet, 3.6e-3 m².
   double area_m2 = 0;
+  std::uint32_t mesh_triangles = 0;
   {
     void* samples[1] = {};
     dds_sample_info_t infos[1];
     if (dds_take(mesh, samples, infos, 1, 1) == 1 && infos[0].valid_data) {
       const auto* m = static_cast<const shape_msgs_msg_dds__Mesh_*>(samples[0]);
+      mesh_triangles = m->triangles._length;
       for (std::uint32_t t = 0; t < m->triangles._length; ++t) {
         const std::uint32_t* v = m->triangles._buffer[t].vertex_indices;
         const auto& a = m->vertices._buffer[v[0]];
@@ -359,11 +423,13 @@ int main(int argc, char** argv) {
   std::printf(
       "dds_check: %zu of %ld frames' contacts received, %ld out of order or missing between, first %llu; "
       "latency p50 %.3f ms, p95 %.3f ms, max %.3f ms; mesh %.6g m^2; %ld contact fields (outlines' points "
-      "included) as in the JSON Lines; %ld touched frames' contact outlined%s\n",
+      "included) as in the JSON Lines; %ld touched frames' contact outlined%s; %ld raw frames, %zu pressure images, "
+      "%ld pressure clouds as their images\n",
       numbers.size(), frames, out_of_order, numbers.empty() ? 0ULL : static_cast<unsigned long long>(numbers[0]),
       at(0.5), at(0.95), sorted.empty() ? 0.0 : sorted.back(), area_m2, compared, outlined,
       std::isfinite(bar_deg) ? (", " + std::to_string(elongated) + " touched frames' contact the bar's ellipse").c_str()
-                             : "");
+                             : "",
+      state_count, image_of.size(), clouds_matched);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return fail("emit live exited with " + std::to_string(status));
   if (static_cast<long>(numbers.size()) != frames) return fail("frames lost");
   if (out_of_order != 0) return fail("frames out of order");
@@ -374,5 +440,9 @@ int main(int argc, char** argv) {
   if (outlined != touched) return fail("not every touched frame's contact outlined");
   if (std::isfinite(bar_deg) && elongated != touched) return fail("not every touched frame's contact the bar's");
   if (std::abs(area_m2 - 3.6e-3) > 1e-9) return fail("the mesh's area");
+  if (state_count != frames || static_cast<long>(image_of.size()) != frames || clouds_matched != frames)
+    return fail("not every frame's raw frame, pressure image and pressure cloud received");
+  for (const auto& [stamp, pressure] : image_of)
+    if (pressure.size() != mesh_triangles) return fail("a pressure image without a value per triangle of the mesh");
   return 0;
 }

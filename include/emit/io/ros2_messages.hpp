@@ -18,11 +18,15 @@
 ///   emit_msgs/msg/TactileContacts  a frame's contacts, strongest first (none: an empty list)
 ///   emit_msgs/msg/PressureImage    the pressure per triangle of the mesh [Pa]
 ///   shape_msgs/msg/Mesh            the reconstruction's mesh [m], once
+///   sensor_msgs/msg/PointCloud2    the pressure as RViz shows it: a point per triangle at its
+///                                  centroid [m] with the field "pressure" [Pa] (RViz's PointCloud2
+///                                  display, colour transformer Intensity, channel "pressure")
 ///
 /// Encoding reuses the caller's buffer: once it has grown to the largest message, it allocates
 /// nothing (the per-frame path).
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,6 +68,24 @@ const Ros2MessageType& tactile_state_message();
 const Ros2MessageType& tactile_contacts_message();
 const Ros2MessageType& pressure_image_message();
 const Ros2MessageType& mesh_message();
+const Ros2MessageType& pressure_cloud_message();
+
+/// A sensor_msgs/PointField: how the pressure cloud lays out each point's bytes.
+struct PointFieldLayout {
+  const char* name;
+  std::uint32_t offset;
+  std::uint8_t datatype;  ///< sensor_msgs/PointField's FLOAT32 = 7
+  std::uint32_t count;
+};
+/// x, y, z [m] and pressure [Pa], float32 each, little-endian: 16 bytes a point.
+inline constexpr std::array<PointFieldLayout, 4> pressure_cloud_fields{
+    {{"x", 0, 7, 1}, {"y", 4, 7, 1}, {"z", 8, 7, 1}, {"pressure", 12, 7, 1}}};
+inline constexpr std::size_t pressure_cloud_point_bytes = 16;
+/// The cloud's points: each triangle's centroid [m], x, y, z after each other (offline, once).
+std::vector<float> pressure_cloud_points_m(const Mesh& mesh);
+/// The cloud's data bytes (pressure_cloud_point_bytes a point) into `data`, sized for every point.
+void fill_pressure_cloud_data(std::span<std::uint8_t> data, std::span<const float> points_m,
+                              const Vector& pressure_N_per_mm2);
 
 /// A contact's fields as the messages carry them (emit_msgs/TactileContact), in SI units: the
 /// one conversion of emit's contacts, for the CDR here and for DDS (live/dds_publisher.hpp).
@@ -94,6 +116,9 @@ void encode_tactile_contacts(std::vector<std::uint8_t>& out, Ros2Stamp stamp, st
                              const std::vector<Contact>* ended = nullptr);
 void encode_pressure_image(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
                            std::uint64_t frame, const Vector& pressure_N_per_mm2);
+/// `points_m`: pressure_cloud_points_m of the mesh whose triangles `pressure_N_per_mm2` covers.
+void encode_pressure_cloud(std::vector<std::uint8_t>& out, Ros2Stamp stamp, std::string_view frame_id,
+                           std::span<const float> points_m, const Vector& pressure_N_per_mm2);
 void encode_mesh(std::vector<std::uint8_t>& out, const Mesh& mesh);
 
 }  // namespace emit

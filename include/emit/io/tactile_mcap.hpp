@@ -10,6 +10,7 @@
 ///   /emit/contacts  emit_msgs/msg/TactileContacts
 ///   /emit/pressure  emit_msgs/msg/PressureImage
 ///   /emit/mesh      shape_msgs/msg/Mesh
+///   /emit/pressure_cloud  sensor_msgs/msg/PointCloud2 (the pressure as RViz and Foxglove draw it)
 ///
 /// Written through PATH.partial, renamed on close() (io/mcap_writer.hpp).
 #include <cstdint>
@@ -52,7 +53,8 @@ class TactileMcap {
  private:
   McapWriter mcap_;
   std::string sensor_name_, frame_id_;
-  std::uint16_t frames_channel_ = 0, contacts_channel_ = 0, pressure_channel_ = 0;
+  std::uint16_t frames_channel_ = 0, contacts_channel_ = 0, pressure_channel_ = 0, cloud_channel_ = 0;
+  std::vector<float> cloud_points_m_;  ///< each triangle's centroid (pressure_cloud_points_m)
   std::vector<std::uint8_t> message_;
   std::uint64_t frames_ = 0;
 };

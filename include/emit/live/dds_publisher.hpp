@@ -2,11 +2,12 @@
 /// \file dds_publisher.hpp
 /// `emit live --dds PREFIX [--dds-domain N]`: every reconstructed frame published on DDS (Cyclone
 /// DDS) the way ROS 2 publishes, so that a ROS 2 node with the Cyclone RMW subscribes to it with
-/// no bridge: topics `rt/PREFIX/frames`, `rt/PREFIX/contacts`, `rt/PREFIX/pressure` and
-/// `rt/PREFIX/mesh` (ROS's `/PREFIX/…`), types `emit_msgs::msg::dds_::TactileState_` and so on
-/// (idl/emit_ros2.idl: the messages MCAP recordings carry, io/ros2_messages.hpp), stamped with the
-/// host's clock as published. QoS: reliable, transient-local, the last 100 frames kept (the mesh:
-/// the last one), so a ROS subscriber with the default QoS (reliable, volatile) matches, and one
+/// no bridge: topics `rt/PREFIX/frames`, `rt/PREFIX/contacts`, `rt/PREFIX/pressure`,
+/// `rt/PREFIX/pressure_cloud` (sensor_msgs/PointCloud2, for RViz) and `rt/PREFIX/mesh` (ROS's
+/// `/PREFIX/…`), types `emit_msgs::msg::dds_::TactileState_` and so on (idl/emit_ros2.idl: the
+/// messages MCAP recordings carry, io/ros2_messages.hpp), stamped with the host's clock as
+/// published. QoS: reliable, transient-local, the last 100 frames kept (the mesh: the last one;
+/// the pressure cloud: 10), so a ROS subscriber with the default QoS (reliable, volatile) matches, and one
 /// that starts late, or asks for transient-local, still gets the recent frames and the mesh.
 /// A skin spread over several computers is assembled the same way: each publishes under its
 /// prefix, and DDS discovery finds them.
