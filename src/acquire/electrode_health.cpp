@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "emit/acquire/electrode_swap.hpp"
 #include "emit/core/errors.hpp"
 #include "emit/sensor/adc.hpp"
 
@@ -13,6 +14,9 @@ namespace {
 
 /// What "stuck at a rail" allows: the ADC's noise (5 σ) or two steps, whichever is larger.
 double rail_tolerance_V(const AdcSpec& adc) { return std::max(2 * adc_step_V(adc), 5 * adc.noise_V); }
+
+/// No swap is looked for with so few electrodes: no border to speak of.
+constexpr Index min_swap_electrodes = 4;
 
 /// A frame says something about the electrodes only if a press raised some reading well clear
 /// of the rail tolerance.
@@ -36,7 +40,8 @@ ElectrodeHealthTally::ElectrodeHealthTally(int electrode_count, const AdcSpec& a
     : adc_(adc),
       tolerance_V_(rail_tolerance_V(adc)),
       zero_columns_(static_cast<std::size_t>(electrode_count), 0),
-      full_rows_(static_cast<std::size_t>(electrode_count), 0) {}
+      full_rows_(static_cast<std::size_t>(electrode_count), 0),
+      swap_votes_(static_cast<std::size_t>(electrode_count) * static_cast<std::size_t>(electrode_count), 0) {}
 
 void ElectrodeHealthTally::add(const Frame& frame) {
   if (!frame.allFinite() || !has_signal(frame, tolerance_V_)) return;  // a frame with a masked reading says less
@@ -45,12 +50,32 @@ void ElectrodeHealthTally::add(const Frame& frame) {
     zero_columns_[static_cast<std::size_t>(e)] += column_at_zero(frame, e, tolerance_V_);
     full_rows_[static_cast<std::size_t>(e)] += row_at_full_scale(frame, e, adc_, tolerance_V_);
   }
+  if (frame.rows() <= min_swap_electrodes) return;
+  const SwapCandidate swap = best_swap(frame);
+  if (swap.a >= 0 && swap.roughness_ratio < swap_roughness_ratio)
+    ++swap_votes_[static_cast<std::size_t>(swap.a * frame.rows() + swap.b)];
 }
 
 void ElectrodeHealthTally::reset() {
   with_signal_ = 0;
   std::fill(zero_columns_.begin(), zero_columns_.end(), 0);
   std::fill(full_rows_.begin(), full_rows_.end(), 0);
+  std::fill(swap_votes_.begin(), swap_votes_.end(), 0);
+}
+
+std::vector<SwappedElectrodes> ElectrodeHealthTally::swapped() const {
+  std::vector<SwappedElectrodes> swapped;
+  if (with_signal_ < min_swap_frames || !dead().empty()) return swapped;
+  const auto n = static_cast<int>(zero_columns_.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) {
+      const int votes = swap_votes_[static_cast<std::size_t>(a * n + b)];
+      if (votes >= swap_vote_fraction * with_signal_)
+        swapped.push_back({a, b,
+                           "their readings fit each other's places along the border in " + std::to_string(votes) +
+                               " of " + std::to_string(with_signal_) + " frames with signal"});
+    }
+  return swapped;
 }
 
 std::vector<DeadElectrode> ElectrodeHealthTally::dead() const {

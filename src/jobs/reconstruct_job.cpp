@@ -55,6 +55,7 @@ namespace {
 struct FramesSurvey {
   long frames = 0;
   std::vector<DeadElectrode> dead;
+  std::vector<SwappedElectrodes> swapped;
   long readings_masked = 0, frames_with_masked = 0;
 };
 
@@ -76,6 +77,7 @@ FramesSurvey survey_frames(const std::string& path, const Sensor& sensor, int N)
   }
   if (survey.frames == 0) throw InvalidInput(path + ": no frames (an empty file?)");
   survey.dead = health.dead();
+  survey.swapped = health.swapped();
   return survey;
 }
 
@@ -115,6 +117,9 @@ ReconstructReport run_reconstruct_job(const ReconstructJob& job, const Progress&
   PipelineOptions options{job.method, job.lambda2, job.cache_dir, {}};
   options.excluded = detail::leave_out_dead(survey.dead, N, progress);
   report.dead_electrodes = options.excluded;
+  for (const SwappedElectrodes& w : survey.swapped)
+    progress.warn("electrodes " + std::to_string(w.a) + " and " + std::to_string(w.b) + " look swapped: " + w.reason +
+                  " (check the wiring)");
 
   const auto start = std::chrono::steady_clock::now();
   Pipeline pipeline(sensor, options, calibration, progress.stage, job.calibration_path);

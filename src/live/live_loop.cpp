@@ -124,6 +124,7 @@ const std::vector<Contact>* LiveLoop::handle(const SourceFrame& frame) {
   health_.add(frame.volts);
   if (health_.frames_with_signal() >= health_window_frames) {
     dead_electrodes_ = health_.dead();
+    swapped_electrodes_ = health_.swapped();
     health_.reset();
   }
   stats_.frames_with_masked += masked > 0 ? 1 : 0;
@@ -188,6 +189,7 @@ void LiveLoop::publish(LiveFrame& frame) {
   const FitResult* fitted = reconstructor_.fit_result();
   frame.misfit_mV = fitted && !frame.capturing_reference ? 1e3 * fitted->rms_misfit_V : -1;
   frame.dead_electrodes = &dead_electrodes_;
+  frame.swapped_electrodes = &swapped_electrodes_;
   for (FramePublisher* publisher : publishers_) publisher->publish(frame);
 }
 

@@ -107,6 +107,10 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
   json dead = json::array();
   if (frame.dead_electrodes)
     for (const DeadElectrode& d : *frame.dead_electrodes) dead.push_back({{"electrode", d.electrode}, {"reason", d.reason}});
+  json swapped = json::array();
+  if (frame.swapped_electrodes)
+    for (const SwappedElectrodes& w : *frame.swapped_electrodes)
+      swapped.push_back({{"electrodes", {w.a, w.b}}, {"reason", w.reason}});
   const Vector& pressure = *frame.pressure_N_per_mm2;
   const Index readings = frame.volts ? frame.volts->size() : 0;
   std::string header = json{{"type", "frame"},
@@ -122,6 +126,7 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
                             {"misfit_mV", frame.misfit_mV},
                             {"readings_masked", frame.readings_masked},
                             {"dead_electrodes", dead},
+                            {"swapped_electrodes", swapped},
                             {"electrode_count", frame.volts ? frame.volts->rows() : 0},
                             {"max_pressure_N_per_mm2", pressure.size() ? pressure.maxCoeff() : 0.0},
                             {"contacts", contacts}}

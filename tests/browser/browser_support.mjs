@@ -83,14 +83,22 @@ export function decodePng(buffer) {
 }
 
 /// A copy of the recording `from` (docs/recording.md: a 32-byte header, then packets of
-/// 20 + 2·N² bytes) as if its board had taken a frame every `interval_us`: each packet's
-/// timestamp rewritten and its CRC-32 (zlib's, over everything after the sync) made again, so
-/// `emit live --source file:…` replays it at that pace. Returns the number of frames.
-export function retimeRecording(from, to, interval_us) {
+/// 20 + 2·N² bytes) as if its board had taken a frame every `interval_us`, and, given `swap`
+/// [a, b], as if electrodes a and b had been wired in each other's places (their rows and
+/// columns of each payload exchanged): each packet's timestamp rewritten and its CRC-32 (zlib's,
+/// over everything after the sync) made again, so `emit live --source file:…` replays it so.
+/// Returns the number of frames.
+export function retimeRecording(from, to, interval_us, swap = null) {
   const bytes = Buffer.from(fs.readFileSync(from)), N = bytes.readUInt16LE(12), size = 20 + 2 * N * N;
+  const wired = (k) => (swap && k === swap[0] ? swap[1] : swap && k === swap[1] ? swap[0] : k);
   let frames = 0;
   for (let at = 32; at + size <= bytes.length; at += size, ++frames) {
     bytes.writeUInt32LE((frames * interval_us) >>> 0, at + 12);
+    if (swap) {
+      const payload = Buffer.from(bytes.subarray(at + 16, at + 16 + 2 * N * N));
+      for (let g = 0; g < N; ++g)
+        for (let m = 0; m < N; ++m) bytes.writeUInt16LE(payload.readUInt16LE(2 * (wired(g) * N + wired(m))), at + 16 + 2 * (g * N + m));
+    }
     bytes.writeUInt32LE(zlib.crc32(bytes.subarray(at + 2, at + size - 4)), at + size - 4);
   }
   fs.writeFileSync(to, bytes);

@@ -11,7 +11,7 @@
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
-import { checkInstrument, countPixels, decodePng, failer, launchChromium, retimeRecording, startEmit,
+import { checkInstrument, countPixels, decodePng, failer, launchChromium, near, retimeRecording, startEmit,
          stoppedEmitSummary, waitForForceTrace } from "./browser_support.mjs";
 
 const [emitPath, screenshotPath = path.join(os.tmpdir(), "emit-viewer-test.png")] = process.argv.slice(2);
@@ -139,8 +139,10 @@ console.log(`viewer_test: ${await stoppedEmitSummary(emit, fail)}`);
 
 // The page's own work at 100 frames/s: the run's recording replayed at that pace in a loop, with
 // the paper's method (fast under the sanitizers too); over 5 s the page takes every frame and
-// spends at most 2 ms of its own per frame (decoding, remembering and, at the display's pace, drawing).
-const frames = retimeRecording(recording, paced, 1e6 / pace_frames_per_s);
+// spends at most 2 ms of its own per frame (decoding, remembering and, at the display's pace,
+// drawing). Its electrodes 4 and 11 exchanged as if so wired: the page names them.
+const swap = [4, 11];
+const frames = retimeRecording(recording, paced, 1e6 / pace_frames_per_s, swap);
 const replay = startEmit(emitPath, ["--source", `file:${paced}`, "--loop", "--method", "paper"], startupSeconds);
 const profile2 = fs.mkdtempSync(path.join(os.tmpdir(), "emit-chromium-"));
 try {
@@ -160,6 +162,16 @@ try {
               `drew ${drawRate.toFixed(1)} a second, its own work ${perFrame.toFixed(3)} ms a frame (at most ${most_work_ms})`);
   if (rate < 0.9 * pace_frames_per_s) fail(`the page took ${rate.toFixed(1)} frames/s of ${pace_frames_per_s}`);
   if (perFrame > most_work_ms) fail(`the page's own work is ${perFrame.toFixed(3)} ms a frame, above ${most_work_ms} ms`);
+  // The swap named, and the two electrodes' rows and columns of the raw frame outlined in orange.
+  const named = new RegExp(`^electrodes ${swap[0]} and ${swap[1]} look swapped: their readings fit each other's places`);
+  await page.waitForFunction((pattern) => new RegExp(pattern).test(document.getElementById("health").textContent),
+                             named.source, { timeout: 60000 });
+  await page.click("#pause");
+  const raw = await page.evaluate(() => window.emitViewer.geometry().raw);
+  const image = decodePng(await page.screenshot());
+  const outline = swap.map((e) => image.rgb(raw.x + 1, raw.y + (e + 0.5) * raw.cell));
+  console.log(`viewer_test: "${await page.textContent("#health")}"; raw rows ${swap} outlined rgb(${outline[0]}), rgb(${outline[1]})`);
+  if (!outline.every((rgb) => near(rgb, [251, 140, 0], 40))) fail(`the swapped electrodes' rows are not outlined in orange: ${outline}`);
 } finally {
   if (context) await context.close();
   fs.rmSync(profile2, { recursive: true, force: true });

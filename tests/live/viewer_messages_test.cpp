@@ -135,9 +135,11 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   Frame volts(2, 2);  // ground l (row), sense m (column)
   volts << 0.0, 1.5, 0.25, 0.0;
   const std::vector<DeadElectrode> dead{{1, "reads 0 V as the sensed electrode in all 25 frames with signal"}};
+  const std::vector<SwappedElectrodes> swapped{{0, 1, "their readings fit each other's places"}};
   LiveFrame frame;
   frame.volts = &volts;
   frame.dead_electrodes = &dead;
+  frame.swapped_electrodes = &swapped;
   frame.frames_missed = 3;
   frame.misfit_mV = 0.75;
   frame.board_time_s = 12.5;
@@ -172,6 +174,9 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   ASSERT_EQ(header["dead_electrodes"].size(), 1u);
   EXPECT_EQ(header["dead_electrodes"][0]["electrode"], 1);
   EXPECT_EQ(header["dead_electrodes"][0]["reason"], dead[0].reason);
+  ASSERT_EQ(header["swapped_electrodes"].size(), 1u);
+  EXPECT_EQ(header["swapped_electrodes"][0]["electrodes"], (nlohmann::json{0, 1}));
+  EXPECT_EQ(header["swapped_electrodes"][0]["reason"], swapped[0].reason);
   float values[7];
   std::memcpy(values, message.data() + 4 + header_bytes, sizeof values);
   EXPECT_EQ(values[0], 0.0f);

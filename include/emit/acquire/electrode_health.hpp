@@ -1,11 +1,12 @@
 #pragma once
 /// \file electrode_health.hpp
-/// Dead electrodes, told from the frames. A disconnected electrode m reads ~0 V as the sensed
+/// Dead and swapped electrodes, told from the frames. A disconnected electrode m reads ~0 V as the sensed
 /// electrode whatever is pressed (its ADC input is pulled down); as the grounded one it grounds
 /// nothing, so the pressed sheet rises to the drive and its whole row reads full scale. Either,
 /// in every frame that has signal, marks the electrode dead: the reconstruction then leaves out
 /// all its measurements (as ground and as sense) and keeps the rest. Frames with a value that is
-/// not finite are not counted.
+/// not finite are not counted. Two electrodes wired in each other's places show in the frames'
+/// shape along the border (electrode_swap.hpp).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -20,12 +21,22 @@ struct DeadElectrode {
   std::string reason;  ///< e.g. "reads 0 V as the sensed electrode in all 25 frames with signal"
 };
 
+/// Two electrodes wired in each other's places (electrode_swap.hpp).
+struct SwappedElectrodes {
+  int a = -1, b = -1;  ///< a < b
+  std::string reason;  ///< e.g. "their readings fit each other's places along the border in 24 of 25 frames with signal"
+};
+
 /// find_dead_electrodes one frame at a time, for frames read as a stream.
 class ElectrodeHealthTally {
  public:
   ElectrodeHealthTally(int electrode_count, const AdcSpec& adc);
   void add(const Frame& frame);
   std::vector<DeadElectrode> dead() const;
+  /// Pairs that best_swap (electrode_swap.hpp) named, below swap_roughness_ratio, in a
+  /// swap_vote_fraction of the frames with signal at least (min_swap_frames at least); none while
+  /// an electrode is dead (its zeros are no border's shape). With 4 electrodes or fewer: none.
+  std::vector<SwappedElectrodes> swapped() const;
   /// The frames with signal added since construction or the last reset().
   int frames_with_signal() const { return with_signal_; }
   /// Forget what was added (a window of frames: the live viewer's health). Allocates nothing.
@@ -36,6 +47,7 @@ class ElectrodeHealthTally {
   double tolerance_V_;
   int with_signal_ = 0;
   std::vector<int> zero_columns_, full_rows_;
+  std::vector<int> swap_votes_;  ///< N × N: frames whose best exchange was (a, b), at a·N + b
 };
 
 /// Electrodes dead in every frame with signal. "At a rail" allows max(2 ADC steps, 5 σ of the

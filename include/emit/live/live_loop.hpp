@@ -43,6 +43,8 @@ struct LiveFrame {
   std::size_t readings_masked = 0;             ///< in this frame (LiveStats::readings_masked)
   /// Electrodes dead in the last window of frames with signal (LiveLoop's health window); never null.
   const std::vector<DeadElectrode>* dead_electrodes = nullptr;
+  /// Pairs wired in each other's places, found over the same window; never null.
+  const std::vector<SwappedElectrodes>* swapped_electrodes = nullptr;
 };
 
 /// Receives every frame the loop handles (the viewer's server). Called on the loop's thread; it
@@ -172,6 +174,7 @@ class LiveLoop {
   /// published until the next window is full.
   ElectrodeHealthTally health_;
   std::vector<DeadElectrode> dead_electrodes_;
+  std::vector<SwappedElectrodes> swapped_electrodes_;
   LiveStats stats_;
   std::uint64_t handled_ = 0;
   std::uint64_t last_sequence_ = 0;  ///< of the last frame handled (valid once handled_ > 0)

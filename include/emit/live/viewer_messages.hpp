@@ -16,7 +16,8 @@
 /// A frame, binary: a uint32 (little-endian) byte count n, n bytes of JSON
 ///   {"type": "frame", "index", "sequence", "board_time_s", "capturing_baseline", "baseline_captures",
 ///    "commands", "frames_per_s", "latency_ms", "frames_missed", "misfit_mV" (< 0: no fit),
-///    "readings_masked", "dead_electrodes": [{"electrode", "reason"}], "electrode_count" N,
+///    "readings_masked", "dead_electrodes": [{"electrode", "reason"}],
+///    "swapped_electrodes": [{"electrodes": [a, b], "reason"}], "electrode_count" N,
 ///    "max_pressure_N_per_mm2",
 ///    "contacts": [{"id" (the tracker's; -1: untracked), "x_mm", "y_mm", "area_mm2", "pressure_N_per_mm2", "force_N"}]}
 /// with, for a contact with an outline, its ellipse: "semi_major_mm", "semi_minor_mm",
