@@ -129,7 +129,8 @@ void add_live_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--serve", job.serve, "Serve the viewer at HOST:PORT (e.g. 127.0.0.1:8080; port 0 picks a free one)");
   cmd->add_option("--pressure-range", job.pressure_range_N_per_mm2,
-                  "With --serve: the viewer's colour bar top in N/mm2, fixed (default: the largest pressure seen so far)")
+                  "With --serve: the viewer's colour bar top in N/mm2, fixed (default: the largest pressure seen so "
+                  "far)")
       ->type_name("MAX")
       ->check(checked_by(&PressureMapOptions::max_pressure_N_per_mm2));
   cmd->add_option("--contacts", job.contacts_path,

@@ -53,7 +53,8 @@ void ElectrodeHealthTally::add(const Frame& frame) {
   if (frame.rows() <= min_swap_electrodes) return;
   const SwapCandidate swap = best_swap(frame);
   if (swap.a >= 0 && swap.roughness_ratio < swap_roughness_ratio)
-    ++swap_votes_[static_cast<std::size_t>(swap.a * frame.rows() + swap.b)];
+    ++swap_votes_[static_cast<std::size_t>(swap.a) * static_cast<std::size_t>(frame.rows()) +
+                  static_cast<std::size_t>(swap.b)];
 }
 
 void ElectrodeHealthTally::reset() {
@@ -66,12 +67,12 @@ void ElectrodeHealthTally::reset() {
 std::vector<SwappedElectrodes> ElectrodeHealthTally::swapped() const {
   std::vector<SwappedElectrodes> swapped;
   if (with_signal_ < min_swap_frames || !dead().empty()) return swapped;
-  const auto n = static_cast<int>(zero_columns_.size());
-  for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) {
-      const int votes = swap_votes_[static_cast<std::size_t>(a * n + b)];
+  const std::size_t n = zero_columns_.size();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) {
+      const int votes = swap_votes_[a * n + b];
       if (votes >= swap_vote_fraction * with_signal_)
-        swapped.push_back({a, b,
+        swapped.push_back({static_cast<int>(a), static_cast<int>(b),
                            "their readings fit each other's places along the border in " + std::to_string(votes) +
                                " of " + std::to_string(with_signal_) + " frames with signal"});
     }

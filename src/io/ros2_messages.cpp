@@ -321,7 +321,8 @@ std::vector<float> pressure_cloud_points_m(const Mesh& mesh) {
     Vector3 centroid = Vector3::Zero();
     for (int corner = 0; corner < 3; ++corner) centroid += mesh.nodes_mm.row(mesh.triangles(t, corner)).transpose();
     for (int axis = 0; axis < 3; ++axis)
-      points[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(axis)] = static_cast<float>(1e-3 / 3 * centroid[axis]);
+      points[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(axis)] =
+          static_cast<float>(1e-3 / 3 * centroid[axis]);
   }
   return points;
 }

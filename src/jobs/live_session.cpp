@@ -105,7 +105,8 @@ LiveSession::LiveSession(const LiveJob& job, const Progress& progress) : impl_(s
   s.loop.emplace(*s.source, *s.pipeline, live_options);
   if (!job.serve.empty()) {
     s.server.emplace(job.serve, s.pipeline->model().mesh,
-                     ViewerSheet{s.sensor.name, s.pipeline->calibrated(), job.pressure_range_N_per_mm2, s.sensor.adc.vref_V},
+                     ViewerSheet{s.sensor.name, s.pipeline->calibrated(), job.pressure_range_N_per_mm2,
+                                 s.sensor.adc.vref_V},
                      [&loop = *s.loop](const std::string& command) { loop.command(command); });
     s.loop->add_publisher(&*s.server);
   }

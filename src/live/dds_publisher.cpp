@@ -165,7 +165,8 @@ DdsPublisher::DdsPublisher(const DdsOptions& options, const std::string& sensor_
   s.cloud_data.resize(pressure_cloud_point_bytes * static_cast<std::size_t>(mesh.triangle_count()));
   for (std::size_t f = 0; f < pressure_cloud_fields.size(); ++f) {
     const PointFieldLayout& field = pressure_cloud_fields[f];
-    s.cloud_fields[f] = {const_cast<char*>(field.name), field.offset, field.datatype, field.count};  // read, not written
+    s.cloud_fields[f] = {const_cast<char*>(field.name), field.offset, field.datatype,
+                         field.count};  // read, not written
   }
 }
 

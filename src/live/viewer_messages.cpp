@@ -106,7 +106,8 @@ std::string frame_message(const LiveFrame& frame, std::uint64_t commands, bool c
   }
   json dead = json::array();
   if (frame.dead_electrodes)
-    for (const DeadElectrode& d : *frame.dead_electrodes) dead.push_back({{"electrode", d.electrode}, {"reason", d.reason}});
+    for (const DeadElectrode& d : *frame.dead_electrodes)
+      dead.push_back({{"electrode", d.electrode}, {"reason", d.reason}});
   json swapped = json::array();
   if (frame.swapped_electrodes)
     for (const SwappedElectrodes& w : *frame.swapped_electrodes)

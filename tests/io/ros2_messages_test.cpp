@@ -91,9 +91,8 @@ TEST(Ros2Messages, AContactIsInSiUnitsPressingAlongMinusTheNormal) {
   EXPECT_NE(tactile_contacts_message().definition.find("MSG: geometry_msgs/Point32\nfloat32 x\n"), std::string::npos);
   EXPECT_NE(tactile_contacts_message().definition.find("float64 orientation_rad "), std::string::npos);
   // Every definition names the types it uses once each, as ROS 2 bags carry them.
-  for (const Ros2MessageType* type :
-       {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(), &mesh_message(),
-        &pressure_cloud_message()}) {
+  for (const Ros2MessageType* type : {&tactile_state_message(), &tactile_contacts_message(), &pressure_image_message(),
+                                      &mesh_message(), &pressure_cloud_message()}) {
     EXPECT_NE(type->name.find("/msg/"), std::string::npos);
     if (type != &mesh_message()) {
       EXPECT_NE(type->definition.find("MSG: std_msgs/Header"), std::string::npos) << type->name;
@@ -128,10 +127,10 @@ TEST(Ros2Messages, APressureCloudIsAPointPerTriangleAtItsCentroid) {
     EXPECT_EQ(out[4 + offset_at + 4], 7);  // FLOAT32
     EXPECT_EQ(read_at<std::uint32_t>(out, 4 + offset_at + 8), 1u);
   }
-  EXPECT_EQ(out[4 + 116], 0);                              // little-endian
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 120), 16u);    // point_step
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 124), 64u);    // row_step
-  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 128), 64u);    // the data's bytes
+  EXPECT_EQ(out[4 + 116], 0);                            // little-endian
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 120), 16u);  // point_step
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 124), 64u);  // row_step
+  EXPECT_EQ(read_at<std::uint32_t>(out, 4 + 128), 64u);  // the data's bytes
   for (Index t = 0; t < 4; ++t) {
     const Vector3 centroid_m = 1e-3 / 3 *
                                (mesh.nodes_mm.row(mesh.triangles(t, 0)) + mesh.nodes_mm.row(mesh.triangles(t, 1)) +
@@ -174,7 +173,7 @@ TEST(Ros2Messages, EncodingAFrameAllocatesNothingOnceWarm) {
   Frame volts = Frame::Constant(16, 16, 0.5);
   std::vector<Contact> contacts(3);
   const Vector pressure = Vector::Constant(5000, 0.01);
-  const std::vector<float> cloud_points(3 * 5000, 0.01f);
+  const std::vector<float> cloud_points(std::size_t{3} * 5000, 0.01f);
   std::vector<std::uint8_t> out;
   encode_tactile_state(out, {}, "emit_sheet", "default 60 mm", frame_view(volts));
   encode_pressure_cloud(out, {}, "emit_sheet", cloud_points, pressure);  // the largest: the buffer grows to it

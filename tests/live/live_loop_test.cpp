@@ -245,7 +245,10 @@ TEST(LiveLoop, CountsGapsInTheSourcesNumbersAsMissedFrames) {
 class TwoFrameSource : public FrameSource {
  public:
   TwoFrameSource(Frame untouched, Frame pressed, int capture, int pressed_count)
-      : untouched_(std::move(untouched)), pressed_(std::move(pressed)), capture_(capture), total_(capture + pressed_count) {}
+      : untouched_(std::move(untouched)),
+        pressed_(std::move(pressed)),
+        capture_(capture),
+        total_(capture + pressed_count) {}
   bool next(SourceFrame& frame, std::chrono::milliseconds) override {
     if (finished()) throw IoError("two frames: end");
     frame.volts = next_ < capture_ ? untouched_ : pressed_;
@@ -338,7 +341,8 @@ TEST(LiveServer, SendsMeshAndFramesAndTakesCommands) {
     ws.write(net::buffer(std::string("ack")));  // the next frame may come
     std::uint32_t header = 0;
     std::memcpy(&header, bytes.data(), 4);
-    EXPECT_EQ(bytes.size(), 4 + header + 4 * (triangles + 16 * 16));  // pressure, then the 16 × 16 readings
+    EXPECT_EQ(bytes.size(),
+              4 + header + 4 * (triangles + std::size_t{16} * 16));  // pressure, then the 16 × 16 readings
     return nlohmann::json::parse(bytes.substr(4, header));
   };
   nlohmann::json frame;

@@ -32,7 +32,7 @@ TEST(ViewerMessages, MeshMessageHoldsTheMeshAndItsBorder) {
   EXPECT_EQ(j["electrodes"][0]["y_mm"], 0.0);
   EXPECT_EQ(j["electrodes"][1]["y_mm"], 2.0);
   EXPECT_EQ(j["electrodes"][1]["segments_mm"].size(), 2u * 4);  // the top side's two edges
-  EXPECT_EQ(j["calibrated"], false);  // the page's "uncalibrated" badge
+  EXPECT_EQ(j["calibrated"], false);                            // the page's "uncalibrated" badge
   EXPECT_EQ(j["pressure_range_N_per_mm2"], 0.0);
 }
 
@@ -154,7 +154,7 @@ TEST(ViewerMessages, FrameMessageIsLengthHeaderAndFloats) {
   std::uint32_t header_bytes = 0;
   std::memcpy(&header_bytes, message.data(), 4);
   EXPECT_EQ(header_bytes % 4, 0u);
-  ASSERT_EQ(message.size(), 4 + header_bytes + 4 * (3u + 4u));  // 3 triangles, 2 × 2 readings
+  ASSERT_EQ(message.size(), 4 + header_bytes + 4 * (3u + 4u));                 // 3 triangles, 2 × 2 readings
   const auto header = nlohmann::json::parse(message.substr(4, header_bytes));  // trailing spaces are JSON whitespace
   EXPECT_EQ(header["type"], "frame");
   EXPECT_EQ(header["index"], 41);

@@ -336,7 +336,7 @@ int main(int argc, char** argv) {
       std::vector<float>& pressure = cloud_of[stamp_of(m->header)];
       pressure.resize(m->width);
       for (std::uint32_t k = 0; laid_out && k < m->width; ++k)
-        std::memcpy(&pressure[k], m->data._buffer + 16 * k + 12, 4);
+        std::memcpy(&pressure[k], m->data._buffer + std::size_t{16} * k + 12, 4);
     }
     if (n > 0) dds_return_loan(clouds, samples, n);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -24,7 +24,8 @@ struct DeadElectrode {
 /// Two electrodes wired in each other's places (electrode_swap.hpp).
 struct SwappedElectrodes {
   int a = -1, b = -1;  ///< a < b
-  std::string reason;  ///< e.g. "their readings fit each other's places along the border in 24 of 25 frames with signal"
+  std::string
+      reason;  ///< e.g. "their readings fit each other's places along the border in 24 of 25 frames with signal"
 };
 
 /// find_dead_electrodes one frame at a time, for frames read as a stream.

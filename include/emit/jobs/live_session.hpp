@@ -30,11 +30,11 @@ struct LiveJob {
   std::string serve;           ///< HOST:PORT for the viewer; empty: none
   /// The viewer's colour bar top [N/mm²], fixed; 0: the page's own (the largest pressure seen).
   double pressure_range_N_per_mm2 = 0;
-  std::string contacts_path;   ///< JSON Lines; "-": standard output; a FIFO: readers may come and go; empty: none
-  std::string tracks_path;     ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
-  std::string record_path;     ///< empty: no recording
-  std::string mcap_path;       ///< empty: no MCAP recording (live/mcap_publisher.hpp)
-  std::string dds_prefix;      ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
+  std::string contacts_path;  ///< JSON Lines; "-": standard output; a FIFO: readers may come and go; empty: none
+  std::string tracks_path;    ///< tracked contacts as CSV (io/tracks_csv.hpp); empty: none
+  std::string record_path;    ///< empty: no recording
+  std::string mcap_path;      ///< empty: no MCAP recording (live/mcap_publisher.hpp)
+  std::string dds_prefix;     ///< empty: no DDS; else the topics' prefix (live/dds_publisher.hpp)
   /// The ROS messages' header frame, on DDS and in the MCAP file (io/ros2_messages.hpp).
   std::string frame_id{ros2_frame_id};
   int dds_domain = 0;

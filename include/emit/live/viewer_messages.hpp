@@ -41,9 +41,9 @@ namespace emit {
 /// What the page says about the sheet besides its mesh.
 struct ViewerSheet {
   std::string name;
-  bool calibrated = false;                ///< false: the page shows an "uncalibrated" badge
-  double pressure_range_N_per_mm2 = 0;    ///< the colour bar's top; 0: the page chooses
-  double adc_reference_V = 0;             ///< the raw frame's full scale (sensor "adc" vref)
+  bool calibrated = false;              ///< false: the page shows an "uncalibrated" badge
+  double pressure_range_N_per_mm2 = 0;  ///< the colour bar's top; 0: the page chooses
+  double adc_reference_V = 0;           ///< the raw frame's full scale (sensor "adc" vref)
 };
 
 /// Whether the viewer draws this mesh in 3D (three.js): some node has z ≠ 0 (a curved sheet).
