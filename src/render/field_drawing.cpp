@@ -75,9 +75,6 @@ void draw_title(Image& image, const std::vector<std::string>& title_lines) {
               font_scale);
 }
 
-namespace {
-
-/// A round step near `span` / 4: 1, 2, 2.5 or 5 × 10^k.
 double round_step(double span) {
   const double raw = span / 4, decade = std::pow(10.0, std::floor(std::log10(raw)));
   for (const double m : {1.0, 2.0, 2.5, 5.0})
@@ -85,7 +82,33 @@ double round_step(double span) {
   return 10 * decade;
 }
 
-}  // namespace
+void draw_mm_axes(Image& image, const MmAxes& axes) {
+  const double step = round_step(std::max(axes.max_x_mm - axes.min_x_mm, axes.max_y_mm - axes.min_y_mm));
+  const int text_height = text_height_px(font_scale);
+  // Along x: the line under the sheet, its ticks down, each value centred under its tick; "mm" after the last.
+  draw_segment(image, {axes.x_px(axes.min_x_mm), axes.x_axis_y_px + 0.5},
+               {axes.x_px(axes.max_x_mm), axes.x_axis_y_px + 0.5}, 0.5, border_colour);
+  int after_last = 0;
+  for (long k = static_cast<long>(std::ceil(axes.min_x_mm / step)); k * step <= axes.max_x_mm + 1e-9 * step; ++k) {
+    const double x = axes.x_px(static_cast<double>(k) * step);
+    draw_segment(image, {x, axes.x_axis_y_px + 0.5}, {x, axes.x_axis_y_px + 4.5}, 0.5, border_colour);
+    const std::string label = value_label(static_cast<double>(k) * step, "");
+    const int left = static_cast<int>(std::lround(x)) - text_width_px(label, font_scale) / 2;
+    draw_text(image, left, axes.x_axis_y_px + 6, label, text_colour, font_scale);
+    after_last = left + text_width_px(label, font_scale);
+  }
+  draw_text(image, after_last + bar_label_gap_px, axes.x_axis_y_px + 6, "mm", text_colour, font_scale);
+  // Along y: the line left of the sheet, its ticks left, each value right-aligned before its tick.
+  draw_segment(image, {axes.y_axis_x_px + 0.5, axes.y_px(axes.min_y_mm)},
+               {axes.y_axis_x_px + 0.5, axes.y_px(axes.max_y_mm)}, 0.5, border_colour);
+  for (long k = static_cast<long>(std::ceil(axes.min_y_mm / step)); k * step <= axes.max_y_mm + 1e-9 * step; ++k) {
+    const double y = axes.y_px(static_cast<double>(k) * step);
+    draw_segment(image, {axes.y_axis_x_px - 3.5, y}, {axes.y_axis_x_px + 0.5, y}, 0.5, border_colour);
+    const std::string label = value_label(static_cast<double>(k) * step, "");
+    draw_text(image, axes.y_axis_x_px - 6 - text_width_px(label, font_scale),
+              static_cast<int>(std::lround(y)) - text_height / 2, label, text_colour, font_scale);
+  }
+}
 
 void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit) {
   const std::string min_label = value_label(min_value, unit), max_label = value_label(max_value, unit);

@@ -71,6 +71,25 @@ void draw_title(Image& image, const std::vector<std::string>& title_lines);
 /// five of them) where their labels clear the ends'.
 void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit);
 
+/// A round step near `span` / 4: 1, 2, 2.5 or 5 × 10^k.
+double round_step(double span);
+
+/// Axes in mm along a flat sheet's picture: where they go and how mm map to pixels.
+struct MmAxes {
+  double min_x_mm = 0, max_x_mm = 0, min_y_mm = 0, max_y_mm = 0;
+  double origin_x_px = 0, origin_y_px = 0, scale_px_per_mm = 1;  ///< pixel of (min_x, max_y)
+  int x_axis_y_px = 0;                                           ///< the x axis's line (under the sheet)
+  int y_axis_x_px = 0;                                           ///< the y axis's line (left of the sheet)
+  double x_px(double x_mm) const { return origin_x_px + (x_mm - min_x_mm) * scale_px_per_mm; }
+  double y_px(double y_mm) const { return origin_y_px + (max_y_mm - y_mm) * scale_px_per_mm; }
+};
+/// Width of the y axis's labels, its ticks and the gaps beside them [px]; height of the x axis's.
+inline constexpr int y_axis_width_px = 40, x_axis_height_px = 22;
+
+/// The x axis under the sheet and the y axis left of it, ticked at round values (round_step of
+/// the larger extent) with their values, "mm" after the last x value.
+void draw_mm_axes(Image& image, const MmAxes& axes);
+
 /// A scale bar of a round length (1, 2 or 5 × 10^k mm, the longest within `max_width_px` with
 /// its label) at (x, y), labelled "L mm" to its right: a flat picture's distances read off it.
 void draw_scale_bar(Image& image, int x, int y, double px_per_mm, int max_width_px);

@@ -30,6 +30,7 @@ struct Canvas {
   int width = 0, height = 0;
   FieldLayout layout;
   detail::Box bar;
+  detail::MmAxes axes;
   std::vector<std::string> title_lines;
   std::string min_label, max_label;
 };
@@ -103,17 +104,28 @@ Canvas plan_canvas(const Bounds& sheet, const detail::ValueRange& range, const F
                                    detail::text_width_px(c.max_label, detail::font_scale));
   const int right_width =
       label_margin_px + detail::bar_width_px + detail::bar_label_gap_px + label_width + detail::padding_px;
-  const int sheet_width_px = c.width - label_margin_px - right_width;
+  const int sheet_width_px = c.width - detail::y_axis_width_px - label_margin_px - right_width;
   if (sheet_width_px < 40)
     throw InvalidInput("render_field: width_px " + std::to_string(c.width) + " leaves no room for the sheet");
 
   const double scale = std::min(sheet_width_px / sheet.width(), max_aspect * c.width / sheet.height());
   const int sheet_height_px = static_cast<int>(std::ceil(scale * sheet.height()));
-  c.layout = {scale, double(label_margin_px), double(title_height + label_margin_px), sheet.min_x, sheet.max_y};
+  const int left = detail::y_axis_width_px + label_margin_px;  // the y axis, then the electrode numbers
+  c.layout = {scale, double(left), double(title_height + label_margin_px), sheet.min_x, sheet.max_y};
   const int bar_height = std::max(sheet_height_px, min_bar_height_px);
-  c.bar = {static_cast<int>(std::ceil(label_margin_px + scale * sheet.width())) + label_margin_px,
-           title_height + label_margin_px, detail::bar_width_px, bar_height};
-  c.height = title_height + label_margin_px + bar_height + label_margin_px;
+  c.bar = {static_cast<int>(std::ceil(left + scale * sheet.width())) + label_margin_px, title_height + label_margin_px,
+           detail::bar_width_px, bar_height};
+  c.height = title_height + label_margin_px + bar_height + label_margin_px + detail::x_axis_height_px;
+  // The axes outside the electrode numbers' margin.
+  c.axes = {sheet.min_x,
+            sheet.max_x,
+            sheet.min_y,
+            sheet.max_y,
+            double(left),
+            double(title_height + label_margin_px),
+            scale,
+            title_height + label_margin_px + sheet_height_px + label_margin_px - 4,
+            detail::y_axis_width_px};
   return c;
 }
 
@@ -228,6 +240,7 @@ Image render_field(const Mesh& mesh, const Vector& nodal_values, const std::vect
   draw_electrodes(image, canvas.layout, mesh, sheet);
   draw_outlines(image, canvas.layout, outlines);
   detail::draw_colour_bar(image, canvas.bar, range.min, range.max, options.unit);
+  detail::draw_mm_axes(image, canvas.axes);
   // Below the colour bar, in the bottom margin the electrode numbers leave it.
   detail::draw_scale_bar(image, canvas.bar.x, canvas.bar.y + canvas.bar.height + detail::label_margin_px / 3,
                          canvas.layout.scale_px_per_mm, canvas.width - canvas.bar.x - detail::padding_px);

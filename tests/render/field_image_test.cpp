@@ -214,6 +214,39 @@ TEST(RenderField, TheColourBarHasLabelledTicksAndAScaleBarIsBelow) {
   EXPECT_GE(longest, 20);
 }
 
+// Axes in mm along the sheet (10 × 10 mm: ticks 2.5 mm apart): under it a dark line as long as
+// the sheet with a value under its ticks at 0, 5 and 10 mm and "mm" after the last; left of it
+// another as tall, values beside its ticks; none between two ticks.
+TEST(RenderField, MmAxesAreTickedAndLabelled) {
+  const Mesh mesh = square_sheet();
+  FieldLayout layout;
+  const Image image = render_field(mesh, mesh.nodes_mm.col(0) / 10, {}, FieldImageOptions{}, &layout);
+  const auto dark = [&](int x, int y) { return luminance(image.get(x, y)) < 100; };
+  const auto dark_in = [&](int x0, int x1, int y0, int y1) {
+    int n = 0;
+    for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y)
+      for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) n += dark(x, y);
+    return n;
+  };
+  const int x0 = layout.pixel_x(0), x10 = layout.pixel_x(10), y0 = layout.pixel_y(0), y10 = layout.pixel_y(10);
+  int axis_row = -1;  // below the electrode numbers' margin
+  for (int y = y0 + 20; y < image.height() && axis_row < 0; ++y)
+    if (dark_in(x0 + 1, x10 - 1, y, y) >= x10 - x0 - 1) axis_row = y;
+  ASSERT_GE(axis_row, 0) << "no x axis under the sheet";
+  for (const double v : {0.0, 5.0, 10.0})
+    EXPECT_GT(dark_in(layout.pixel_x(v) - 8, layout.pixel_x(v) + 8, axis_row + 6, axis_row + 20), 5)
+        << v << " mm's label";
+  EXPECT_EQ(dark_in(layout.pixel_x(3.75) - 1, layout.pixel_x(3.75) + 1, axis_row + 6, axis_row + 20), 0);
+  EXPECT_GT(dark_in(x10 + 12, x10 + 40, axis_row + 6, axis_row + 20), 10) << "the unit after the last value";
+  int axis_column = -1;  // left of the electrode numbers' margin
+  for (int x = x0 - 20; x >= 0 && axis_column < 0; --x)
+    if (dark_in(x, x, y10 + 1, y0 - 1) >= y0 - y10 - 1) axis_column = x;
+  ASSERT_GE(axis_column, 0) << "no y axis left of the sheet";
+  for (const double v : {0.0, 5.0, 10.0})
+    EXPECT_GT(dark_in(0, axis_column - 5, layout.pixel_y(v) - 6, layout.pixel_y(v) + 6), 5) << v << " mm's label";
+  EXPECT_EQ(dark_in(0, axis_column - 5, layout.pixel_y(3.75) - 1, layout.pixel_y(3.75) + 1), 0);
+}
+
 // A mark's label (a contact's id and force) is written up and right of it, white on a dark edge
 // over the field: white pixels there with the label, none without; the mark's other sides clear.
 TEST(RenderField, AMarksLabelIsWrittenBesideIt) {
