@@ -75,6 +75,14 @@ void draw_title(Image& image, const std::vector<std::string>& title_lines) {
               font_scale);
 }
 
+void draw_mark_label(Image& image, const Vector2& centre_px, double reach_px, const std::string& label) {
+  const int x = static_cast<int>(std::lround(centre_px.x() + reach_px)),
+            y = static_cast<int>(std::lround(centre_px.y() - reach_px)) - text_height_px(font_scale);
+  for (const auto& [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
+    draw_text(image, x + dx, y + dy, label, outline_shadow, font_scale);
+  draw_text(image, x, y, label, white, font_scale);
+}
+
 double round_step(double span) {
   const double raw = span / 4, decade = std::pow(10.0, std::floor(std::log10(raw)));
   for (const double m : {1.0, 2.0, 2.5, 5.0})

@@ -71,6 +71,10 @@ void draw_title(Image& image, const std::vector<std::string>& title_lines);
 /// five of them) where their labels clear the ends'.
 void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit);
 
+/// A mark's label (a contact's id and force) up and right of the mark at `centre_px`, `reach_px`
+/// out along the diagonal: white with a dark edge, so that it reads on every colour of the map.
+void draw_mark_label(Image& image, const Vector2& centre_px, double reach_px, const std::string& label);
+
 /// A round step near `span` / 4: 1, 2, 2.5 or 5 × 10^k.
 double round_step(double span);
 

@@ -189,11 +189,7 @@ void draw_ellipse(Image& image, const FieldLayout& layout, const Circle& ellipse
 void draw_label(Image& image, const FieldLayout& layout, const Circle& circle) {
   const double reach = std::max(circle.radius_mm * layout.scale_px_per_mm, 4.0) * std::numbers::sqrt2 / 2 + 3;
   const Vector2 centre = to_px(layout, circle.center_mm.x(), circle.center_mm.y());
-  const int x = static_cast<int>(std::lround(centre.x() + reach)),
-            y = static_cast<int>(std::lround(centre.y() - reach)) - detail::text_height_px(detail::font_scale);
-  for (const auto& [dx, dy] : {std::pair{-1, 0}, std::pair{1, 0}, std::pair{0, -1}, std::pair{0, 1}})
-    detail::draw_text(image, x + dx, y + dy, circle.label, detail::outline_shadow, detail::font_scale);
-  detail::draw_text(image, x, y, circle.label, detail::white, detail::font_scale);
+  detail::draw_mark_label(image, centre, reach, circle.label);
 }
 
 void draw_outlines(Image& image, const FieldLayout& layout, const std::vector<Circle>& outlines) {

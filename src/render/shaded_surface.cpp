@@ -425,6 +425,8 @@ double longest_edge_mm(const Mesh& mesh) {
 /// mark's.
 struct Ring {
   std::vector<Vector3> points, under;  ///< closed: the last point is the first
+  Vector3 centre = Vector3::Zero();    ///< the mark's point on the sheet
+  std::string label;                   ///< the mark's (Circle::label); empty: none
 };
 
 /// The circles' rings (none for a circle with a non-finite centre or radius: nothing sensible to
@@ -460,6 +462,8 @@ std::vector<Ring> outline_rings(const Mesh& mesh, const std::vector<Circle>& out
         const double angle = 2 * std::numbers::pi * k / ring_segments;
         ring.points.emplace_back(centre + circle.radius_mm * std::cos(angle) * e1 + minor_mm * std::sin(angle) * e2);
       }
+    ring.centre = centre;
+    ring.label = circle.label;
     ring.under.resize(ring.points.size());
     // A ring point p is within r of the centre (r: the radius, or a polygon's farthest point),
     // which is within d of a centroid, so p's nearest surface point is within r + d of p, 2r + d
@@ -495,6 +499,17 @@ void draw_outlines(MarkPainter& painter, const std::vector<Ring>& rings) {
         painter.segment(ring.points[k], ring.points[k + 1], ring.under[k], ring.under[k + 1], half_width, colour);
 }
 
+/// Each ring's label where its point is in sight, up and right of the ring as the view shows it.
+void draw_ring_labels(MarkPainter& painter, const std::vector<Ring>& rings) {
+  for (const Ring& ring : rings) {
+    if (ring.label.empty() || !painter.in_sight(ring.centre)) continue;
+    const Vector2 centre = painter.view().to_px(ring.centre);
+    double reach = 4;
+    for (const Vector3& p : ring.points) reach = std::max(reach, (painter.view().to_px(p) - centre).norm());
+    detail::draw_mark_label(painter.image(), centre, reach * std::numbers::sqrt2 / 2 + 3, ring.label);
+  }
+}
+
 void draw_caption(Image& image, const SurfaceView& view, const std::string& caption) {
   const std::vector<std::string> lines = caption_lines(caption, view.size_px);
   const int first = view.top_px - detail::label_margin_px - line_height_px() * static_cast<int>(lines.size());
@@ -524,12 +539,16 @@ Image render_shaded_surface(const Mesh& mesh, const Vector& nodal_values, const 
     draw_edges(painter, mesh, border, detail::border_half_width_px, detail::border_colour);
     draw_electrodes(painter, mesh);
     draw_outlines(painter, rings);
+    draw_ring_labels(painter, rings);
   }
   for (const auto& [view, caption] : panels) draw_caption(image, *view, caption);
   const SurfaceView& last = *panels.back().first;
   const detail::Box bar{last.left_px + last.size_px + detail::label_margin_px, last.top_px, detail::bar_width_px,
                         last.size_px};
   detail::draw_colour_bar(image, bar, range.min, range.max, options.unit);
+  // The views are orthographic at one scale: lengths across the line of sight read off it.
+  detail::draw_scale_bar(image, bar.x, bar.y + bar.height + detail::label_margin_px / 3, last.scale_px_per_mm,
+                         plan.width_px - bar.x - detail::padding_px);
   detail::draw_title(image, title_lines(options));
   if (layout) *layout = plan;
   return image;

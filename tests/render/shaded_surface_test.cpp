@@ -26,6 +26,7 @@ FieldImageOptions of_width(int width_px) {
 }
 
 Vector3 node(const Mesh& mesh, Index i) { return mesh.nodes_mm.row(i).transpose(); }
+double luminance(Rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 /// How far a colour's chromaticity, (r, g, b) / (r + g + b), is from that of the map's top
 /// (yellow). Shading scales all three channels alike, so this is blind to it up to rounding; the
@@ -208,6 +209,56 @@ TEST(ShadedSurface, CirclesAreDrawnWhereTheyAreInSight) {
   EXPECT_GT(changed_pixels(plain, near_ring, layout.top), 100);
   EXPECT_EQ(changed_pixels(plain, far_ring, layout.oblique), 0);
   EXPECT_GT(changed_pixels(plain, far_ring, layout.top), 100);
+}
+
+// A mark's label (a contact's id and force) is written up and right of its ring, white on a dark
+// edge, in each panel where the mark's point is in sight: the near mark's in both, the far one's
+// in the top view only. A scale bar in mm is under the colour bar.
+TEST(ShadedSurface, AMarksLabelIsWrittenWhereItIsInSightAndAScaleBarIsBelow) {
+  const Mesh& mesh = test::dome_mesh();
+  const Vector3 viewer = SurfaceView::looking_from(oblique_azimuth_deg, oblique_elevation_deg).toward_viewer;
+  const Vector3 near = surface_point_mm(test::dome_sensor().shape, 8 * viewer.head<2>().normalized());
+  const Vector3 far = surface_point_mm(test::dome_sensor().shape, -17 * viewer.head<2>().normalized());
+  const Vector values = Vector::Constant(mesh.node_count(), 0);  // the map's darkest: the label's white shows
+  ShadedLayout layout;
+  const auto white_up_right = [&](const Image& image, const SurfaceView& view, const Vector3& point) {
+    const Vector2 at = view.to_px(point);
+    int n = 0;
+    for (int y = static_cast<int>(at.y()) - 40; y < static_cast<int>(at.y()); ++y)
+      for (int x = static_cast<int>(at.x()); x < static_cast<int>(at.x()) + 60; ++x)
+        n += x >= 0 && y >= 0 && x < image.width() && y < image.height() && image.get(x, y) == Rgb{255, 255, 255};
+    return n;
+  };
+  for (const auto& [point, in_oblique] : {std::pair{near, true}, std::pair{far, false}}) {
+    Circle plain{point.head<2>(), 2.0, point.z()};
+    Circle labelled = plain;
+    labelled.label = "#7  3.5 N";
+    const Image without = render_shaded_surface(mesh, values, {plain}, {}, &layout);
+    const Image with = render_shaded_surface(mesh, values, {labelled}, {});
+    // The ring itself is white too: the label adds white pixels beyond it.
+    EXPECT_GT(white_up_right(with, layout.top, point) - white_up_right(without, layout.top, point), 20);
+    const int oblique = white_up_right(with, layout.oblique, point) - white_up_right(without, layout.oblique, point);
+    if (in_oblique) EXPECT_GT(oblique, 20);
+    else EXPECT_EQ(oblique, 0);
+  }
+  // The scale bar: under the colour bar (right of the last panel, below its bottom), a dark run.
+  const Image image = render_shaded_surface(mesh, values, {}, {}, &layout);
+  const SurfaceView& last = layout.top;
+  int longest = 0;
+  for (int y = last.top_px + last.size_px + 1; y < image.height(); ++y) {
+    int run = 0;
+    for (int x = last.left_px + last.size_px; x < image.width(); ++x) {
+      run = luminance(image.get(x, y)) < 100 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+  }
+  // Its length is a round one at the views' scale (1, 2 or 5 × 10^k mm within its end pixels).
+  const double length_mm = longest / last.scale_px_per_mm, decade = std::pow(10.0, std::floor(std::log10(length_mm)));
+  double nearest_round = 1e9;
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    nearest_round = std::min(nearest_round, std::abs(length_mm - m * decade));
+  EXPECT_LE(nearest_round * last.scale_px_per_mm, 2.0 + 1e-9) << length_mm << " mm";  // its two end pixels
+  EXPECT_GE(longest, 20);
 }
 
 // An ellipse (a contact's outline) is drawn in the tangent plane along its direction seen from +z:
