@@ -90,6 +90,17 @@ double round_step(double span) {
   return 10 * decade;
 }
 
+namespace {
+
+/// `f(value)` for each multiple of `step` in [min, max], in order.
+template <typename F>
+void for_each_multiple(double min, double max, double step, F&& f) {
+  for (auto k = static_cast<long>(std::ceil(min / step)); static_cast<double>(k) * step <= max + 1e-9 * step; ++k)
+    f(static_cast<double>(k) * step);
+}
+
+}  // namespace
+
 void draw_mm_axes(Image& image, const MmAxes& axes) {
   const double step = round_step(std::max(axes.max_x_mm - axes.min_x_mm, axes.max_y_mm - axes.min_y_mm));
   const int text_height = text_height_px(font_scale);
@@ -97,25 +108,25 @@ void draw_mm_axes(Image& image, const MmAxes& axes) {
   draw_segment(image, {axes.x_px(axes.min_x_mm), axes.x_axis_y_px + 0.5},
                {axes.x_px(axes.max_x_mm), axes.x_axis_y_px + 0.5}, 0.5, border_colour);
   int after_last = 0;
-  for (long k = static_cast<long>(std::ceil(axes.min_x_mm / step)); k * step <= axes.max_x_mm + 1e-9 * step; ++k) {
-    const double x = axes.x_px(static_cast<double>(k) * step);
+  for_each_multiple(axes.min_x_mm, axes.max_x_mm, step, [&](double value) {
+    const double x = axes.x_px(value);
     draw_segment(image, {x, axes.x_axis_y_px + 0.5}, {x, axes.x_axis_y_px + 4.5}, 0.5, border_colour);
-    const std::string label = value_label(static_cast<double>(k) * step, "");
+    const std::string label = value_label(value, "");
     const int left = static_cast<int>(std::lround(x)) - text_width_px(label, font_scale) / 2;
     draw_text(image, left, axes.x_axis_y_px + 6, label, text_colour, font_scale);
     after_last = left + text_width_px(label, font_scale);
-  }
+  });
   draw_text(image, after_last + bar_label_gap_px, axes.x_axis_y_px + 6, "mm", text_colour, font_scale);
   // Along y: the line left of the sheet, its ticks left, each value right-aligned before its tick.
   draw_segment(image, {axes.y_axis_x_px + 0.5, axes.y_px(axes.min_y_mm)},
                {axes.y_axis_x_px + 0.5, axes.y_px(axes.max_y_mm)}, 0.5, border_colour);
-  for (long k = static_cast<long>(std::ceil(axes.min_y_mm / step)); k * step <= axes.max_y_mm + 1e-9 * step; ++k) {
-    const double y = axes.y_px(static_cast<double>(k) * step);
+  for_each_multiple(axes.min_y_mm, axes.max_y_mm, step, [&](double value) {
+    const double y = axes.y_px(value);
     draw_segment(image, {axes.y_axis_x_px - 3.5, y}, {axes.y_axis_x_px + 0.5, y}, 0.5, border_colour);
-    const std::string label = value_label(static_cast<double>(k) * step, "");
+    const std::string label = value_label(value, "");
     draw_text(image, axes.y_axis_x_px - 6 - text_width_px(label, font_scale),
               static_cast<int>(std::lround(y)) - text_height / 2, label, text_colour, font_scale);
-  }
+  });
 }
 
 void draw_colour_bar(Image& image, const Box& bar, double min_value, double max_value, const std::string& unit) {

@@ -14,6 +14,7 @@
 
 #include "emit/core/errors.hpp"
 #include "emit/render/image.hpp"
+#include "picture_checks.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -206,11 +207,7 @@ TEST(RenderField, TheColourBarHasLabelledTicksAndAScaleBarIsBelow) {
     }
   }
   // Its length, in mm at the picture's scale, is a round one (within its two end pixels).
-  const double length_mm = longest / layout.scale_px_per_mm, decade = std::pow(10.0, std::floor(std::log10(length_mm)));
-  double nearest_round = 1e9;
-  for (const double m : {1.0, 2.0, 5.0, 10.0})
-    nearest_round = std::min(nearest_round, std::abs(length_mm - m * decade));
-  EXPECT_LE(nearest_round * layout.scale_px_per_mm, 2.0) << length_mm << " mm";
+  EXPECT_LE(test::px_from_round_length(longest, layout.scale_px_per_mm), 2.0 + 1e-9) << longest << " px";
   EXPECT_GE(longest, 20);
 }
 

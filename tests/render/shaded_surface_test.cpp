@@ -14,6 +14,7 @@
 #include "emit/mesh/generate_mesh.hpp"
 #include "emit/sensor/sensor_json.hpp"
 #include "emit/sensor/surface.hpp"
+#include "picture_checks.hpp"
 #include "test_support.hpp"
 
 namespace emit {
@@ -253,11 +254,7 @@ TEST(ShadedSurface, AMarksLabelIsWrittenWhereItIsInSightAndAScaleBarIsBelow) {
     }
   }
   // Its length is a round one at the views' scale (1, 2 or 5 × 10^k mm within its end pixels).
-  const double length_mm = longest / last.scale_px_per_mm, decade = std::pow(10.0, std::floor(std::log10(length_mm)));
-  double nearest_round = 1e9;
-  for (const double m : {1.0, 2.0, 5.0, 10.0})
-    nearest_round = std::min(nearest_round, std::abs(length_mm - m * decade));
-  EXPECT_LE(nearest_round * last.scale_px_per_mm, 2.0 + 1e-9) << length_mm << " mm";  // its two end pixels
+  EXPECT_LE(test::px_from_round_length(longest, last.scale_px_per_mm), 2.0 + 1e-9) << longest << " px";
   EXPECT_GE(longest, 20);
 }
 
